@@ -1,0 +1,14 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/io/read_stl.h"
+
+#include "core/errors.h"
+
+namespace meshfair::io {
+
+Mesh read_stl(std::string_view, const std::string& name, ReadReport&)
+{
+    throw InvalidInputError("'" + name + "': reader not written yet");
+}
+
+} // namespace meshfair::io

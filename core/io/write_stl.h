@@ -1,0 +1,18 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <string>
+
+#include "core/io/io.h"
+
+namespace meshfair::io {
+
+//! \brief Appends an STL file to `out`, each polygon fan-triangulated from its first
+//! corner (the only place MeshFair splits polygons), with facet normals from the
+//! triangle. ASCII writes shortest round-trip decimals; binary (little endian, the only
+//! binary STL) stores float32, so it is exact only for float-representable coordinates.
+//! Isolated vertices, and vertex order, cannot be represented in STL.
+void write_stl(const Mesh& mesh, Encoding encoding, std::string& out);
+
+} // namespace meshfair::io

@@ -1,0 +1,26 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace meshfair {
+
+//! Floating-point type of every coordinate and energy.
+using Scalar = double;
+
+//! Index of a vertex, face, edge or corner. 32 bits halve the memory traffic of
+//! the solver's neighbour lists against 64-bit indices and still address 2^31 - 1
+//! elements; readers refuse larger meshes.
+using Index = std::int32_t;
+
+//! Marks "no element", like the paper's -1.
+inline constexpr Index kInvalidIndex = -1;
+
+//! Largest element count a mesh may have.
+inline constexpr std::int64_t kMaxElements = 2147483647;
+
+using Vec3 = std::array<Scalar, 3>;
+
+} // namespace meshfair

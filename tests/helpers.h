@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+
+namespace meshfair::test {
+
+//! tests/data (small hand-written files).
+std::filesystem::path data_dir();
+//! assets/ (the bundled meshes).
+std::filesystem::path assets_dir();
+//! A fresh, empty directory for the calling test case, removed at exit.
+std::filesystem::path temp_dir();
+
+//! Writes `content` to `path` byte for byte.
+void write_bytes(const std::filesystem::path& path, const std::string& content);
+
+// Synthetic meshes (pmp-style fixtures).
+Mesh tetrahedron();                      //!< 4 vertices, 4 triangles, closed
+Mesh quad_cube();                        //!< 8 vertices, 6 quads, closed
+Mesh open_grid(int nx, int ny);          //!< (nx+1)(ny+1) vertices, nx*ny quads in z = 0
+Mesh nonmanifold_fan();                  //!< 3 triangles sharing one edge
+Mesh two_components();                   //!< two disjoint triangles
+Mesh with_isolated_vertex();             //!< a triangle plus an unused vertex
+Mesh quad_torus(int nu, int nv, double R, double r); //!< closed quad torus
+Mesh icosphere(int subdivisions);        //!< subdivided icosahedron on the unit sphere
+Mesh mixed_polygons();                   //!< open patch of triangles, quads and a pentagon
+
+//! Adds deterministic Gaussian noise (sigma in absolute units).
+void perturb(Mesh& mesh, double sigma, unsigned seed);
+
+} // namespace meshfair::test
