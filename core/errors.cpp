@@ -38,8 +38,12 @@ FormatError::FormatError(SourceLocation where, const std::string& message)
 {
 }
 
-RecipeError::RecipeError(const std::string& key, const std::string& message)
-    : InvalidInputError("recipe: " + key + ": " + message), key_(key)
+RecipeError::RecipeError(const std::string& key, const std::string& message,
+                         const std::string& file)
+    : InvalidInputError((file.empty() ? std::string("recipe") : "'" + file + "'") + ": " + key +
+                        ": " + message),
+      key_(key),
+      message_(message)
 {
 }
 

@@ -61,11 +61,14 @@ private:
 class RecipeError : public InvalidInputError
 {
 public:
-    RecipeError(const std::string& key, const std::string& message);
+    //! what() is "'file': key: message", or "recipe: key: message" without a file.
+    RecipeError(const std::string& key, const std::string& message, const std::string& file = "");
     const std::string& key() const { return key_; }
+    const std::string& message() const { return message_; }
 
 private:
     std::string key_;
+    std::string message_;
 };
 
 //! An operating-system failure reading or writing a file.

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+
+#include "core/topology/topology.h"
+
+namespace meshfair {
+
+//! \brief The sum of squared edge lengths \cite taubin_2012 ("Laplacian Smoothing"):
+//!
+//!     E_L(x) = sum_{(i,j) in E} |x_j - x_i|^2,          x of size 3 #V
+//!
+//! Quadratic, homogeneous, positive semi-definite; its minimum 0 is reached when all
+//! connected vertices coincide (the "shrinkage" of Laplacian smoothing).
+//! Gradient: dE_L/dx_i = 2 sum_{j in V(i)} (x_i - x_j) (the paper omits the factor 2,
+//! which no Jacobi displacement depends on). Generalized Jacobi: diagonal n_i,
+//! right-hand side sum_{j in V(i)} (x_j - x_i), so dx_i is the paper's Laplacian
+//! smoothing displacement (1/n_i) sum_j (x_j - x_i). Vertices with n_i = 0 get no
+//! contribution (and do not move unless another term moves them).
+class EdgeTerm
+{
+public:
+    explicit EdgeTerm(const Topology& topology) : topology_(&topology) {}
+
+    Scalar energy(std::span<const Scalar> x) const;
+    //! E_L(dx): the quadratic part, so E_L(x + dx) = E_L(x) - 2 r^T dx + quadratic(dx).
+    Scalar quadratic(std::span<const Scalar> dx) const { return energy(dx); }
+    //! diagonal[i] += n_i for every vertex.
+    void add_diagonal(std::span<Scalar> diagonal) const;
+    //! rhs_i += sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
+    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                 std::span<Scalar> rhs) const;
+
+private:
+    const Topology* topology_;
+};
+
+} // namespace meshfair

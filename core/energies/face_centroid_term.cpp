@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/face_centroid_term.h"
+
+#include "core/geometry/face_geometry.h"
+
+namespace meshfair {
+
+FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
+                                   std::span<const Index> faces, Scalar mu,
+                                   std::span<const Scalar> targets,
+                                   CentroidDenominator denominator)
+    : mesh_(&mesh),
+      topology_(&topology),
+      mu_(mu),
+      denominator_(denominator),
+      faces_(faces.begin(), faces.end()),
+      constrained_(mesh.face_count(), 0),
+      target_(3 * static_cast<size_t>(mesh.face_count()), 0),
+      residual_(3 * static_cast<size_t>(mesh.face_count()), 0)
+{
+    for (const Index f : faces_)
+        constrained_[f] = 1;
+    set_targets(targets);
+}
+
+void FaceCentroidTerm::set_targets(std::span<const Scalar> targets)
+{
+    for (size_t k = 0; k < faces_.size(); ++k)
+        for (int a = 0; a < 3; ++a)
+            target_[3 * faces_[k] + a] = targets[3 * k + a];
+}
+
+Scalar FaceCentroidTerm::energy(std::span<const Scalar> x) const
+{
+    Scalar sum = 0;
+    for (const Index f : faces_)
+    {
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar d = c[a] - target_[3 * f + a];
+            sum += d * d;
+        }
+    }
+    return mu_ * sum;
+}
+
+Scalar FaceCentroidTerm::quadratic(std::span<const Scalar> dx) const
+{
+    Scalar sum = 0;
+    for (const Index f : faces_)
+    {
+        const Vec3 c = face_centroid(*mesh_, dx, f);
+        sum += c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    }
+    return mu_ * sum;
+}
+
+void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
+{
+    for (Index i = 0; i < topology_->vertex_count; ++i)
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            const Scalar n = mesh_->face_size(f);
+            diagonal[i] += denominator_ == CentroidDenominator::Paper ? mu_ / n : mu_ / (n * n);
+        }
+}
+
+void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                               std::span<Scalar> rhs)
+{
+    for (const Index f : faces_)
+    {
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        const Scalar w = mu_ / mesh_->face_size(f);
+        for (int a = 0; a < 3; ++a)
+            residual_[3 * f + a] = w * (target_[3 * f + a] - c[a]);
+    }
+    for (const Index i : vertices)
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            for (int a = 0; a < 3; ++a)
+                rhs[3 * i + a] += residual_[3 * f + a];
+        }
+}
+
+} // namespace meshfair

@@ -1,0 +1,104 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/face_normal_term.h"
+
+namespace meshfair {
+
+FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology,
+                               std::span<const Index> faces, Scalar mu)
+    : mesh_(&mesh),
+      topology_(&topology),
+      mu_(mu),
+      faces_(faces.begin(), faces.end()),
+      constrained_(mesh.face_count(), 0)
+{
+    for (const Index f : faces_)
+        constrained_[f] = 1;
+}
+
+Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar> normals) const
+{
+    Scalar sum = 0;
+    for (const Index f : faces_)
+    {
+        const Scalar* u = &normals[3 * f];
+        const auto face = mesh_->face(f);
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Scalar* p = &x[3 * face[k]];
+            const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
+            const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
+            sum += d * d;
+        }
+    }
+    return mu_ * sum;
+}
+
+void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const Index> vertices,
+                               std::span<Scalar> block) const
+{
+    const Scalar w = 2 * mu_;
+    for (const Index i : vertices)
+    {
+        Scalar* B = &block[6 * i];
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            const Scalar* u = &normals[3 * f];
+            B[0] += w * u[0] * u[0];
+            B[1] += w * u[0] * u[1];
+            B[2] += w * u[0] * u[2];
+            B[3] += w * u[1] * u[1];
+            B[4] += w * u[1] * u[2];
+            B[5] += w * u[2] * u[2];
+        }
+    }
+}
+
+void FaceNormalTerm::add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
+                             std::span<const Index> vertices, std::span<Scalar> rhs) const
+{
+    for (const Index i : vertices)
+    {
+        const Scalar* xi = &x[3 * i];
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            const auto [prev, next] = corner_neighbors(*mesh_, *topology_, c);
+            const Scalar* u = &normals[3 * f];
+            const Scalar* a = &x[3 * prev];
+            const Scalar* b = &x[3 * next];
+            // u u^T ((x_prev - x_i) + (x_next - x_i))
+            const Scalar s = u[0] * ((a[0] - xi[0]) + (b[0] - xi[0])) +
+                             u[1] * ((a[1] - xi[1]) + (b[1] - xi[1])) +
+                             u[2] * ((a[2] - xi[2]) + (b[2] - xi[2]));
+            for (int k = 0; k < 3; ++k)
+                rhs[3 * i + k] += mu_ * s * u[k];
+        }
+    }
+}
+
+void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const
+{
+    for (int k = 0; k < 6; ++k)
+        M[k] = 0;
+    const auto face = mesh_->face(f);
+    for (size_t k = 0; k < face.size(); ++k)
+    {
+        const Scalar* p = &x[3 * face[k]];
+        const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
+        const Scalar e0 = q[0] - p[0], e1 = q[1] - p[1], e2 = q[2] - p[2];
+        M[0] += e0 * e0;
+        M[1] += e0 * e1;
+        M[2] += e0 * e2;
+        M[3] += e1 * e1;
+        M[4] += e1 * e2;
+        M[5] += e2 * e2;
+    }
+}
+
+} // namespace meshfair

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+#include "core/topology/topology.h"
+
+namespace meshfair {
+
+//! \brief Face-normal constraints \cite taubin_2012 ("Face Normal Constraints"):
+//!
+//!     E_N(x) = mu sum_{f in F_N} sum_{(i,j) in E(f)} (u_f^T (x_j - x_i))^2
+//!
+//! with unit normals u (3 #F) held constant, so E_N is quadratic and homogeneous in x.
+//! Every face-edge pair counts once per face. Gradient on x_i: 2 mu sum_{f in F_N(i)}
+//! sum_{j in V(f,i)} u_f u_f^T (x_i - x_j), where V(f,i) are the two vertices next to i
+//! along the boundary of f (not V(f) intersect V(i), which for polygons with more than
+//! three sides may hold a third vertex). Generalized Jacobi: the 3x3 block
+//! mu sum_f sum_{j in V(f,i)} u_f u_f^T = 2 mu sum_f u_f u_f^T is added to n_i I, and
+//! mu sum_f u_f u_f^T sum_{j in V(f,i)} (x_j - x_i) to the right-hand side: the paper's
+//! equation with its n_f n_f^t read as u_f u_f^t. n_i I + block is SPD whenever n_i > 0.
+class FaceNormalTerm
+{
+public:
+    //! \pre faces distinct and < #F.
+    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::span<const Index> faces,
+                   Scalar mu);
+
+    Scalar mu() const { return mu_; }
+    const std::vector<Index>& faces() const { return faces_; }
+    bool constrains(Index f) const { return constrained_[f] != 0; }
+
+    Scalar energy(std::span<const Scalar> x, std::span<const Scalar> normals) const;
+    Scalar quadratic(std::span<const Scalar> dx, std::span<const Scalar> normals) const
+    {
+        return energy(dx, normals);
+    }
+    //! block_i += 2 mu sum_{f in F_N(i)} u_f u_f^T (xx xy xz yy yz zz) for each i in vertices.
+    void add_block(std::span<const Scalar> normals, std::span<const Index> vertices,
+                   std::span<Scalar> block) const;
+    void add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
+                 std::span<const Index> vertices, std::span<Scalar> rhs) const;
+    //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
+    //! f's part of E_N is mu u_f^T M_f u_f (used by the joint update of u).
+    void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
+
+private:
+    const Mesh* mesh_;
+    const Topology* topology_;
+    Scalar mu_;
+    std::vector<Index> faces_;
+    std::vector<char> constrained_; //!< #F
+};
+
+} // namespace meshfair

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/normal_smoothing_term.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace meshfair {
+
+bool normalize3(Scalar* v)
+{
+    const Scalar len = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (!(len > 0))
+        return false;
+    for (int a = 0; a < 3; ++a)
+        v[a] /= len;
+    return true;
+}
+
+NormalSmoothingTerm::NormalSmoothingTerm(const Topology& topology,
+                                         std::span<const Index> hard_faces,
+                                         std::span<const Scalar> hard_normals,
+                                         std::span<const Index> soft_faces, Scalar soft_mu,
+                                         std::span<const Scalar> soft_normals)
+    : topology_(&topology),
+      hard_faces_(hard_faces.begin(), hard_faces.end()),
+      soft_faces_(soft_faces.begin(), soft_faces.end()),
+      hard_(topology.face_count, 0),
+      hard_normal_(hard_normals.begin(), hard_normals.end()),
+      soft_weight_(topology.face_count, 0),
+      soft_target_(3 * static_cast<size_t>(topology.face_count), 0)
+{
+    for (const Index f : hard_faces_)
+        hard_[f] = 1;
+    for (size_t k = 0; k < soft_faces_.size(); ++k)
+    {
+        const Index f = soft_faces_[k];
+        soft_weight_[f] = soft_mu;
+        std::copy_n(&soft_normals[3 * k], 3, &soft_target_[3 * f]);
+    }
+}
+
+Scalar NormalSmoothingTerm::dual_energy(std::span<const Scalar> u) const
+{
+    const auto& d = topology_->dual_edge_faces;
+    Scalar sum = 0;
+    for (size_t k = 0; k < d.size(); k += 2)
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar diff = u[3 * d[k + 1] + a] - u[3 * d[k] + a];
+            sum += diff * diff;
+        }
+    return sum;
+}
+
+Scalar NormalSmoothingTerm::soft_energy(std::span<const Scalar> u) const
+{
+    Scalar sum = 0;
+    for (const Index f : soft_faces_)
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar diff = u[3 * f + a] - soft_target_[3 * f + a];
+            sum += soft_weight_[f] * diff * diff;
+        }
+    return sum;
+}
+
+void NormalSmoothingTerm::apply_hard(std::span<Scalar> u) const
+{
+    for (size_t k = 0; k < hard_faces_.size(); ++k)
+        std::copy_n(&hard_normal_[3 * k], 3, &u[3 * hard_faces_[k]]);
+}
+
+void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda,
+                               std::span<Scalar> scratch) const
+{
+    const Index faces = topology_->face_count;
+    // Displacements from the old normals first (Jacobi), then all updates at once.
+    for (Index f = 0; f < faces; ++f)
+    {
+        Scalar* du = &scratch[3 * f];
+        du[0] = du[1] = du[2] = 0;
+        const Scalar denominator = topology_->dual_valence(f) + soft_weight_[f];
+        if (hard_[f] || !(denominator > 0))
+            continue;
+        const Scalar* uf = &u[3 * f];
+        for (const Index g : topology_->face_neighbors_of(f))
+            for (int a = 0; a < 3; ++a)
+                du[a] += u[3 * g + a] - uf[a];
+        for (int a = 0; a < 3; ++a)
+            du[a] = (du[a] + soft_weight_[f] * (soft_target_[3 * f + a] - uf[a])) / denominator;
+    }
+    for (Index f = 0; f < faces; ++f)
+    {
+        if (hard_[f])
+            continue;
+        Scalar next[3];
+        for (int a = 0; a < 3; ++a)
+            next[a] = u[3 * f + a] + lambda * scratch[3 * f + a];
+        if (normalize3(next))
+            std::copy_n(next, 3, &u[3 * f]);
+    }
+}
+
+} // namespace meshfair

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/types.h"
+
+namespace meshfair {
+
+//! \brief Soft vertex constraints \cite taubin_2012 ("Vertex Position Constraints"):
+//!
+//!     E_S(x) = mu sum_{i in V_S} |x_i - x0_i|^2,        mu >= 0, targets x0 of size 3 #V_S
+//!
+//! Gradient 2 mu (x_i - x0_i) on constrained vertices. Generalized Jacobi: diagonal += mu,
+//! rhs += mu (x0_i - x_i); with the edge term this is the paper's update
+//! dx_i = (sum_j (x_j - x_i) + mu (x0_i - x_i)) / (n_i + mu). Weight scales linearly in mu.
+//! Moving targets (set_targets) changes the right-hand side only.
+class SoftVertexTerm
+{
+public:
+    //! \pre vertices distinct and < vertex_count; targets hold 3 values per listed vertex.
+    SoftVertexTerm(Index vertex_count, std::span<const Index> vertices, Scalar mu,
+                   std::span<const Scalar> targets);
+
+    void set_targets(std::span<const Scalar> targets);
+    Scalar mu() const { return mu_; }
+    const std::vector<Index>& vertices() const { return vertices_; }
+
+    Scalar energy(std::span<const Scalar> x) const;
+    Scalar quadratic(std::span<const Scalar> dx) const;
+    void add_diagonal(std::span<Scalar> diagonal) const;
+    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                 std::span<Scalar> rhs) const;
+
+private:
+    Scalar mu_;
+    std::vector<Index> vertices_;
+    std::vector<Scalar> weight_; //!< #V: mu on constrained vertices, 0 elsewhere
+    std::vector<Scalar> target_; //!< 3 #V
+};
+
+} // namespace meshfair

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+#include "core/topology/topology.h"
+
+namespace meshfair {
+
+//! \brief Centroid x_f = (1/n_f) sum_{i in f} x_i of face f for positions `x` (3 #V).
+Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f);
+
+//! \brief Unit normal of face f by Newell's method (the normalized sum of the cross
+//! products of consecutive corners), well defined for non-planar polygons; the zero
+//! vector for a face of zero area.
+Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f);
+
+//! Unit normals of all faces (3 #F), see face_normal.
+std::vector<Scalar> face_normals(const Mesh& mesh, std::span<const Scalar> x);
+
+//! Mean length of the edges of the primal graph; 0 when there are none.
+Scalar mean_edge_length(const Topology& topology, std::span<const Scalar> x);
+
+//! Axis-aligned bounding box of the vertices; min > max when the mesh has none.
+struct BoundingBox
+{
+    Vec3 min{0, 0, 0};
+    Vec3 max{0, 0, 0};
+    bool empty = true;
+};
+BoundingBox bounding_box(std::span<const Scalar> x);
+
+} // namespace meshfair

@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/energies/face_centroid_term.h"
+#include "core/mesh/mesh.h"
+
+namespace meshfair {
+
+//! Descent direction of each step.
+enum class Method
+{
+    Jacobi,         //!< generalized Jacobi: each vertex's own minimizer (the product's mode)
+    GradientDescent //!< dx = -1/2 dE/dx (unpreconditioned), for the paper's comparison
+};
+
+//! A list of element indices, or every element of the mesh ("all").
+struct IndexSet
+{
+    bool all = false;
+    std::vector<Index> indices;
+};
+
+//! Only these vertices may move; every other vertex is held fixed (hard) where it is.
+//! Given as vertices, or as faces (their vertices).
+struct Region
+{
+    std::vector<Index> vertices;
+    std::vector<Index> faces;
+};
+
+//! Hard vertex constraints, moved to targets first when targets are given.
+struct HardVertices
+{
+    std::vector<Index> vertices;
+    std::vector<Vec3> targets; //!< empty: stay where they are
+};
+
+struct SoftVertices
+{
+    IndexSet vertices; //!< "all" = every vertex that is not hard
+    Scalar mu = 1;
+    std::vector<Vec3> targets; //!< empty: the input positions
+};
+
+struct CentroidConstraints
+{
+    IndexSet faces;
+    Scalar mu = 1;
+    std::vector<Vec3> targets; //!< empty: the input centroids
+    CentroidDenominator denominator = CentroidDenominator::Paper;
+};
+
+enum class NormalSource
+{
+    Initial,  //!< unit face normals of the input
+    Smoothed, //!< the input normals after normal smoothing (the paper's "integration")
+    Custom    //!< given per face
+};
+
+struct NormalConstraints
+{
+    IndexSet faces;
+    Scalar mu = 1;
+    NormalSource source = NormalSource::Initial;
+    std::vector<Vec3> normals; //!< Custom only: one per constrained face (normalized)
+};
+
+struct HardNormals
+{
+    std::vector<Index> faces;
+    std::vector<Vec3> normals; //!< empty: the input normals
+};
+
+struct SoftNormals
+{
+    std::vector<Index> faces;
+    Scalar mu = 1;
+    std::vector<Vec3> normals; //!< empty: the input normals
+};
+
+struct NormalSmoothing
+{
+    int iterations = 10;
+    Scalar lambda = 0.5;
+    HardNormals hard;
+    SoftNormals soft;
+};
+
+struct Joint
+{
+    Scalar gamma = 1;
+};
+
+//! \brief Everything one smoothing run needs besides the mesh: the constraint sets and
+//! weights of \cite taubin_2012 ("Combining all the Smoothing Strategies") and the
+//! iteration settings. Absent sections are inactive; the edge term is always on.
+//! The JSON form is documented in docs/recipe.md (see recipe_json.h).
+struct Recipe
+{
+    int iterations = 10;
+    bool optimal_step = false; //!< exact line search instead of the fixed lambda
+    Scalar lambda = 0.5;
+    Scalar tolerance = 0;      //!< stop when the relative energy decrease falls below
+    Method method = Method::Jacobi;
+
+    std::optional<Region> region;
+    std::optional<HardVertices> hard;
+    std::optional<SoftVertices> soft;
+    std::optional<CentroidConstraints> centroid;
+    std::optional<NormalConstraints> normal;
+    std::optional<NormalSmoothing> normal_smoothing;
+    std::optional<Joint> joint;
+};
+
+//! \brief Checks a recipe against a mesh: indices in range and not repeated, target and
+//! normal counts matching their sets, hard and soft vertex sets disjoint, hard and soft
+//! normal face sets disjoint, weights finite and >= 0, sections that need another one.
+//! \throw RecipeError naming the offending key, e.g. "soft.vertices[3]".
+void check_recipe(const Recipe& recipe, const Mesh& mesh);
+
+} // namespace meshfair

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <string_view>
+
+#include "core/recipe/recipe.h"
+
+namespace meshfair {
+
+//! \brief Parses a recipe from JSON text (format in docs/recipe.md). Strict: unknown keys,
+//! wrong types, non-integer indices, negative weights and non-finite numbers are refused.
+//! Index ranges and set sizes need the mesh: see check_recipe.
+//! \throw RecipeError naming the key; InvalidInputError for text that is not JSON
+//! (naming `name` and the byte offset).
+Recipe parse_recipe(std::string_view json_text, const std::string& name);
+
+//! Reads and parses a recipe file. \throw as parse_recipe, or InvalidInputError when the
+//! file cannot be read.
+Recipe read_recipe(const std::string& path);
+
+//! The JSON form of a recipe; parse_recipe(recipe_to_json(r).dump()) gives r back.
+nlohmann::json recipe_to_json(const Recipe& recipe);
+
+} // namespace meshfair

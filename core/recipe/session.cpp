@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/recipe/session.h"
+
+#include <algorithm>
+
+#include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/solver/solver.h"
+
+namespace meshfair {
+
+namespace {
+
+std::vector<Index> all_indices(Index n)
+{
+    std::vector<Index> v(n);
+    for (Index i = 0; i < n; ++i)
+        v[i] = i;
+    return v;
+}
+
+std::vector<Scalar> flatten(const std::vector<Vec3>& points)
+{
+    std::vector<Scalar> flat;
+    flat.reserve(3 * points.size());
+    for (const Vec3& p : points)
+        flat.insert(flat.end(), p.begin(), p.end());
+    return flat;
+}
+
+std::vector<Scalar> gather3(std::span<const Scalar> values, std::span<const Index> items)
+{
+    std::vector<Scalar> out;
+    out.reserve(3 * items.size());
+    for (const Index k : items)
+        out.insert(out.end(), values.begin() + 3 * k, values.begin() + 3 * k + 3);
+    return out;
+}
+
+std::vector<Scalar> unit_normals(const std::vector<Vec3>& normals)
+{
+    std::vector<Scalar> flat = flatten(normals);
+    for (size_t k = 0; k < flat.size(); k += 3)
+        normalize3(&flat[k]);
+    return flat;
+}
+
+} // namespace
+
+Session::Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe)
+    : mesh_(&mesh), topology_(&topology), recipe_(recipe), edge_(topology)
+{
+    precompute();
+}
+
+void Session::set_recipe(const Recipe& recipe)
+{
+    recipe_ = recipe;
+    precompute();
+}
+
+void Session::precompute()
+{
+    check_recipe(recipe_, *mesh_);
+    if (topology_->vertex_count != mesh_->vertex_count() ||
+        topology_->face_count != mesh_->face_count())
+        throw SolverError("Session: the topology was built for another mesh");
+    ++precompute_count_;
+    const Mesh& mesh = *mesh_;
+    const Index nv = mesh.vertex_count(), nf = mesh.face_count();
+    const std::span<const Scalar> x0 = mesh.positions;
+
+    // Fixed vertices: hard ones, and everything outside the region.
+    std::vector<char> fixed(nv, 0);
+    hard_.clear();
+    hard_targets_.clear();
+    if (recipe_.hard)
+    {
+        hard_ = recipe_.hard->vertices;
+        hard_targets_ = flatten(recipe_.hard->targets);
+        for (const Index v : hard_)
+            fixed[v] = 1;
+    }
+    std::vector<char> is_hard(fixed);
+    if (recipe_.region)
+    {
+        std::vector<char> inside(nv, 0);
+        for (const Index v : recipe_.region->vertices)
+            inside[v] = 1;
+        for (const Index f : recipe_.region->faces)
+            for (const Index v : mesh.face(f))
+                inside[v] = 1;
+        for (Index v = 0; v < nv; ++v)
+            fixed[v] = fixed[v] || !inside[v];
+    }
+
+    soft_.reset();
+    if (recipe_.soft)
+    {
+        const SoftVertices& s = *recipe_.soft;
+        std::vector<Index> vertices;
+        std::vector<Scalar> targets;
+        if (s.vertices.all)
+        {
+            for (Index v = 0; v < nv; ++v)
+                if (!is_hard[v])
+                    vertices.push_back(v);
+            targets = gather3(s.targets.empty() ? x0 : std::span<const Scalar>(flatten(s.targets)),
+                              vertices);
+        }
+        else
+        {
+            vertices = s.vertices.indices;
+            targets = s.targets.empty() ? gather3(x0, vertices) : flatten(s.targets);
+        }
+        soft_.emplace(nv, vertices, s.mu, targets);
+    }
+
+    centroid_.reset();
+    if (recipe_.centroid)
+    {
+        const CentroidConstraints& c = *recipe_.centroid;
+        const std::vector<Index> faces = c.faces.all ? all_indices(nf) : c.faces.indices;
+        std::vector<Scalar> targets;
+        if (c.targets.empty())
+            for (const Index f : faces)
+            {
+                const Vec3 p = face_centroid(mesh, x0, f);
+                targets.insert(targets.end(), p.begin(), p.end());
+            }
+        else
+            targets = flatten(c.targets);
+        centroid_.emplace(mesh, *topology_, faces, c.mu, targets, c.denominator);
+    }
+
+    normal_.reset();
+    smoothing_.reset();
+    joint_.reset();
+    normals_.clear();
+    smoothing_trace_.clear();
+    if (recipe_.normal)
+    {
+        const NormalConstraints& n = *recipe_.normal;
+        const std::vector<Index> faces = n.faces.all ? all_indices(nf) : n.faces.indices;
+        const std::vector<Scalar> initial = face_normals(mesh, x0);
+        normals_ = initial;
+        if (n.source == NormalSource::Custom)
+        {
+            const std::vector<Scalar> given = unit_normals(n.normals);
+            for (size_t k = 0; k < faces.size(); ++k)
+                std::copy_n(&given[3 * k], 3, &normals_[3 * faces[k]]);
+        }
+        normal_.emplace(mesh, *topology_, faces, n.mu);
+
+        const NormalSmoothing ns = recipe_.normal_smoothing.value_or(NormalSmoothing{});
+        const std::vector<Scalar> hard_normals =
+            ns.hard.normals.empty() ? gather3(initial, ns.hard.faces) : unit_normals(ns.hard.normals);
+        const std::vector<Scalar> soft_normals =
+            ns.soft.normals.empty() ? gather3(initial, ns.soft.faces) : unit_normals(ns.soft.normals);
+        smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
+                           soft_normals);
+        smoothing_->apply_hard(normals_);
+        scratch_u_.assign(3 * static_cast<size_t>(nf), 0);
+        if (n.source == NormalSource::Smoothed)
+        {
+            // Normal smoothing first, then integration of the smoothed normals through
+            // the face-normal term (the paper's two-stage process).
+            smoothing_trace_.push_back(smoothing_->dual_energy(normals_) +
+                                       smoothing_->soft_energy(normals_));
+            for (int k = 0; k < ns.iterations; ++k)
+            {
+                smoothing_->step(normals_, ns.lambda, scratch_u_);
+                smoothing_trace_.push_back(smoothing_->dual_energy(normals_) +
+                                           smoothing_->soft_energy(normals_));
+            }
+        }
+        if (recipe_.joint)
+            joint_.emplace(*normal_, *smoothing_, *topology_, recipe_.joint->gamma);
+    }
+
+    // The Jacobi system: constant diagonal, blocks while the normals stay fixed.
+    system_.diagonal.assign(nv, 0);
+    system_.rhs.assign(3 * static_cast<size_t>(nv), 0);
+    edge_.add_diagonal(system_.diagonal);
+    if (soft_)
+        soft_->add_diagonal(system_.diagonal);
+    if (centroid_)
+        centroid_->add_diagonal(system_.diagonal);
+    free_.clear();
+    for (Index v = 0; v < nv; ++v)
+        if (!fixed[v] && system_.diagonal[v] > 0)
+            free_.push_back(v);
+    system_.block.clear();
+    system_.factor.clear();
+    if (normal_ && recipe_.method == Method::Jacobi)
+    {
+        system_.block.assign(6 * static_cast<size_t>(nv), 0);
+        system_.factor.assign(6 * static_cast<size_t>(nv), 0);
+        factor_blocks();
+    }
+    dx_.assign(3 * static_cast<size_t>(nv), 0);
+}
+
+void Session::factor_blocks()
+{
+    for (const Index i : free_)
+        std::fill_n(&system_.block[6 * i], 6, Scalar(0));
+    normal_->add_block(normals_, free_, system_.block);
+    for (const Index i : free_)
+        if (!cholesky3(system_.diagonal[i], &system_.block[6 * i], &system_.factor[6 * i]))
+            throw SolverError("Session: the 3x3 system of vertex " + std::to_string(i) +
+                              " is not positive definite");
+}
+
+void Session::apply_hard_targets(std::span<Scalar> x) const
+{
+    for (size_t k = 0; k < hard_.size() && !hard_targets_.empty(); ++k)
+        std::copy_n(&hard_targets_[3 * k], 3, &x[3 * hard_[k]]);
+}
+
+void Session::set_hard_targets(std::span<const Scalar> targets)
+{
+    if (targets.size() != 3 * hard_.size())
+        throw InvalidInputError("Session::set_hard_targets: expected " +
+                                std::to_string(3 * hard_.size()) + " values");
+    hard_targets_.assign(targets.begin(), targets.end());
+}
+
+void Session::set_soft_targets(std::span<const Scalar> targets)
+{
+    if (!soft_ || targets.size() != 3 * soft_->vertices().size())
+        throw InvalidInputError("Session::set_soft_targets: expected 3 values per soft vertex");
+    soft_->set_targets(targets);
+}
+
+void Session::set_centroid_targets(std::span<const Scalar> targets)
+{
+    if (!centroid_ || targets.size() != 3 * centroid_->faces().size())
+        throw InvalidInputError(
+            "Session::set_centroid_targets: expected 3 values per constrained face");
+    centroid_->set_targets(targets);
+}
+
+const std::vector<Index>& Session::soft_vertices() const
+{
+    static const std::vector<Index> none;
+    return soft_ ? soft_->vertices() : none;
+}
+
+const std::vector<Index>& Session::centroid_faces() const
+{
+    static const std::vector<Index> none;
+    return centroid_ ? centroid_->faces() : none;
+}
+
+StepInfo Session::step(std::span<Scalar> x)
+{
+    if (x.size() != 3 * static_cast<size_t>(mesh_->vertex_count()))
+        throw SolverError("Session::step: positions hold " + std::to_string(x.size()) +
+                          " values, the mesh needs " +
+                          std::to_string(3 * static_cast<size_t>(mesh_->vertex_count())));
+    const bool use_blocks = !system_.block.empty();
+    if (joint_ && use_blocks)
+        factor_blocks(); // the normals moved in the previous step
+
+    for (const Index i : free_)
+        std::fill_n(&system_.rhs[3 * i], 3, Scalar(0));
+    edge_.add_rhs(x, free_, system_.rhs);
+    if (soft_)
+        soft_->add_rhs(x, free_, system_.rhs);
+    if (centroid_)
+        centroid_->add_rhs(x, free_, system_.rhs);
+    if (normal_)
+        normal_->add_rhs(x, normals_, free_, system_.rhs);
+
+    if (recipe_.method == Method::Jacobi)
+        jacobi_displacements(system_, free_, use_blocks, dx_);
+    else
+        gradient_displacements(system_, free_, dx_);
+
+    StepInfo info;
+    info.lambda = recipe_.lambda;
+    if (recipe_.optimal_step)
+    {
+        Scalar q = edge_.quadratic(dx_);
+        if (soft_)
+            q += soft_->quadratic(dx_);
+        if (centroid_)
+            q += centroid_->quadratic(dx_);
+        if (normal_)
+            q += normal_->quadratic(dx_, normals_);
+        info.lambda = optimal_step(rhs_dot(system_, free_, dx_), q);
+    }
+    // Joint mode updates u from the old x and old u, like x: one Jacobi step on both.
+    // The line search is exact for x with u held; u never steps past its minimizer.
+    if (joint_)
+        joint_->update_normals(x, normals_, std::min<Scalar>(info.lambda, 1), scratch_u_);
+    apply_displacements(free_, dx_, info.lambda, x);
+    return info;
+}
+
+TermEnergies Session::energy(std::span<const Scalar> x) const
+{
+    TermEnergies e;
+    e.edge = edge_.energy(x);
+    if (soft_)
+        e.soft = soft_->energy(x);
+    if (centroid_)
+        e.centroid = centroid_->energy(x);
+    if (normal_)
+        e.normal = normal_->energy(x, normals_);
+    if (joint_)
+    {
+        e.normal_smoothing = joint_->dual_energy(normals_);
+        e.normal_soft = smoothing_->soft_energy(normals_);
+    }
+    return e;
+}
+
+SmoothResult run(Session& session, std::span<Scalar> x,
+                 const std::function<void(int, const TermEnergies&)>& on_step)
+{
+    SmoothResult result;
+    result.energies.push_back(session.energy(x));
+    if (on_step)
+        on_step(0, result.energies.back());
+    const Recipe& recipe = session.recipe();
+    for (int k = 0; k < recipe.iterations; ++k)
+    {
+        result.lambdas.push_back(session.step(x).lambda);
+        result.energies.push_back(session.energy(x));
+        ++result.iterations;
+        if (on_step)
+            on_step(result.iterations, result.energies.back());
+        if (converged(result.energies[k].total(), result.energies[k + 1].total(),
+                      recipe.tolerance))
+        {
+            result.stopped_by_tolerance = true;
+            break;
+        }
+    }
+    return result;
+}
+
+SmoothResult smooth(Mesh& mesh, const Topology& topology, const Recipe& recipe)
+{
+    Session session(mesh, topology, recipe);
+    session.apply_hard_targets(mesh.positions);
+    return run(session, mesh.positions);
+}
+
+} // namespace meshfair

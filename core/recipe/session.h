@@ -1,0 +1,141 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "core/energies/edge_term.h"
+#include "core/energies/face_centroid_term.h"
+#include "core/energies/face_normal_term.h"
+#include "core/energies/joint_term.h"
+#include "core/energies/normal_smoothing_term.h"
+#include "core/energies/soft_vertex_term.h"
+#include "core/recipe/recipe.h"
+#include "core/solver/jacobi_system.h"
+
+namespace meshfair {
+
+//! Value of each term of the recipe's energy; inactive terms are 0.
+struct TermEnergies
+{
+    Scalar edge = 0;             //!< sum_E |x_j - x_i|^2
+    Scalar soft = 0;             //!< soft vertex constraints
+    Scalar centroid = 0;         //!< soft face-centroid constraints
+    Scalar normal = 0;           //!< face-normal constraints, each face-edge pair once
+    Scalar normal_smoothing = 0; //!< joint mode: gamma sum_{E*} |u_f - u_g|^2
+    Scalar normal_soft = 0;      //!< joint mode: soft normal constraints on u
+    Scalar total() const
+    {
+        return edge + soft + centroid + normal + normal_smoothing + normal_soft;
+    }
+};
+
+//! What one step did.
+struct StepInfo
+{
+    Scalar lambda = 0; //!< step length used (the line search's choice when optimal)
+};
+
+//! \brief All smoothing strategies of \cite taubin_2012 combined in one solver, shaped
+//! like libigl's min_quad_with_fixed: the constructor precomputes everything that depends
+//! on the topology, the constraint sets and their weights; step() then runs one
+//! generalized Jacobi step in linear time without allocating.
+//!
+//! The energy is E = E_L + E_S + E_C + E_N (+ the normal terms of joint mode) over the
+//! free vertices: those in the region (all when there is none) that are not hard and
+//! have a non-zero Jacobi diagonal. Every other vertex is never written.
+//!
+//! What invalidates the precomputation: another mesh connectivity, another recipe (sets,
+//! weights, normal sources, method) -> construct again or set_recipe(). Moved hard, soft
+//! or centroid targets only change the right-hand side: set_*_targets() does not
+//! precompute again. Positions passed to step() must have 3 #V entries.
+//! The mesh and topology must outlive the session; targets and normals that the recipe
+//! leaves out are taken from mesh.positions at precomputation time.
+class Session
+{
+public:
+    //! \pre check_recipe(recipe, mesh) holds; topology == build_topology(mesh).
+    //! \throw RecipeError if the recipe does not fit the mesh.
+    Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe);
+
+    //! Replaces the recipe and precomputes again.
+    void set_recipe(const Recipe& recipe);
+    const Recipe& recipe() const { return recipe_; }
+
+    //! Writes the hard vertices' targets (when the recipe gives any) into x; the paper
+    //! moves constrained vertices first and then keeps them fixed.
+    void apply_hard_targets(std::span<Scalar> x) const;
+    //! New targets, 3 per vertex of the hard set (in recipe order); right-hand side only.
+    void set_hard_targets(std::span<const Scalar> targets);
+    //! New soft targets, 3 per soft vertex (in soft_vertices() order).
+    void set_soft_targets(std::span<const Scalar> targets);
+    //! New centroid targets, 3 per constrained face (in centroid_faces() order).
+    void set_centroid_targets(std::span<const Scalar> targets);
+
+    //! One step: assemble r, solve each free vertex's system, choose lambda, move.
+    //! In joint mode the normals are updated in the same step, from the same old values.
+    //! \throw SolverError when x does not hold 3 #V values.
+    StepInfo step(std::span<Scalar> x);
+
+    TermEnergies energy(std::span<const Scalar> x) const;
+
+    std::span<const Index> free_vertices() const { return free_; }
+    const std::vector<Index>& soft_vertices() const;
+    const std::vector<Index>& centroid_faces() const;
+    //! Current face normals u (3 #F) used by the normal terms; empty when unused.
+    std::span<const Scalar> normals() const { return normals_; }
+    //! E_U before and after each normal-smoothing iteration (normals "smoothed").
+    const std::vector<Scalar>& normal_smoothing_trace() const { return smoothing_trace_; }
+    //! How many times the precomputation ran (1 after construction).
+    int precompute_count() const { return precompute_count_; }
+
+private:
+    void precompute();
+    void factor_blocks();
+
+    const Mesh* mesh_;
+    const Topology* topology_;
+    Recipe recipe_;
+    int precompute_count_ = 0;
+
+    std::vector<Index> free_;
+    std::vector<Index> hard_;
+    std::vector<Scalar> hard_targets_; //!< 3 per hard vertex; empty: no targets
+
+    EdgeTerm edge_;
+    std::optional<SoftVertexTerm> soft_;
+    std::optional<FaceCentroidTerm> centroid_;
+    std::optional<FaceNormalTerm> normal_;
+    std::optional<NormalSmoothingTerm> smoothing_;
+    std::optional<JointTerm> joint_;
+
+    std::vector<Scalar> normals_;   //!< 3 #F
+    std::vector<Scalar> smoothing_trace_;
+    JacobiSystem system_;
+    std::vector<Scalar> dx_;        //!< 3 #V, zero on non-free vertices
+    std::vector<Scalar> scratch_u_; //!< 3 #F
+};
+
+//! The outcome of a whole run.
+struct SmoothResult
+{
+    std::vector<TermEnergies> energies; //!< before the first step, then after each one
+    std::vector<Scalar> lambdas;        //!< per step
+    int iterations = 0;                 //!< steps taken
+    bool stopped_by_tolerance = false;
+};
+
+//! \brief Runs session.recipe().iterations steps on x (modified in place), stopping early
+//! by the recipe's tolerance; `on_step` (optional) sees each step's energies.
+SmoothResult run(Session& session, std::span<Scalar> x,
+                 const std::function<void(int, const TermEnergies&)>& on_step = {});
+
+//! \brief One-liner: check the recipe, precompute, move hard vertices to their targets
+//! and run. mesh.positions are modified in place.
+//! \throw RecipeError when the recipe does not fit the mesh.
+SmoothResult smooth(Mesh& mesh, const Topology& topology, const Recipe& recipe);
+
+} // namespace meshfair

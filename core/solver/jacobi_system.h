@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <cmath>
+#include <vector>
+
+#include "core/types.h"
+
+namespace meshfair {
+
+//! \brief The per-vertex linear systems of one generalized Jacobi step \cite taubin_2012
+//! ("The Jacobi Iteration"): for every free vertex i, A_i dx_i = r_i, where
+//! E(x + dx e_i) = E(x) - 2 r_i^T dx + dx^T A_i dx. So r_i = -1/2 dE/dx_i and A_i is
+//! half the Hessian block of x_i (or, for the paper's centroid denominator, a
+//! majorizer of it; see FaceCentroidTerm).
+//!
+//! A_i = diagonal[i] I + block_i, where every isotropic term adds to the scalar
+//! `diagonal` and the face-normal term adds the symmetric 3x3 `block` (stored as xx xy
+//! xz yy yz zz). With blocks present, A_i is factored once by Cholesky per
+//! precomputation (or per step when the normals move, in joint mode).
+struct JacobiSystem
+{
+    std::vector<Scalar> diagonal; //!< #V
+    std::vector<Scalar> block;    //!< 6 #V, empty when no term adds one
+    std::vector<Scalar> factor;   //!< 6 #V Cholesky factors of A_i when block is used
+    std::vector<Scalar> rhs;      //!< 3 #V
+};
+
+//! Cholesky factor L (row-major lower triangle l00 l10 l11 l20 l21 l22) of the SPD
+//! matrix (d I + B), B given as xx xy xz yy yz zz. False when not positive definite.
+inline bool cholesky3(Scalar d, const Scalar* B, Scalar* L)
+{
+    const Scalar a00 = d + B[0], a10 = B[1], a20 = B[2], a11 = d + B[3], a21 = B[4],
+                 a22 = d + B[5];
+    if (!(a00 > 0))
+        return false;
+    const Scalar l00 = std::sqrt(a00);
+    const Scalar l10 = a10 / l00, l20 = a20 / l00;
+    const Scalar s11 = a11 - l10 * l10;
+    if (!(s11 > 0))
+        return false;
+    const Scalar l11 = std::sqrt(s11);
+    const Scalar l21 = (a21 - l20 * l10) / l11;
+    const Scalar s22 = a22 - l20 * l20 - l21 * l21;
+    if (!(s22 > 0))
+        return false;
+    L[0] = l00;
+    L[1] = l10;
+    L[2] = l11;
+    L[3] = l20;
+    L[4] = l21;
+    L[5] = std::sqrt(s22);
+    return true;
+}
+
+//! Solves L L^T x = r with a factor from cholesky3.
+inline void cholesky3_solve(const Scalar* L, const Scalar* r, Scalar* x)
+{
+    const Scalar y0 = r[0] / L[0];
+    const Scalar y1 = (r[1] - L[1] * y0) / L[2];
+    const Scalar y2 = (r[2] - L[3] * y0 - L[4] * y1) / L[5];
+    x[2] = y2 / L[5];
+    x[1] = (y1 - L[4] * x[2]) / L[2];
+    x[0] = (y0 - L[1] * x[1] - L[3] * x[2]) / L[0];
+}
+
+} // namespace meshfair

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+
+namespace meshfair {
+
+//! Kind of an edge by its number n_e of incident faces \cite taubin_2012.
+enum class EdgeKind
+{
+    Boundary, //!< n_e = 1
+    Regular,  //!< n_e = 2
+    Singular  //!< n_e >= 3
+};
+
+//! \brief Connectivity of a polygon mesh: the primal graph G = (V, E) with per-edge
+//! faces F(e), vertex neighbourhoods V(i), and the dual graph E* \cite taubin_2012 ("The
+//! Primal Graph of a Polygon Mesh", "Smoothing Face Normal Vectors").
+//!
+//! All lists are flat arrays; variable-length ones are CSR (offsets + items). Edges are
+//! numbered in order of first appearance while traversing the faces, as the paper's
+//! insert() assigns them. Non-manifold meshes, several components, isolated vertices and
+//! meshes without faces are all valid. Built once per mesh connectivity.
+struct Topology
+{
+    Index vertex_count = 0;
+    Index face_count = 0;
+
+    //! 2 #E vertex indices, edge e = (edge_vertices[2e], edge_vertices[2e+1]) with i < j.
+    std::vector<Index> edge_vertices;
+    //! For corner k of face f (position k in Mesh::face_vertices), the edge from that
+    //! corner's vertex to the next corner's vertex of the same face (cyclically).
+    std::vector<Index> corner_edge;
+    //! Face owning each corner.
+    std::vector<Index> corner_face;
+    //! F(e) in CSR form; n_e = edge_face_offsets[e+1] - edge_face_offsets[e].
+    std::vector<Index> edge_face_offsets, edge_faces;
+    //! V(i) in CSR form; n_i = vertex_offsets[i+1] - vertex_offsets[i].
+    std::vector<Index> vertex_offsets, vertex_neighbors;
+    //! The corners at vertex i in CSR form (one per incident face).
+    std::vector<Index> vertex_corner_offsets, vertex_corners;
+    //! E*: 2 #E* face indices, pairs (f, g), f < g, of faces sharing a regular edge;
+    //! two faces sharing several regular edges form one dual edge.
+    std::vector<Index> dual_edge_faces;
+    //! N*(f), the dual neighbours of face f, in CSR form; n*_f is its size.
+    std::vector<Index> face_neighbor_offsets, face_neighbors;
+
+    Index boundary_edge_count = 0;
+    Index regular_edge_count = 0;
+    Index singular_edge_count = 0;
+
+    Index edge_count() const { return static_cast<Index>(edge_vertices.size() / 2); }
+    Index dual_edge_count() const { return static_cast<Index>(dual_edge_faces.size() / 2); }
+    Index edge_face_count(Index e) const { return edge_face_offsets[e + 1] - edge_face_offsets[e]; }
+    EdgeKind edge_kind(Index e) const;
+    Index valence(Index i) const { return vertex_offsets[i + 1] - vertex_offsets[i]; }
+    std::span<const Index> neighbors(Index i) const
+    {
+        return {vertex_neighbors.data() + vertex_offsets[i], static_cast<size_t>(valence(i))};
+    }
+    std::span<const Index> faces_of_edge(Index e) const
+    {
+        return {edge_faces.data() + edge_face_offsets[e], static_cast<size_t>(edge_face_count(e))};
+    }
+    std::span<const Index> corners_of_vertex(Index i) const
+    {
+        return {vertex_corners.data() + vertex_corner_offsets[i],
+                static_cast<size_t>(vertex_corner_offsets[i + 1] - vertex_corner_offsets[i])};
+    }
+    Index dual_valence(Index f) const
+    {
+        return face_neighbor_offsets[f + 1] - face_neighbor_offsets[f];
+    }
+    std::span<const Index> face_neighbors_of(Index f) const
+    {
+        return {face_neighbors.data() + face_neighbor_offsets[f],
+                static_cast<size_t>(dual_valence(f))};
+    }
+};
+
+//! \brief Builds the topology of `mesh` in linear expected time with the paper's
+//! hash-based graph (EdgeGraph::get / insert).
+//! \pre validate_mesh(mesh) holds.
+Topology build_topology(const Mesh& mesh);
+
+//! Summary counts beyond the edge classification, for reports.
+struct TopologySummary
+{
+    Index components = 0;        //!< connected components of the primal graph, isolated
+                                 //!< vertices included (each is one component)
+    Index isolated_vertices = 0; //!< vertices with n_i = 0
+};
+
+//! \brief Counts connected components (union-find over the edges) and isolated vertices.
+TopologySummary summarize(const Topology& topology);
+
+//! \brief Corners before and after corner k in its face: the vertices joined to the
+//! corner's vertex by the two edges of that face, V(f, i) in the paper.
+struct CornerNeighbors
+{
+    Index previous;
+    Index next;
+};
+CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topology, Index corner);
+
+} // namespace meshfair
