@@ -1,3 +1,284 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-int main() { return 0; }
+//
+// meshfair-cli: the core library for scripts. Exit codes: 0 ok, 2 bad usage or input,
+// 3 could not write an output, 1 internal error.
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "app/cli/report.h"
+#include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/geometry/noise.h"
+#include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
+#include "core/recipe/session.h"
+#include "core/topology/topology.h"
+
+namespace {
+
+using namespace meshfair;
+using Clock = std::chrono::steady_clock;
+
+constexpr int kExitInput = 2;
+constexpr int kExitWrite = 3;
+constexpr int kExitInternal = 1;
+
+double seconds_since(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+//! Output encoding: what the user asked, else the input's own encoding when the format
+//! stays the same (so binary STL stays binary and ASCII stays exact), else binary.
+io::WriteOptions output_options(const std::string& requested, io::Format out_format,
+                                const io::ReadReport& input)
+{
+    io::WriteOptions options;
+    if (requested == "ascii")
+        options.encoding = io::Encoding::Ascii;
+    else if (requested == "binary")
+        options.encoding = io::Encoding::BinaryLittleEndian;
+    else if (requested == "binary-be")
+        options.encoding = io::Encoding::BinaryBigEndian;
+    else if (out_format == input.format)
+        options.encoding = input.encoding;
+    return options;
+}
+
+void write_text_atomically(const std::string& path, const std::string& text)
+{
+    if (path == "-")
+    {
+        std::cout << text;
+        std::cout.flush();
+        if (!std::cout)
+            throw WriteError("standard output: write failed");
+        return;
+    }
+    io::write_file_atomically(path, text);
+}
+
+struct InfoOptions
+{
+    std::string mesh;
+    bool json = false;
+};
+
+int run_info(const InfoOptions& o)
+{
+    io::ReadReport read_report;
+    const Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    const Topology topology = build_topology(mesh);
+    const nlohmann::json j = cli::info_json(mesh, topology, read_report);
+    if (o.json)
+        std::cout << j.dump(2) << "\n";
+    else
+        std::cout << cli::info_text(j);
+    return 0;
+}
+
+struct SmoothOptions
+{
+    std::string mesh, out, recipe, report, encoding;
+    std::optional<int> iterations;
+    std::optional<std::string> lambda;
+    std::optional<double> tolerance;
+    std::optional<std::string> method;
+    bool quiet = false;
+};
+
+int run_smooth(const SmoothOptions& o)
+{
+    const auto t_read = Clock::now();
+    io::ReadReport read_report;
+    Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    Recipe recipe = o.recipe.empty() ? Recipe{} : read_recipe(o.recipe);
+    const io::Format out_format = io::format_from_path(o.out); // refuse before working
+    const double read_seconds = seconds_since(t_read);
+
+    if (o.iterations)
+        recipe.iterations = *o.iterations;
+    if (o.lambda)
+    {
+        if (*o.lambda == "optimal")
+            recipe.optimal_step = true;
+        else
+        {
+            try
+            {
+                size_t used = 0;
+                recipe.lambda = std::stod(*o.lambda, &used);
+                if (used != o.lambda->size())
+                    throw std::invalid_argument("trailing text");
+            }
+            catch (const std::exception&)
+            {
+                throw InvalidInputError("--lambda: expected a number > 0 or 'optimal', got '" +
+                                        *o.lambda + "'");
+            }
+            recipe.optimal_step = false;
+        }
+    }
+    if (o.tolerance)
+        recipe.tolerance = *o.tolerance;
+    if (o.method)
+        recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
+    try
+    {
+        check_recipe(recipe, mesh);
+    }
+    catch (const RecipeError& e)
+    {
+        throw RecipeError(e.key(), e.message(), o.recipe.empty() ? "" : o.recipe);
+    }
+
+    const auto t_setup = Clock::now();
+    const Topology topology = build_topology(mesh);
+    Session session(mesh, topology, recipe);
+    session.apply_hard_targets(mesh.positions);
+    const double setup_seconds = seconds_since(t_setup);
+
+    const auto t_solve = Clock::now();
+    const SmoothResult result = run(session, mesh.positions);
+    const double solve_seconds = seconds_since(t_solve);
+    validate_mesh(mesh); // never write garbage: every coordinate is still finite
+
+    const auto t_write = Clock::now();
+    io::write_file_atomically(
+        o.out, io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format,
+                                                                    read_report)));
+    const double write_seconds = seconds_since(t_write);
+
+    nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
+    report["seconds"] = {{"read", read_seconds},
+                         {"setup", setup_seconds},
+                         {"solve", solve_seconds},
+                         {"write", write_seconds}};
+    if (!o.report.empty())
+        write_text_atomically(o.report, report.dump(2) + "\n");
+    if (!o.quiet && o.report != "-")
+        std::cout << cli::smooth_summary(report, o.out);
+    return 0;
+}
+
+struct NoiseOptions
+{
+    std::string mesh, out, encoding;
+    double sigma = 0;
+    std::uint64_t seed = 1;
+};
+
+int run_noise(const NoiseOptions& o)
+{
+    io::ReadReport read_report;
+    Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    const io::Format out_format = io::format_from_path(o.out);
+    const Topology topology = build_topology(mesh);
+    const Scalar unit = mean_edge_length(topology, mesh.positions);
+    if (!(unit > 0))
+        throw InvalidInputError("'" + o.mesh +
+                                "': noise needs edges (sigma is in units of the mean edge "
+                                "length) and this mesh has none of positive length");
+    add_gaussian_noise(mesh, o.sigma * unit, o.seed);
+    io::write_file_atomically(
+        o.out, io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format,
+                                                                    read_report)));
+    return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"meshfair-cli: polygon mesh smoothing from scripts (Taubin 2012 energies,\n"
+                 "generalized Jacobi solver). Formats: .obj .off .ply .stl (from the extension)."};
+    app.set_version_flag("--version", std::string("meshfair-cli ") + MESHFAIR_VERSION);
+    app.require_subcommand(1);
+    app.footer("Exit codes: 0 ok, 2 bad usage or input, 3 could not write an output, "
+               "1 internal error.");
+
+    InfoOptions info;
+    auto* info_cmd = app.add_subcommand("info", "Print counts and topology of a mesh");
+    info_cmd->add_option("MESH", info.mesh, "Mesh file")->required();
+    info_cmd->add_flag("--json", info.json, "Print JSON instead of text");
+
+    const std::string encoding_help =
+        "Output encoding for PLY/STL: ascii, binary (little endian) or binary-be (PLY); "
+        "default: the input's encoding when the format is unchanged, else binary. "
+        "STL output fan-triangulates polygons (the only place MeshFair splits them) and its "
+        "binary form stores float32; every other output round-trips doubles exactly";
+    SmoothOptions smooth;
+    auto* smooth_cmd = app.add_subcommand("smooth", "Smooth a mesh with a recipe");
+    smooth_cmd->add_option("MESH", smooth.mesh, "Input mesh")->required();
+    smooth_cmd->add_option("-o,--output", smooth.out, "Output mesh (format from extension)")
+        ->required();
+    smooth_cmd->add_option("--recipe", smooth.recipe, "Recipe JSON (docs/recipe.md)");
+    smooth_cmd->add_option("--iterations", smooth.iterations, "Number of steps (overrides recipe)")
+        ->check(CLI::NonNegativeNumber);
+    smooth_cmd->add_option("--lambda", smooth.lambda,
+                           "Step length > 0, or 'optimal' for the exact line search");
+    smooth_cmd->add_option("--tolerance", smooth.tolerance,
+                           "Stop when the relative energy decrease falls below this (0 = off)")
+        ->check(CLI::NonNegativeNumber);
+    smooth_cmd->add_option("--method", smooth.method, "jacobi (default) or gradient_descent")
+        ->check(CLI::IsMember({"jacobi", "gradient_descent"}));
+    smooth_cmd->add_option("--report", smooth.report, "Write the JSON report here ('-' = stdout)");
+    smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
+        ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+    smooth_cmd->add_flag("-q,--quiet", smooth.quiet, "Print nothing on success");
+
+    NoiseOptions noise;
+    auto* noise_cmd = app.add_subcommand("noise", "Add Gaussian noise to every vertex");
+    noise_cmd->add_option("MESH", noise.mesh, "Input mesh")->required();
+    noise_cmd->add_option("-o,--output", noise.out, "Output mesh")->required();
+    noise_cmd->add_option("--sigma", noise.sigma, "Standard deviation in mean edge lengths")
+        ->required()
+        ->check(CLI::NonNegativeNumber);
+    noise_cmd->add_option("--seed", noise.seed, "Random seed (same seed, same noise)");
+    noise_cmd->add_option("--encoding", noise.encoding, encoding_help)
+        ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::ParseError& e)
+    {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : kExitInput;
+    }
+
+    try
+    {
+        if (*info_cmd)
+            return run_info(info);
+        if (*smooth_cmd)
+            return run_smooth(smooth);
+        if (*noise_cmd)
+            return run_noise(noise);
+    }
+    catch (const InvalidInputError& e)
+    {
+        std::cerr << "meshfair-cli: " << e.what() << "\n";
+        return kExitInput;
+    }
+    catch (const WriteError& e)
+    {
+        std::cerr << "meshfair-cli: cannot write " << e.what() << "\n";
+        return kExitWrite;
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << "meshfair-cli: internal error: " << e.what() << "\n";
+        return kExitInternal;
+    }
+    return kExitInternal;
+}

@@ -17,7 +17,7 @@ std::string item(const std::string& key, size_t k)
 
 // Range and uniqueness of one index list; `seen` is a scratch marker array.
 void check_indices(const std::vector<Index>& list, Index limit, const std::string& key,
-                   const char* element, std::vector<char>& seen)
+                   const char* element, const char* elements, std::vector<char>& seen)
 {
     seen.assign(limit, 0);
     for (size_t k = 0; k < list.size(); ++k)
@@ -26,7 +26,7 @@ void check_indices(const std::vector<Index>& list, Index limit, const std::strin
         if (v < 0 || v >= limit)
             throw RecipeError(item(key, k), std::string(element) + " " + std::to_string(v) +
                                                 " is out of range (the mesh has " +
-                                                std::to_string(limit) + " " + element + "s)");
+                                                std::to_string(limit) + " " + elements + ")");
         if (seen[v])
             throw RecipeError(item(key, k),
                               std::string(element) + " " + std::to_string(v) + " is listed twice");
@@ -79,13 +79,13 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
     check_weight(r.tolerance, "tolerance");
     if (r.region)
     {
-        check_indices(r.region->vertices, nv, "region.vertices", "vertex", seen);
-        check_indices(r.region->faces, nf, "region.faces", "face", seen);
+        check_indices(r.region->vertices, nv, "region.vertices", "vertex", "vertices", seen);
+        check_indices(r.region->faces, nf, "region.faces", "face", "faces", seen);
     }
     std::vector<char> hard(nv, 0);
     if (r.hard)
     {
-        check_indices(r.hard->vertices, nv, "hard.vertices", "vertex", seen);
+        check_indices(r.hard->vertices, nv, "hard.vertices", "vertex", "vertices", seen);
         check_count(r.hard->targets.size(), r.hard->vertices.size(), "hard.targets",
                     "hard.vertices");
         check_finite(r.hard->targets, "hard.targets");
@@ -101,7 +101,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                         "the mesh (soft.vertices is \"all\")");
         else
         {
-            check_indices(list, nv, "soft.vertices", "vertex", seen);
+            check_indices(list, nv, "soft.vertices", "vertex", "vertices", seen);
             check_count(r.soft->targets.size(), list.size(), "soft.targets", "soft.vertices");
             for (size_t k = 0; k < list.size(); ++k)
                 if (hard[list[k]])
@@ -120,7 +120,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                         "the mesh (centroid.faces is \"all\")");
         else
         {
-            check_indices(r.centroid->faces.indices, nf, "centroid.faces", "face", seen);
+            check_indices(r.centroid->faces.indices, nf, "centroid.faces", "face", "faces", seen);
             check_count(r.centroid->targets.size(), r.centroid->faces.indices.size(),
                         "centroid.targets", "centroid.faces");
         }
@@ -131,7 +131,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
         check_weight(r.normal->mu, "normal.mu");
         const size_t faces = r.normal->faces.all ? nf : r.normal->faces.indices.size();
         if (!r.normal->faces.all)
-            check_indices(r.normal->faces.indices, nf, "normal.faces", "face", seen);
+            check_indices(r.normal->faces.indices, nf, "normal.faces", "face", "faces", seen);
         if (r.normal->source == NormalSource::Custom)
         {
             if (r.normal->normals.size() != faces)
@@ -152,7 +152,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
             throw RecipeError("normal_smoothing.iterations", "must be >= 0");
         if (!(std::isfinite(ns.lambda) && ns.lambda > 0))
             throw RecipeError("normal_smoothing.lambda", "must be finite and > 0");
-        check_indices(ns.hard.faces, nf, "normal_smoothing.hard.faces", "face", seen);
+        check_indices(ns.hard.faces, nf, "normal_smoothing.hard.faces", "face", "faces", seen);
         check_count(ns.hard.normals.size(), ns.hard.faces.size(), "normal_smoothing.hard.normals",
                     "normal_smoothing.hard.faces");
         check_directions(ns.hard.normals, "normal_smoothing.hard.normals");
@@ -160,7 +160,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
         for (const Index f : ns.hard.faces)
             hard_faces[f] = 1;
         check_weight(ns.soft.mu, "normal_smoothing.soft.mu");
-        check_indices(ns.soft.faces, nf, "normal_smoothing.soft.faces", "face", seen);
+        check_indices(ns.soft.faces, nf, "normal_smoothing.soft.faces", "face", "faces", seen);
         check_count(ns.soft.normals.size(), ns.soft.faces.size(), "normal_smoothing.soft.normals",
                     "normal_smoothing.soft.faces");
         check_directions(ns.soft.normals, "normal_smoothing.soft.normals");

@@ -170,6 +170,11 @@ Recipe parse_recipe(std::string_view json_text, const std::string& name)
         throw InvalidInputError("'" + name + "': not valid JSON: byte " +
                                 std::to_string(e.byte) + ": " + e.what());
     }
+    catch (const Json::exception& e)
+    {
+        // e.g. a number too large for a double ("number overflow parsing '1e400'").
+        throw InvalidInputError("'" + name + "': not valid JSON: " + e.what());
+    }
     try
     {
         return parse_recipe_json(j);

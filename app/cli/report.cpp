@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/cli/report.h"
+
+#include <cstdio>
+#include <map>
+
+#include "core/geometry/face_geometry.h"
+
+namespace meshfair::cli {
+
+namespace {
+
+using Json = nlohmann::json;
+
+Json counts(const Mesh& mesh, const Topology& topology)
+{
+    return {{"vertices", mesh.vertex_count()},
+            {"faces", mesh.face_count()},
+            {"edges", topology.edge_count()},
+            {"boundary_edges", topology.boundary_edge_count},
+            {"regular_edges", topology.regular_edge_count},
+            {"singular_edges", topology.singular_edge_count}};
+}
+
+std::string format_number(double v)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, "%.10g", v);
+    return buffer;
+}
+
+} // namespace
+
+Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport& read_report)
+{
+    Json j = counts(mesh, topology);
+    const TopologySummary summary = summarize(topology);
+    j["corners"] = mesh.corner_count();
+    j["dual_edges"] = topology.dual_edge_count();
+    j["components"] = summary.components;
+    j["isolated_vertices"] = summary.isolated_vertices;
+    std::map<Index, Index> histogram;
+    for (Index f = 0; f < mesh.face_count(); ++f)
+        ++histogram[mesh.face_size(f)];
+    Json sizes = Json::object();
+    for (const auto& [size, n] : histogram)
+        sizes[std::to_string(size)] = n;
+    j["face_sizes"] = sizes;
+    const BoundingBox box = bounding_box(mesh.positions);
+    j["bounding_box"] =
+        box.empty ? Json(nullptr) : Json{{"min", box.min}, {"max", box.max}};
+    j["format"] = std::string(io::format_name(read_report.format));
+    j["encoding"] = std::string(io::encoding_name(read_report.encoding));
+    j["notes"] = read_report.notes;
+    return j;
+}
+
+std::string info_text(const Json& j)
+{
+    std::string s;
+    auto line = [&s](const std::string& key, const std::string& value) {
+        char buffer[32];
+        std::snprintf(buffer, sizeof buffer, "%-18s ", (key + ":").c_str());
+        s += buffer + value + "\n";
+    };
+    line("format", j["format"].get<std::string>() + " (" + j["encoding"].get<std::string>() + ")");
+    for (const char* key : {"vertices", "faces", "edges", "boundary_edges", "regular_edges",
+                            "singular_edges", "dual_edges", "components", "isolated_vertices"})
+        line(key, std::to_string(j[key].get<long long>()));
+    std::string sizes;
+    for (const auto& [size, n] : j["face_sizes"].items())
+        sizes += (sizes.empty() ? "" : ", ") + std::to_string(n.get<long long>()) + " with " +
+                 size + " sides";
+    line("face_sizes", sizes.empty() ? "none" : sizes);
+    if (j["bounding_box"].is_null())
+        line("bounding_box", "empty");
+    else
+    {
+        std::string box;
+        for (const char* end : {"min", "max"})
+        {
+            box += std::string(box.empty() ? "" : "  ") + end + " (";
+            for (int a = 0; a < 3; ++a)
+                box += format_number(j["bounding_box"][end][a].get<double>()) + (a < 2 ? ", " : ")");
+        }
+        line("bounding_box", box);
+    }
+    for (const auto& note : j["notes"])
+        line("note", note.get<std::string>());
+    return s;
+}
+
+Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& session,
+                   const SmoothResult& result, const io::ReadReport& read_report)
+{
+    Json j = counts(mesh, topology);
+    const Recipe& recipe = session.recipe();
+    j["iterations"] = result.iterations;
+    j["stopped_by_tolerance"] = result.stopped_by_tolerance;
+    j["free_vertices"] = session.free_vertices().size();
+    Json energy = Json::array();
+    for (const TermEnergies& e : result.energies)
+        energy.push_back(e.total());
+    j["energy"] = energy;
+    struct Term
+    {
+        const char* name;
+        bool active;
+        Scalar TermEnergies::*field;
+    };
+    const Term terms[] = {
+        {"edge", true, &TermEnergies::edge},
+        {"soft", recipe.soft.has_value(), &TermEnergies::soft},
+        {"centroid", recipe.centroid.has_value(), &TermEnergies::centroid},
+        {"normal", recipe.normal.has_value(), &TermEnergies::normal},
+        {"normal_smoothing", recipe.joint.has_value(), &TermEnergies::normal_smoothing},
+        {"normal_soft", recipe.joint.has_value(), &TermEnergies::normal_soft},
+    };
+    Json per_term = Json::object();
+    for (const Term& t : terms)
+        if (t.active)
+        {
+            Json trace = Json::array();
+            for (const TermEnergies& e : result.energies)
+                trace.push_back(e.*(t.field));
+            per_term[t.name] = trace;
+        }
+    j["terms"] = per_term;
+    j["lambda"] = result.lambdas;
+    if (!session.normal_smoothing_trace().empty())
+        j["normal_smoothing_energy"] = session.normal_smoothing_trace();
+    j["notes"] = read_report.notes;
+    return j;
+}
+
+std::string smooth_summary(const Json& report, const std::string& output)
+{
+    const auto& energy = report["energy"];
+    std::string s = "smoothed " + std::to_string(report["vertices"].get<long long>()) +
+                    " vertices, " + std::to_string(report["faces"].get<long long>()) +
+                    " faces: " + std::to_string(report["iterations"].get<int>()) +
+                    " iterations, energy " + format_number(energy.front().get<double>()) + " -> " +
+                    format_number(energy.back().get<double>()) + "\n";
+    const auto& t = report["seconds"];
+    s += "seconds: read " + format_number(t["read"].get<double>()) + ", setup " +
+         format_number(t["setup"].get<double>()) + ", solve " +
+         format_number(t["solve"].get<double>()) + ", write " +
+         format_number(t["write"].get<double>()) + "\n";
+    s += "wrote " + output + "\n";
+    return s;
+}
+
+} // namespace meshfair::cli

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// meshfair-cli as scripts use it: exit codes, messages, files written or not.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "core/io/io.h"
+#include "core/recipe/recipe.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run
+{
+    int code = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& s)
+{
+    std::string q = "'";
+    for (const char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+Run cli(const std::string& args)
+{
+    static int counter = 0;
+    const fs::path dir = test::temp_dir();
+    const fs::path out = dir / ("out" + std::to_string(counter)),
+                   err = dir / ("err" + std::to_string(counter++));
+    const std::string command = quote(MESHFAIR_CLI) + " " + args + " >" + quote(out.string()) +
+                                " 2>" + quote(err.string());
+    const int status = std::system(command.c_str());
+    Run r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = io::read_file(out.string());
+    r.err = io::read_file(err.string());
+    return r;
+}
+
+std::string bunny() { return quote((test::assets_dir() / "bunny.obj").string()); }
+
+} // namespace
+
+TEST_SUITE("Cli")
+{
+    TEST_CASE("--help and --version succeed; no command is a usage error")
+    {
+        const Run help = cli("smooth --help");
+        CHECK(help.code == 0);
+        CHECK(help.out.find("fan-triangulates") != std::string::npos);
+        const Run version = cli("--version");
+        CHECK(version.code == 0);
+        CHECK(version.out.find("meshfair-cli") == 0);
+        CHECK(cli("").code == 2);
+        CHECK(cli("smooth").code == 2);
+        CHECK(cli("frobnicate x").code == 2);
+    }
+
+    TEST_CASE("info reports the topology of the bunny")
+    {
+        const Run r = cli("info --json " + bunny());
+        REQUIRE(r.code == 0);
+        const auto j = nlohmann::json::parse(r.out);
+        CHECK(j["vertices"] == 34835);
+        CHECK(j["faces"] == 69666);
+        CHECK(j["edges"] == 104499);
+        CHECK(j["boundary_edges"] == 0);
+        CHECK(j["singular_edges"] == 0);
+        CHECK(j["components"] == 1);
+        CHECK(j["face_sizes"]["3"] == 69666);
+    }
+
+    TEST_CASE("smooth with zero iterations reproduces the input's coordinates in every format")
+    {
+        const fs::path dir = test::temp_dir();
+        const Mesh input = io::read_mesh((test::assets_dir() / "bunny.obj").string());
+        for (const char* ext : {"obj", "off", "ply"})
+        {
+            const std::string out = (dir / (std::string("same.") + ext)).string();
+            const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --iterations 0 -q");
+            REQUIRE(r.code == 0);
+            CHECK(io::read_mesh(out) == input);
+        }
+    }
+
+    TEST_CASE("the report has the trace of every active term and the timings")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string recipe = (dir / "r.json").string();
+        test::write_bytes(recipe, R"({"iterations": 4, "soft": {"vertices": "all", "mu": 0.1},
+            "centroid": {"faces": "all"}, "normal": {"faces": "all", "normals": "smoothed"},
+            "normal_smoothing": {"iterations": 3}})");
+        const std::string out = (dir / "s.ply").string(), report = (dir / "report.json").string();
+        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " +
+                          quote(recipe) + " --report " + quote(report));
+        REQUIRE(r.code == 0);
+        const auto j = nlohmann::json::parse(io::read_file(report));
+        CHECK(j["vertices"] == 34835);
+        CHECK(j["regular_edges"] == 104499);
+        CHECK(j["iterations"] == 4);
+        REQUIRE(j["energy"].size() == 5);
+        for (const char* term : {"edge", "soft", "centroid", "normal"})
+            CHECK(j["terms"][term].size() == 5);
+        for (size_t k = 0; k < 5; ++k)
+        {
+            const double sum = j["terms"]["edge"][k].get<double>() +
+                               j["terms"]["soft"][k].get<double>() +
+                               j["terms"]["centroid"][k].get<double>() +
+                               j["terms"]["normal"][k].get<double>();
+            CHECK(j["energy"][k].get<double>() == doctest::Approx(sum).epsilon(1e-14));
+        }
+        CHECK(j["normal_smoothing_energy"].size() == 4);
+        for (const char* phase : {"read", "setup", "solve", "write"})
+            CHECK(j["seconds"][phase].get<double>() >= 0);
+        CHECK(io::read_mesh(out).vertex_count() == 34835);
+    }
+
+    TEST_CASE("flags override the recipe")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string recipe = (dir / "r.json").string();
+        test::write_bytes(recipe, R"({"iterations": 50, "lambda": 0.5})");
+        const Run r = cli("smooth " + bunny() + " -o " + quote((dir / "o.obj").string()) +
+                          " --recipe " + quote(recipe) +
+                          " --iterations 2 --lambda optimal --report -");
+        REQUIRE(r.code == 0);
+        const auto j = nlohmann::json::parse(r.out);
+        CHECK(j["iterations"] == 2);
+        CHECK(j["lambda"][0].get<double>() != 0.5);
+    }
+
+    TEST_CASE("noise is deterministic for a seed")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string a = (dir / "a.obj").string(), b = (dir / "b.obj").string(),
+                          c = (dir / "c.obj").string();
+        CHECK(cli("noise " + bunny() + " -o " + quote(a) + " --sigma 0.5 --seed 4").code == 0);
+        CHECK(cli("noise " + bunny() + " -o " + quote(b) + " --sigma 0.5 --seed 4").code == 0);
+        CHECK(cli("noise " + bunny() + " -o " + quote(c) + " --sigma 0.5 --seed 5").code == 0);
+        CHECK(io::read_file(a) == io::read_file(b));
+        CHECK(io::read_file(a) != io::read_file(c));
+    }
+
+    TEST_CASE("bad input exits 2 naming the file and line, and writes nothing")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string bad = (dir / "bad.obj").string(), out = (dir / "out.obj").string();
+        test::write_bytes(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+        const Run r = cli("smooth " + quote(bad) + " -o " + quote(out));
+        CHECK(r.code == 2);
+        CHECK(r.err.find(bad + ":4:7: vertex index 4 is past the last vertex") !=
+              std::string::npos);
+        CHECK_FALSE(fs::exists(out));
+
+        const Run missing = cli("info " + quote((dir / "none.obj").string()));
+        CHECK(missing.code == 2);
+        CHECK(missing.err.find("cannot open") != std::string::npos);
+
+        const Run format = cli("smooth " + bunny() + " -o " + quote((dir / "o.xyz").string()));
+        CHECK(format.code == 2);
+        CHECK(format.err.find("unknown mesh format '.xyz'") != std::string::npos);
+    }
+
+    TEST_CASE("a bad recipe exits 2 naming the key, and writes nothing")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string recipe = (dir / "r.json").string(), out = (dir / "o.obj").string();
+        test::write_bytes(recipe, R"({"soft": {"vertices": [1, 40000]}})");
+        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " + quote(recipe));
+        CHECK(r.code == 2);
+        CHECK(r.err.find("soft.vertices[1]: vertex 40000 is out of range") != std::string::npos);
+        CHECK(r.err.find(recipe) != std::string::npos);
+        CHECK_FALSE(fs::exists(out));
+        CHECK(cli("smooth " + bunny() + " -o " + quote(out) + " --lambda fast").code == 2);
+        CHECK_FALSE(fs::exists(out));
+    }
+
+    TEST_CASE("an unwritable output exits 3 and leaves the existing file intact")
+    {
+        const fs::path dir = test::temp_dir();
+        const Run r = cli("smooth " + bunny() + " -o " +
+                          quote((dir / "no" / "such" / "dir.obj").string()));
+        CHECK(r.code == 3);
+        CHECK(r.err.find("cannot write") != std::string::npos);
+        // A directory in the way of the output.
+        fs::create_directories(dir / "taken.obj");
+        CHECK(cli("smooth " + bunny() + " -o " + quote((dir / "taken.obj").string())).code == 3);
+    }
+}

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/face_centroid_term.h"
+
+#include <doctest/doctest.h>
+
+#include "core/energies/edge_term.h"
+#include "core/geometry/face_geometry.h"
+#include "core/recipe/session.h"
+#include "tests/energy_checks.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+
+namespace {
+
+std::vector<Index> iota(Index n)
+{
+    std::vector<Index> v(n);
+    for (Index i = 0; i < n; ++i)
+        v[i] = i;
+    return v;
+}
+
+std::vector<Scalar> centroids(const Mesh& m, std::span<const Index> faces)
+{
+    std::vector<Scalar> c;
+    for (const Index f : faces)
+    {
+        const Vec3 p = face_centroid(m, m.positions, f);
+        c.insert(c.end(), p.begin(), p.end());
+    }
+    return c;
+}
+
+// Solves vertex i's one-variable problem with the given denominator, moving only x_i;
+// returns the edge + centroid right-hand side at i afterwards.
+Vec3 rhs_after_single_vertex_step(Mesh m, const Topology& t, Index i,
+                                  CentroidDenominator denominator)
+{
+    const std::vector<Index> faces = iota(m.face_count());
+    const std::vector<Scalar> targets = centroids(m, faces);
+    test::perturb(m, 0.2, 4);
+    const EdgeTerm edge(t);
+    FaceCentroidTerm term(m, t, faces, 2.0, targets, denominator);
+    std::vector<Scalar> diagonal(m.vertex_count(), 0), rhs(m.positions.size(), 0);
+    edge.add_diagonal(diagonal);
+    term.add_diagonal(diagonal);
+    const std::vector<Index> one{i};
+    edge.add_rhs(m.positions, one, rhs);
+    term.add_rhs(m.positions, one, rhs);
+    const Vec3 before{rhs[3 * i], rhs[3 * i + 1], rhs[3 * i + 2]};
+    for (int a = 0; a < 3; ++a)
+        m.positions[3 * i + a] += rhs[3 * i + a] / diagonal[i];
+    std::fill(rhs.begin(), rhs.end(), 0);
+    edge.add_rhs(m.positions, one, rhs);
+    term.add_rhs(m.positions, one, rhs);
+    // Report the residual relative to the residual before the step.
+    return {rhs[3 * i] / before[0], rhs[3 * i + 1] / before[1], rhs[3 * i + 2] / before[2]};
+}
+
+} // namespace
+
+TEST_SUITE("FaceCentroidTerm")
+{
+    TEST_CASE("right-hand side is minus half the gradient (central differences)")
+    {
+        Mesh m = test::mixed_polygons();
+        const std::vector<Index> faces{0, 2, 5, 6};
+        const std::vector<Scalar> targets = centroids(m, faces);
+        test::perturb(m, 0.1, 9);
+        const Topology t = build_topology(m);
+        for (const auto d : {CentroidDenominator::Paper, CentroidDenominator::Exact})
+        {
+            FaceCentroidTerm term(m, t, faces, 1.7, targets, d);
+            std::vector<Scalar> rhs(m.positions.size(), 0);
+            term.add_rhs(m.positions, iota(m.vertex_count()), rhs);
+            test::check_rhs_is_half_negative_gradient(
+                [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
+        }
+    }
+
+    TEST_CASE("the exact denominator zeroes the vertex's partial gradient")
+    {
+        const Mesh m = test::mixed_polygons();
+        const Topology t = build_topology(m);
+        const Vec3 r = rhs_after_single_vertex_step(m, t, 5, CentroidDenominator::Exact);
+        for (int a = 0; a < 3; ++a)
+            CHECK(r[a] == doctest::Approx(0).epsilon(1e-10).scale(1));
+    }
+
+    TEST_CASE("the printed denominator takes a shorter step in the same direction")
+    {
+        // r after = r before (1 - D_exact / D_paper): same sign, strictly smaller.
+        const Mesh m = test::mixed_polygons();
+        const Topology t = build_topology(m);
+        const Index i = 5; // in two quads and the pentagon
+        Scalar exact = t.valence(i), paper = t.valence(i);
+        for (const Index c : t.corners_of_vertex(i))
+        {
+            const Scalar n = m.face_size(t.corner_face[c]);
+            exact += 2.0 / (n * n);
+            paper += 2.0 / n;
+        }
+        const Vec3 r = rhs_after_single_vertex_step(m, t, i, CentroidDenominator::Paper);
+        for (int a = 0; a < 3; ++a)
+        {
+            CHECK(r[a] > 0);
+            CHECK(r[a] == doctest::Approx(1 - exact / paper).epsilon(1e-9));
+        }
+    }
+
+    TEST_CASE("with the edge term the step is the paper's printed formula")
+    {
+        Mesh m = test::mixed_polygons();
+        test::perturb(m, 0.1, 6);
+        const Topology t = build_topology(m);
+        Recipe recipe;
+        recipe.iterations = 1;
+        recipe.lambda = 1.0;
+        recipe.centroid = CentroidConstraints{};
+        recipe.centroid->faces.all = true;
+        recipe.centroid->mu = 3.0;
+        // Targets: the unperturbed centroids shifted, so x0_f - x_f is not small.
+        for (Index f = 0; f < m.face_count(); ++f)
+        {
+            Vec3 c = face_centroid(m, m.positions, f);
+            c[2] += 0.25;
+            recipe.centroid->targets.push_back(c);
+        }
+        const Mesh before = m;
+        smooth(m, t, recipe);
+        for (Index i = 0; i < m.vertex_count(); ++i)
+        {
+            Scalar denominator = t.valence(i);
+            Vec3 sum{0, 0, 0};
+            for (const Index j : t.neighbors(i))
+                for (int a = 0; a < 3; ++a)
+                    sum[a] += before.positions[3 * j + a] - before.positions[3 * i + a];
+            for (const Index c : t.corners_of_vertex(i))
+            {
+                const Index f = t.corner_face[c];
+                const Scalar n = m.face_size(f);
+                denominator += 3.0 / n;
+                const Vec3 xf = face_centroid(before, before.positions, f);
+                for (int a = 0; a < 3; ++a)
+                    sum[a] += 3.0 / n * (recipe.centroid->targets[f][a] - xf[a]);
+            }
+            for (int a = 0; a < 3; ++a)
+                CHECK(m.positions[3 * i + a] ==
+                      doctest::Approx(before.positions[3 * i + a] + sum[a] / denominator)
+                          .epsilon(1e-13));
+        }
+    }
+
+    TEST_CASE("the printed denominator is safe where the exact one overshoots")
+    {
+        // Quads with a heavy centroid weight: the exact Jacobi step's spectral radius
+        // approaches n_f = 4, so lambda = 0.9 raises the energy; the printed one stays
+        // below 2 and decreases it (docs/math.md).
+        Mesh m = test::quad_torus(12, 8, 2, 0.7);
+        const Topology t = build_topology(m);
+        Recipe recipe;
+        recipe.iterations = 1;
+        recipe.lambda = 0.9;
+        recipe.centroid = CentroidConstraints{};
+        recipe.centroid->faces.all = true;
+        recipe.centroid->mu = 1000;
+        for (Index f = 0; f < m.face_count(); ++f)
+            recipe.centroid->targets.push_back(face_centroid(m, m.positions, f));
+        test::perturb(m, 0.05, 1);
+        for (const auto d : {CentroidDenominator::Paper, CentroidDenominator::Exact})
+        {
+            recipe.centroid->denominator = d;
+            Mesh copy = m;
+            recipe.iterations = 5;
+            const SmoothResult r = smooth(copy, t, recipe);
+            const Scalar before = r.energies.front().total(), after = r.energies.back().total();
+            if (d == CentroidDenominator::Paper)
+                CHECK(after < before);
+            else
+                CHECK(after > before);
+        }
+    }
+}

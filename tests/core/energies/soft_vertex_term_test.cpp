@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/soft_vertex_term.h"
+
+#include <doctest/doctest.h>
+
+#include "core/energies/edge_term.h"
+#include "core/recipe/session.h"
+#include "tests/energy_checks.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+
+TEST_SUITE("SoftVertexTerm")
+{
+    TEST_CASE("right-hand side is minus half the gradient (central differences)")
+    {
+        Mesh m = test::icosphere(1);
+        const std::vector<Index> vertices{0, 4, 9, 30};
+        std::vector<Scalar> targets;
+        for (const Index v : vertices)
+            for (int a = 0; a < 3; ++a)
+                targets.push_back(m.positions[3 * v + a] + 0.1 * (a + 1));
+        test::perturb(m, 0.1, 8);
+        const SoftVertexTerm term(m.vertex_count(), vertices, 2.5, targets);
+        std::vector<Index> all(m.vertex_count());
+        for (Index i = 0; i < m.vertex_count(); ++i)
+            all[i] = i;
+        std::vector<Scalar> rhs(m.positions.size(), 0);
+        term.add_rhs(m.positions, all, rhs);
+        test::check_rhs_is_half_negative_gradient(
+            [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
+    }
+
+    TEST_CASE("with the edge term the step is the paper's formula")
+    {
+        // dx_i = (sum_j (x_j - x_i) + mu (x0_i - x_i)) / (n_i + mu) on constrained vertices.
+        Mesh m = test::icosphere(1);
+        test::perturb(m, 0.1, 2);
+        const Topology t = build_topology(m);
+        const Scalar mu = 0.7;
+        Recipe recipe;
+        recipe.iterations = 1;
+        recipe.lambda = 1.0;
+        recipe.soft = SoftVertices{{false, {3, 5}}, mu, {}};
+        recipe.soft->targets = {{0.1, 0.2, 0.3}, {-0.4, 0.5, -0.6}};
+        const Mesh before = m;
+        smooth(m, t, recipe);
+        for (const Index i : {3, 5})
+        {
+            const Vec3 target = recipe.soft->targets[i == 3 ? 0 : 1];
+            for (int a = 0; a < 3; ++a)
+            {
+                Scalar sum = 0;
+                for (const Index j : t.neighbors(i))
+                    sum += before.positions[3 * j + a] - before.positions[3 * i + a];
+                const Scalar dx = (sum + mu * (target[a] - before.positions[3 * i + a])) /
+                                  (t.valence(i) + mu);
+                CHECK(m.positions[3 * i + a] ==
+                      doctest::Approx(before.positions[3 * i + a] + dx).epsilon(1e-14));
+            }
+        }
+    }
+
+    TEST_CASE("one vertex's Jacobi displacement zeroes its partial gradient")
+    {
+        Mesh m = test::mixed_polygons();
+        const Topology t = build_topology(m);
+        const std::vector<Index> vertices{5};
+        const std::vector<Scalar> target{1.5, 0.5, 2.0};
+        const EdgeTerm edge(t);
+        const SoftVertexTerm soft(m.vertex_count(), vertices, 3.0, target);
+        std::vector<Scalar> diagonal(m.vertex_count(), 0), rhs(m.positions.size(), 0);
+        edge.add_diagonal(diagonal);
+        soft.add_diagonal(diagonal);
+        edge.add_rhs(m.positions, vertices, rhs);
+        soft.add_rhs(m.positions, vertices, rhs);
+        for (int a = 0; a < 3; ++a)
+            m.positions[15 + a] += rhs[15 + a] / diagonal[5];
+        std::vector<Scalar> after(m.positions.size(), 0);
+        edge.add_rhs(m.positions, vertices, after);
+        soft.add_rhs(m.positions, vertices, after);
+        for (int a = 0; a < 3; ++a)
+            CHECK(after[15 + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
+    }
+}

@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/recipe/recipe.h"
+
+#include <doctest/doctest.h>
+
+#include "core/errors.h"
+#include "core/recipe/recipe_json.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+
+namespace {
+
+// The message of the error a recipe text raises (parse, then check against a cube).
+std::string error_of(const std::string& json)
+{
+    try
+    {
+        check_recipe(parse_recipe(json, "r.json"), test::quad_cube());
+    }
+    catch (const InvalidInputError& e)
+    {
+        return e.what();
+    }
+    return "accepted";
+}
+
+} // namespace
+
+TEST_SUITE("Recipe")
+{
+    TEST_CASE("the documented example parses into every section")
+    {
+        const Recipe r = parse_recipe(R"({
+            "iterations": 12, "lambda": "optimal", "tolerance": 1e-6, "method": "jacobi",
+            "region": {"faces": [0, 1]},
+            "hard": {"vertices": [3, 7], "targets": [[0, 0, 0], [1, 1, 1]]},
+            "soft": {"vertices": [1, 2], "mu": 0.5},
+            "centroid": {"faces": "all", "mu": 2, "denominator": "exact"},
+            "normal": {"faces": [0, 1], "mu": 1.5, "normals": [[0, 0, 2], [1, 0, 0]]},
+            "normal_smoothing": {"iterations": 4, "lambda": 0.25,
+                "hard": {"faces": [2], "normals": [[0, 1, 0]]},
+                "soft": {"faces": [3], "mu": 0.1}},
+            "joint": {"gamma": 3}})",
+                                      "r.json");
+        CHECK(r.iterations == 12);
+        CHECK(r.optimal_step);
+        CHECK(r.tolerance == 1e-6);
+        CHECK(r.region->faces == std::vector<Index>{0, 1});
+        CHECK(r.hard->targets[1] == Vec3{1, 1, 1});
+        CHECK(r.soft->mu == 0.5);
+        CHECK(r.centroid->faces.all);
+        CHECK(r.centroid->denominator == CentroidDenominator::Exact);
+        CHECK(r.normal->source == NormalSource::Custom);
+        CHECK(r.normal_smoothing->hard.faces == std::vector<Index>{2});
+        CHECK(r.normal_smoothing->soft.mu == 0.1);
+        CHECK(r.joint->gamma == 3);
+        CHECK_NOTHROW(check_recipe(r, test::quad_cube()));
+    }
+
+    TEST_CASE("omitted sections are inactive and defaults are the paper's")
+    {
+        const Recipe r = parse_recipe("{}", "r.json");
+        CHECK(r.iterations == 10);
+        CHECK(r.lambda == 0.5);
+        CHECK_FALSE(r.optimal_step);
+        CHECK_FALSE(r.soft.has_value());
+        CHECK_FALSE(r.normal.has_value());
+        const Recipe s = parse_recipe(R"({"normal": {"faces": "all"}, "normal_smoothing": {}})",
+                                      "r.json");
+        CHECK(s.normal->source == NormalSource::Smoothed);
+    }
+
+    TEST_CASE("a recipe survives its JSON form")
+    {
+        const Recipe r = parse_recipe(R"({"lambda": 0.3, "soft": {"vertices": "all", "mu": 2},
+            "centroid": {"faces": [1, 2], "targets": [[1, 2, 3], [4, 5, 6]]},
+            "normal": {"faces": "all", "normals": "smoothed"},
+            "normal_smoothing": {"iterations": 3, "hard": {"faces": [0]}}, "joint": {"gamma": 0.5}})",
+                                      "r.json");
+        const Recipe back = parse_recipe(recipe_to_json(r).dump(), "again.json");
+        CHECK(recipe_to_json(back) == recipe_to_json(r));
+        CHECK(back.centroid->targets[1] == Vec3{4, 5, 6});
+    }
+
+    TEST_CASE("every malformed recipe is refused naming the key")
+    {
+        CHECK(error_of(R"({"iteratoins": 3})") ==
+              "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
+              "method, region, hard, soft, centroid, normal, normal_smoothing, joint)");
+        CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
+              "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets)");
+        CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==
+              "recipe: hard.vertices[1]: vertex 9 is out of range (the mesh has 8 vertices)");
+        CHECK(error_of(R"({"centroid": {"faces": [6]}})") ==
+              "recipe: centroid.faces[0]: face 6 is out of range (the mesh has 6 faces)");
+        CHECK(error_of(R"({"hard": {"vertices": [-1]}})") ==
+              "'r.json': hard.vertices[0]: index -1 is out of range");
+        CHECK(error_of(R"({"hard": {"vertices": [2, 2]}})") ==
+              "recipe: hard.vertices[1]: vertex 2 is listed twice");
+        CHECK(error_of(R"({"hard": {"vertices": [1, 2]}, "soft": {"vertices": [3, 2]}})") ==
+              "recipe: soft.vertices[1]: vertex 2 is also in hard.vertices (hard and soft "
+              "vertex sets must be disjoint)");
+        CHECK(error_of(R"({"normal": {"faces": "all"}, "normal_smoothing": {"hard": {"faces":
+              [1]}, "soft": {"faces": [1]}}})") ==
+              "recipe: normal_smoothing.soft.faces[0]: face 1 is also in "
+              "normal_smoothing.hard.faces (hard and soft normal sets must be disjoint)");
+        CHECK(error_of(R"({"soft": {"vertices": "all", "mu": -1}})") ==
+              "'r.json': soft.mu: must be >= 0 (got -1)");
+        CHECK(error_of(R"({"soft": {"vertices": "all", "mu": 1e400}})").find("'r.json'") == 0);
+        CHECK(error_of(R"({"hard": {"vertices": [1], "targets": [[0, 0, 0], [1, 1, 1]]}})") ==
+              "recipe: hard.targets: has 2 entries but hard.vertices has 1");
+        CHECK(error_of(R"({"soft": {"vertices": "all", "targets": [[0, 0, 0]]}})") ==
+              "recipe: soft.targets: has 1 entries but the mesh (soft.vertices is \"all\") has 8");
+        CHECK(error_of(R"({"hard": {"vertices": [1], "targets": [[0, 0]]}})") ==
+              "'r.json': hard.targets[0]: must be an [x, y, z] triple");
+        CHECK(error_of(R"({"hard": {"vertices": [1.5]}})") ==
+              "'r.json': hard.vertices[0]: must be an integer (got 1.5)");
+        CHECK(error_of(R"({"hard": {"vertices": [99999999999999999999]}})") ==
+              "'r.json': hard.vertices[0]: must be an integer (got 1e+20)");
+        CHECK(error_of(R"({"lambda": "fast"})") ==
+              "'r.json': lambda: must be a number > 0 or \"optimal\"");
+        CHECK(error_of(R"({"lambda": 0})") == "'r.json': lambda: must be > 0 (got 0)");
+        CHECK(error_of(R"({"iterations": -2})") ==
+              "'r.json': iterations: must be an integer in [0, 2147483647] (got -2)");
+        CHECK(error_of(R"({"method": "newton"})") ==
+              "'r.json': method: must be \"jacobi\" or \"gradient_descent\"");
+        CHECK(error_of(R"({"centroid": {"faces": "all", "denominator": "printed"}})") ==
+              "'r.json': centroid.denominator: must be \"paper\" or \"exact\"");
+        CHECK(error_of(R"({"normal": {"faces": [0], "normals": [[0, 0, 0]]}})") ==
+              "recipe: normal.normals[0]: a normal must not be the zero vector");
+        CHECK(error_of(R"({"normal": {"faces": [0, 1], "normals": [[0, 0, 1]]}})") ==
+              "recipe: normal.normals: has 1 entries but normal.faces has 2");
+        CHECK(error_of(R"({"normal_smoothing": {}})") ==
+              "recipe: normal_smoothing: needs a \"normal\" section: smoothed normals act on "
+              "the mesh through the face-normal term");
+        CHECK(error_of(R"({"joint": {"gamma": 1}})") ==
+              "recipe: joint: needs a \"normal\" section (its faces and mu couple x and u)");
+        CHECK(error_of(R"({"region": {}})") == "'r.json': region: needs \"vertices\" or \"faces\"");
+        CHECK(error_of(R"({"soft": {"mu": 1}})") == "'r.json': soft.vertices: is required");
+        CHECK(error_of(R"([1, 2])") == "'r.json': (top level): must be an object");
+        CHECK(error_of(R"({"soft": 3})") == "'r.json': soft: must be an object");
+        CHECK(error_of(R"({"iterations": 3,})").find("'r.json': not valid JSON: byte 18") == 0);
+    }
+}
