@@ -13,6 +13,7 @@ namespace meshfair::io {
 //! triangle. ASCII writes shortest round-trip decimals; binary (little endian, the only
 //! binary STL) stores float32, so it is exact only for float-representable coordinates.
 //! Isolated vertices, and vertex order, cannot be represented in STL.
+//! \throw InvalidInputError for binary output of a coordinate beyond the float32 range.
 void write_stl(const Mesh& mesh, Encoding encoding, std::string& out);
 
 } // namespace meshfair::io

@@ -1,0 +1,66 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# MeshFair setup on Debian 12: installs the Debian packages that are missing, builds,
+# then either runs the main job on the bundled bunny (`run`) or every test (`test`).
+# Safe to run again: installed packages are skipped and the build is incremental.
+set -euo pipefail
+
+mode=${1:-run}
+case "$mode" in
+    run | test) ;;
+    *)
+        echo "usage: $0 run|test" >&2
+        exit 2
+        ;;
+esac
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+
+packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
+    doctest-dev libeigen3-dev)
+[ "$mode" = test ] && packages+=(clang-format)
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "Installing missing Debian packages: ${missing[*]}"
+    sudo=()
+    if [ "$(id -u)" != 0 ]; then
+        command -v sudo >/dev/null || {
+            echo "Run as root or install sudo: apt-get install ${missing[*]}" >&2
+            exit 1
+        }
+        sudo=(sudo)
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    "${sudo[@]}" apt-get update -qq
+    "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+build=build
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHFAIR_WERROR=ON >/dev/null
+cmake --build "$build" -j"$(nproc)"
+
+if [ "$mode" = run ]; then
+    cli="$build/app/meshfair-cli"
+    out="$build/demo"
+    mkdir -p "$out"
+    "$cli" info assets/bunny.obj
+    echo
+    "$cli" noise assets/bunny.obj -o "$out/bunny-noisy.obj" --sigma 0.3 --seed 1
+    echo "wrote $out/bunny-noisy.obj (Gaussian noise, sigma = 0.3 mean edge lengths)"
+    "$cli" smooth "$out/bunny-noisy.obj" -o "$out/bunny-smoothed.obj" \
+        --recipe assets/recipes/combined.json --report "$out/report.json"
+    echo
+    echo "report ($out/report.json):"
+    cat "$out/report.json"
+    exit 0
+fi
+
+(cd "$build" && ctest --output-on-failure -j"$(nproc)")
+echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
+find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror
+echo "All tests passed and every source file is formatted."
