@@ -15,8 +15,14 @@
 
 namespace meshfair::test {
 
-std::filesystem::path data_dir() { return MESHFAIR_TEST_DATA_DIR; }
-std::filesystem::path assets_dir() { return MESHFAIR_ASSETS_DIR; }
+std::filesystem::path data_dir()
+{
+    return MESHFAIR_TEST_DATA_DIR;
+}
+std::filesystem::path assets_dir()
+{
+    return MESHFAIR_ASSETS_DIR;
+}
 
 std::filesystem::path temp_dir()
 {
@@ -71,10 +77,9 @@ Mesh tetrahedron()
 
 Mesh quad_cube()
 {
-    return make({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1},
-                 {0, 1, 1}},
-                {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                 {3, 0, 4, 7}});
+    return make(
+        {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
+        {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
 
 Mesh open_grid(int nx, int ny)
@@ -133,12 +138,22 @@ Mesh quad_torus(int nu, int nv, double R, double r)
 Mesh icosphere(int subdivisions)
 {
     const double t = (1 + std::sqrt(5.0)) / 2;
-    Mesh m = make({{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
-                   {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}},
-                  {{0, 11, 5}, {0, 5, 1}, {0, 1, 7}, {0, 7, 10}, {0, 10, 11}, {1, 5, 9},
-                   {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8}, {3, 9, 4}, {3, 4, 2},
-                   {3, 2, 6}, {3, 6, 8}, {3, 8, 9}, {4, 9, 5}, {2, 4, 11}, {6, 2, 10},
-                   {8, 6, 7}, {9, 8, 1}});
+    Mesh m =
+        make({{-1, t, 0},
+              {1, t, 0},
+              {-1, -t, 0},
+              {1, -t, 0},
+              {0, -1, t},
+              {0, 1, t},
+              {0, -1, -t},
+              {0, 1, -t},
+              {t, 0, -1},
+              {t, 0, 1},
+              {-t, 0, -1},
+              {-t, 0, 1}},
+             {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+              {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
     for (int s = 0; s < subdivisions; ++s)
     {
         Mesh next;
@@ -150,8 +165,8 @@ Mesh icosphere(int subdivisions)
             if (it != mid.end())
                 return it->second;
             const Vec3 pa = m.position(a), pb = m.position(b);
-            const Index v = next.add_vertex((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2,
-                                            (pa[2] + pb[2]) / 2);
+            const Index v =
+                next.add_vertex((pa[0] + pb[0]) / 2, (pa[1] + pb[1]) / 2, (pa[2] + pb[2]) / 2);
             mid.emplace(key, v);
             return v;
         };
@@ -179,11 +194,26 @@ Mesh icosphere(int subdivisions)
 Mesh mixed_polygons()
 {
     // A 3x2 patch: quads, two triangles and a pentagon, slightly non-planar.
-    return make({{0, 0, 0}, {1, 0, 0.1}, {2, 0, 0}, {3, 0, 0.2}, {0, 1, 0.1}, {1, 1, 0},
-                 {2, 1, 0.3}, {3, 1, 0}, {0, 2, 0}, {1, 2, 0.2}, {2, 2, 0}, {3, 2, 0.1},
+    return make({{0, 0, 0},
+                 {1, 0, 0.1},
+                 {2, 0, 0},
+                 {3, 0, 0.2},
+                 {0, 1, 0.1},
+                 {1, 1, 0},
+                 {2, 1, 0.3},
+                 {3, 1, 0},
+                 {0, 2, 0},
+                 {1, 2, 0.2},
+                 {2, 2, 0},
+                 {3, 2, 0.1},
                  {1.5, 2.6, 0.1}},
-                {{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7}, {2, 7, 6}, {4, 5, 9, 8},
-                 {5, 6, 10, 12, 9}, {6, 7, 11, 10}});
+                {{0, 1, 5, 4},
+                 {1, 2, 6, 5},
+                 {2, 3, 7},
+                 {2, 7, 6},
+                 {4, 5, 9, 8},
+                 {5, 6, 10, 12, 9},
+                 {6, 7, 11, 10}});
 }
 
 void perturb(Mesh& mesh, double sigma, unsigned seed)

@@ -21,15 +21,15 @@ std::filesystem::path temp_dir();
 void write_bytes(const std::filesystem::path& path, const std::string& content);
 
 // Synthetic meshes (pmp-style fixtures).
-Mesh tetrahedron();                      //!< 4 vertices, 4 triangles, closed
-Mesh quad_cube();                        //!< 8 vertices, 6 quads, closed
-Mesh open_grid(int nx, int ny);          //!< (nx+1)(ny+1) vertices, nx*ny quads in z = 0
-Mesh nonmanifold_fan();                  //!< 3 triangles sharing one edge
-Mesh two_components();                   //!< two disjoint triangles
-Mesh with_isolated_vertex();             //!< a triangle plus an unused vertex
+Mesh tetrahedron();             //!< 4 vertices, 4 triangles, closed
+Mesh quad_cube();               //!< 8 vertices, 6 quads, closed
+Mesh open_grid(int nx, int ny); //!< (nx+1)(ny+1) vertices, nx*ny quads in z = 0
+Mesh nonmanifold_fan();         //!< 3 triangles sharing one edge
+Mesh two_components();          //!< two disjoint triangles
+Mesh with_isolated_vertex();    //!< a triangle plus an unused vertex
 Mesh quad_torus(int nu, int nv, double R, double r); //!< closed quad torus
-Mesh icosphere(int subdivisions);        //!< subdivided icosahedron on the unit sphere
-Mesh mixed_polygons();                   //!< open patch of triangles, quads and a pentagon
+Mesh icosphere(int subdivisions);                    //!< subdivided icosahedron on the unit sphere
+Mesh mixed_polygons(); //!< open patch of triangles, quads and a pentagon
 
 //! Adds deterministic Gaussian noise (sigma in absolute units).
 void perturb(Mesh& mesh, double sigma, unsigned seed);

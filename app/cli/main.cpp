@@ -153,8 +153,8 @@ int run_smooth(const SmoothOptions& o)
 
     const auto t_write = Clock::now();
     io::write_file_atomically(
-        o.out, io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format,
-                                                                    read_report)));
+        o.out,
+        io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format, read_report)));
     const double write_seconds = seconds_since(t_write);
 
     nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
@@ -189,8 +189,8 @@ int run_noise(const NoiseOptions& o)
                                 "length) and this mesh has none of positive length");
     add_gaussian_noise(mesh, o.sigma * unit, o.seed);
     io::write_file_atomically(
-        o.out, io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format,
-                                                                    read_report)));
+        o.out,
+        io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format, read_report)));
     return 0;
 }
 
@@ -198,12 +198,14 @@ int run_noise(const NoiseOptions& o)
 
 int main(int argc, char** argv)
 {
-    CLI::App app{"meshfair-cli: polygon mesh smoothing from scripts (Taubin 2012 energies,\n"
-                 "generalized Jacobi solver). Formats: .obj .off .ply .stl (from the extension)."};
+    CLI::App app{
+        "meshfair-cli: polygon mesh smoothing from scripts (Taubin 2012 energies,\n"
+        "generalized Jacobi solver). Formats: .obj .off .ply .stl (from the extension)."};
     app.set_version_flag("--version", std::string("meshfair-cli ") + MESHFAIR_VERSION);
     app.require_subcommand(1);
-    app.footer("Exit codes: 0 ok, 2 bad usage or input, 3 could not write an output, "
-               "1 internal error.");
+    app.footer(
+        "Exit codes: 0 ok, 2 bad usage or input, 3 could not write an output, "
+        "1 internal error.");
 
     InfoOptions info;
     auto* info_cmd = app.add_subcommand("info", "Print counts and topology of a mesh");
@@ -225,8 +227,9 @@ int main(int argc, char** argv)
         ->check(CLI::NonNegativeNumber);
     smooth_cmd->add_option("--lambda", smooth.lambda,
                            "Step length > 0, or 'optimal' for the exact line search");
-    smooth_cmd->add_option("--tolerance", smooth.tolerance,
-                           "Stop when the relative energy decrease falls below this (0 = off)")
+    smooth_cmd
+        ->add_option("--tolerance", smooth.tolerance,
+                     "Stop when the relative energy decrease falls below this (0 = off)")
         ->check(CLI::NonNegativeNumber);
     smooth_cmd->add_option("--method", smooth.method, "jacobi (default) or gradient_descent")
         ->check(CLI::IsMember({"jacobi", "gradient_descent"}));

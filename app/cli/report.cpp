@@ -48,8 +48,7 @@ Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport&
         sizes[std::to_string(size)] = n;
     j["face_sizes"] = sizes;
     const BoundingBox box = bounding_box(mesh.positions);
-    j["bounding_box"] =
-        box.empty ? Json(nullptr) : Json{{"min", box.min}, {"max", box.max}};
+    j["bounding_box"] = box.empty ? Json(nullptr) : Json{{"min", box.min}, {"max", box.max}};
     j["format"] = std::string(io::format_name(read_report.format));
     j["encoding"] = std::string(io::encoding_name(read_report.encoding));
     j["notes"] = read_report.notes;
@@ -82,7 +81,8 @@ std::string info_text(const Json& j)
         {
             box += std::string(box.empty() ? "" : "  ") + end + " (";
             for (int a = 0; a < 3; ++a)
-                box += format_number(j["bounding_box"][end][a].get<double>()) + (a < 2 ? ", " : ")");
+                box +=
+                    format_number(j["bounding_box"][end][a].get<double>()) + (a < 2 ? ", " : ")");
         }
         line("bounding_box", box);
     }

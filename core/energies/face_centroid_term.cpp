@@ -8,8 +8,7 @@ namespace meshfair {
 
 FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
                                    std::span<const Index> faces, Scalar mu,
-                                   std::span<const Scalar> targets,
-                                   CentroidDenominator denominator)
+                                   std::span<const Scalar> targets, CentroidDenominator denominator)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),

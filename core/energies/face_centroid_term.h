@@ -43,8 +43,7 @@ public:
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
     //! Not const: caches each constrained face's residual mu/n_f (x0_f - x_f) first.
-    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
-                 std::span<Scalar> rhs);
+    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices, std::span<Scalar> rhs);
 
 private:
     const Mesh* mesh_;

@@ -38,8 +38,7 @@ public:
         return gamma_ * smoothing_->dual_energy(u);
     }
     //! -1/2 dE/du_f at (x, u), for tests of the derivation.
-    void normal_rhs(std::span<const Scalar> x, std::span<const Scalar> u, Index f,
-                    Scalar* r) const;
+    void normal_rhs(std::span<const Scalar> x, std::span<const Scalar> u, Index f, Scalar* r) const;
     //! The exact minimizer u_f* of E in u_f alone (before renormalization); false when
     //! the 3x3 matrix is singular.
     bool minimizer(std::span<const Scalar> x, std::span<const Scalar> u, Index f,

@@ -71,8 +71,7 @@ void NormalSmoothingTerm::apply_hard(std::span<Scalar> u) const
         std::copy_n(&hard_normal_[3 * k], 3, &u[3 * hard_faces_[k]]);
 }
 
-void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda,
-                               std::span<Scalar> scratch) const
+void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda, std::span<Scalar> scratch) const
 {
     const Index faces = topology_->face_count;
     // Displacements from the old normals first (Jacobi), then all updates at once.

@@ -49,8 +49,8 @@ public:
     {
         static_assert(std::is_arithmetic_v<T>);
         if (remaining() < sizeof(T))
-            fail("file ends inside this value (needs " + std::to_string(sizeof(T)) +
-                 " bytes, " + std::to_string(remaining()) + " left)");
+            fail("file ends inside this value (needs " + std::to_string(sizeof(T)) + " bytes, " +
+                 std::to_string(remaining()) + " left)");
         unsigned char bytes[sizeof(T)];
         std::memcpy(bytes, data_.data() + pos_, sizeof(T));
         if ((order == ByteOrder::Little) != (std::endian::native == std::endian::little))
@@ -65,8 +65,8 @@ public:
     void skip(size_t bytes)
     {
         if (remaining() < bytes)
-            fail("file ends inside this element (needs " + std::to_string(bytes) +
-                 " more bytes, " + std::to_string(remaining()) + " left)");
+            fail("file ends inside this element (needs " + std::to_string(bytes) + " more bytes, " +
+                 std::to_string(remaining()) + " left)");
         pos_ += bytes;
     }
 

@@ -27,8 +27,8 @@ FaceCheck normalize_face(std::vector<Index>& face)
     if (Index r = repeated_vertex(face); r != kInvalidIndex)
     {
         check.ok = false;
-        check.problem = "face uses vertex " + std::to_string(r) +
-                        " at two corners that are not adjacent";
+        check.problem =
+            "face uses vertex " + std::to_string(r) + " at two corners that are not adjacent";
     }
     return check;
 }
@@ -38,9 +38,8 @@ void report_collapsed(const NoteCounter& counter, std::vector<std::string>& note
     if (counter.count == 0)
         return;
     notes.push_back("collapsed " + std::to_string(counter.count) +
-                    " consecutive repeated vertex indices in " +
-                    std::to_string(counter.elements) + " faces (first at " + counter.first_where +
-                    ")");
+                    " consecutive repeated vertex indices in " + std::to_string(counter.elements) +
+                    " faces (first at " + counter.first_where + ")");
 }
 
 } // namespace meshfair::io

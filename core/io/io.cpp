@@ -78,7 +78,9 @@ std::string_view encoding_name(Encoding encoding)
 
 std::string read_file(const std::string& path)
 {
-    struct stat st{};
+    struct stat st
+    {
+    };
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
         throw InvalidInputError("'" + path + "': is a directory, not a mesh file");
     std::ifstream in(path, std::ios::binary);
@@ -167,7 +169,9 @@ namespace {
 
 mode_t new_file_mode(const std::string& path)
 {
-    struct stat st{};
+    struct stat st
+    {
+    };
     if (::stat(path.c_str(), &st) == 0)
         return st.st_mode & 07777;
     // The umask is only readable by changing it; /proc avoids that race.
@@ -190,7 +194,9 @@ void write_file_atomically(const std::string& path, std::string_view data)
     const auto fail = [&](const std::string& what, int err) {
         throw WriteError("'" + path + "': " + what + ": " + std::strerror(err));
     };
-    struct stat st{};
+    struct stat st
+    {
+    };
     if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
         throw WriteError("'" + path + "': is a directory");
     std::string tmp = path + ".tmp-XXXXXX";

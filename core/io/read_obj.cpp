@@ -23,7 +23,7 @@ struct ObjScan
     std::vector<Index> offsets{0};
     std::vector<Index> indices;
     std::vector<std::int64_t> face_lines;
-    std::int64_t ignored_lines = 0;  // l, p, curves, surfaces
+    std::int64_t ignored_lines = 0; // l, p, curves, surfaces
     std::int64_t unknown_lines = 0;
     std::string first_unknown;
 };
@@ -120,16 +120,18 @@ ObjScan scan(std::string_view data, const std::string& name)
     const std::int64_t nv = static_cast<std::int64_t>(s.positions.size() / 3);
     if (forward_max >= nv)
     {
-        throw FormatError(SourceLocation::text(name, forward_line, forward_column), "vertex index " + std::to_string(forward_max + 1) +
-                                     " is past the last vertex (the file defines " +
-                                     std::to_string(nv) + ")");
+        throw FormatError(SourceLocation::text(name, forward_line, forward_column),
+                          "vertex index " + std::to_string(forward_max + 1) +
+                              " is past the last vertex (the file defines " + std::to_string(nv) +
+                              ")");
     }
     return s;
 }
 
 [[noreturn]] void disagree(const std::string& name, const std::string& what)
 {
-    throw FormatError(SourceLocation::whole(name), "tinyobjloader reads this file differently: " + what);
+    throw FormatError(SourceLocation::whole(name),
+                      "tinyobjloader reads this file differently: " + what);
 }
 
 // tinyobjloader gives the face structure (groups and objects concatenated in file

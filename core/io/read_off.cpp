@@ -9,46 +9,14 @@
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
 
-namespace meshfair::io
-{
+namespace meshfair::io {
 
-namespace
-{
+namespace {
 
 // The shortest vertex line ("0 0 0\n") and face line ("3 0 1 2\n"): a header whose
 // counts need more bytes than follow it is refused before anything is allocated.
 constexpr std::int64_t kMinVertexBytes = 6;
 constexpr std::int64_t kMinFaceBytes = 8;
-
-std::string count_of(std::int64_t n, const char* singular, const char* plural)
-{
-    return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
-std::string quoted(std::string_view token)
-{
-    constexpr size_t kMax = 40;
-    std::string s(token.substr(0, kMax));
-    if (token.size() > kMax)
-        s += "...";
-    return "'" + s + "'";
-}
-
-// ASCII only, without the locale: keywords are plain English words.
-char ascii_lower(char c)
-{
-    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
-bool equals_ignoring_case(std::string_view a, std::string_view b)
-{
-    if (a.size() != b.size())
-        return false;
-    for (size_t k = 0; k < a.size(); ++k)
-        if (ascii_lower(a[k]) != ascii_lower(b[k]))
-            return false;
-    return true;
-}
 
 // The lines of an OFF file that hold data: '#' starts a comment anywhere on a line,
 // and lines left blank are skipped.
@@ -127,8 +95,7 @@ OffVariant parse_keyword(const LineReader& reader, std::string_view token)
 {
     OffVariant v;
     v.keyword = std::string(token);
-    const auto refuse = [&]
-    {
+    const auto refuse = [&] {
         reader.fail_at(token,
                        "expected an OFF header keyword ([ST][C][N]OFF), found " + quoted(token));
     };
@@ -344,7 +311,7 @@ void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& rep
                                coloured.first + ")");
 }
 
-}  // namespace
+} // namespace
 
 Mesh read_off(std::string_view data, const std::string& name, ReadReport& report)
 {
@@ -377,4 +344,4 @@ Mesh read_off(std::string_view data, const std::string& name, ReadReport& report
     return mesh;
 }
 
-}  // namespace meshfair::io
+} // namespace meshfair::io

@@ -2,13 +2,712 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/io/read_ply.h"
 
+#include <cassert>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
 #include "core/errors.h"
+#include "core/io/byte_reader.h"
+#include "core/io/face_builder.h"
+#include "core/io/text_reader.h"
 
 namespace meshfair::io {
 
-Mesh read_ply(std::string_view, const std::string& name, ReadReport&)
+namespace {
+
+// The eight PLY value types, in the order of kTypes.
+enum class Type
 {
-    throw InvalidInputError("'" + name + "': reader not written yet");
+    Int8,
+    UInt8,
+    Int16,
+    UInt16,
+    Int32,
+    UInt32,
+    Float32,
+    Float64
+};
+
+struct TypeInfo
+{
+    std::string_view name, sized_name; // both spellings PLY writers use
+    size_t size;
+    bool is_integer;
+    std::int64_t min, max; // integer types only
+};
+
+constexpr TypeInfo kTypes[] = {
+    {"char", "int8", 1, true, -128, 127},
+    {"uchar", "uint8", 1, true, 0, 255},
+    {"short", "int16", 2, true, -32768, 32767},
+    {"ushort", "uint16", 2, true, 0, 65535},
+    {"int", "int32", 4, true, -2147483648LL, 2147483647},
+    {"uint", "uint32", 4, true, 0, 4294967295LL},
+    {"float", "float32", 4, false, 0, 0},
+    {"double", "float64", 8, false, 0, 0},
+};
+
+const TypeInfo& info(Type type)
+{
+    return kTypes[static_cast<int>(type)];
+}
+
+// Doubles at or above this magnitude round to infinity as a float32 (halfway between
+// FLT_MAX and 2^128 rounds to even, which is 2^128).
+constexpr double kFloatOverflow = 0x1.ffffffp+127;
+
+enum class Kind
+{
+    Vertex,
+    Face,
+    Other
+};
+
+struct Property
+{
+    std::string name;
+    Type type = Type::Int8; // the scalar type, or the type of a list's items
+    std::string type_name;  // as declared, for messages
+    bool is_list = false;
+    Type count_type = Type::UInt8;
+    std::string count_type_name;
+    std::int64_t line = 0;   // header line declaring it
+    int axis = -1;           // 0, 1, 2 for the vertex coordinates x, y, z
+    bool is_indices = false; // the face's vertex index list
+    std::string what;        // names one value in messages: "x coordinate", "'red' value"
+    std::string count_what;  // "'vertex_indices' list count"
+};
+
+struct Element
+{
+    std::string name;
+    Kind kind = Kind::Other;
+    std::int64_t count = 0;
+    std::vector<Property> properties;
+    std::int64_t line = 0; // header line declaring it
+    std::int64_t count_column = 0;
+};
+
+struct Header
+{
+    Encoding encoding = Encoding::Ascii;
+    std::vector<Element> elements;
+    size_t data_offset = 0; // first byte after end_header's line terminator
+};
+
+std::string row_name(const Element& element, std::int64_t row)
+{
+    return element.name + " " + std::to_string(row);
+}
+
+// Header lines come from a file that may be binary after end_header: a NUL there most
+// likely means end_header is missing.
+bool next_header_line(LineReader& reader)
+{
+    try
+    {
+        return reader.next();
+    }
+    catch (const FormatError& e)
+    {
+        throw FormatError(e.where(),
+                          e.message() + " (inside the PLY header; is end_header missing?)");
+    }
+}
+
+Type parse_type(const LineReader& reader, std::string_view token)
+{
+    for (size_t k = 0; k < std::size(kTypes); ++k)
+        if (kTypes[k].name == token || kTypes[k].sized_name == token)
+            return static_cast<Type>(k);
+    reader.fail_at(token, "unknown property type " + quoted(token));
+}
+
+void parse_format(const LineReader& reader, Tokenizer& tokens, Header& h)
+{
+    const std::string_view kind = tokens.next();
+    const std::string_view version = tokens.next();
+    const bool is_known =
+        kind == "ascii" || kind == "binary_little_endian" || kind == "binary_big_endian";
+    if (kind.empty() || !is_known || version != "1.0" || !tokens.at_end())
+    {
+        std::string_view rest = reader.line().substr(
+            kind.empty() ? reader.line().size() : kind.data() - reader.line().data());
+        while (!rest.empty() && is_blank(rest.back()))
+            rest.remove_suffix(1);
+        reader.fail("unknown PLY format " + quoted(rest) +
+                        " (expected ascii, binary_little_endian or binary_big_endian, version 1.0)",
+                    kind.empty() ? 0 : reader.column_of(kind));
+    }
+    h.encoding = kind == "ascii"                  ? Encoding::Ascii
+                 : kind == "binary_little_endian" ? Encoding::BinaryLittleEndian
+                                                  : Encoding::BinaryBigEndian;
+}
+
+void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
+{
+    const std::string_view name = tokens.next();
+    const std::string_view count = tokens.next();
+    if (count.empty() || !tokens.at_end())
+        reader.fail("an element line must be 'element NAME COUNT'");
+    Element e;
+    e.name = std::string(name);
+    e.kind = name == "vertex" ? Kind::Vertex : name == "face" ? Kind::Face : Kind::Other;
+    e.count = parse_integer(reader, count, "element count");
+    if (e.count < 0)
+        reader.fail_at(count, "element count " + std::to_string(e.count) + " is negative");
+    for (const Element& other : h.elements)
+        if (e.kind != Kind::Other && other.name == e.name)
+            reader.fail_at(name, "second '" + e.name + "' element (a PLY mesh has at most one)");
+    e.line = reader.line_number();
+    e.count_column = reader.column_of(count);
+    h.elements.push_back(std::move(e));
+}
+
+void parse_property(const LineReader& reader, Tokenizer& tokens, Element& e)
+{
+    Property p;
+    p.line = reader.line_number();
+    std::string_view first = tokens.next();
+    std::string_view name;
+    if (first == "list")
+    {
+        const std::string_view count_type = tokens.next();
+        const std::string_view item_type = tokens.next();
+        name = tokens.next();
+        if (name.empty() || !tokens.at_end())
+            reader.fail("a list property line must be 'property list COUNT_TYPE ITEM_TYPE NAME'");
+        p.is_list = true;
+        p.count_type = parse_type(reader, count_type);
+        p.count_type_name = std::string(count_type);
+        if (!info(p.count_type).is_integer)
+            reader.fail_at(count_type,
+                           "list count type " + quoted(count_type) + " is not an integer type");
+        first = item_type;
+    }
+    else
+    {
+        name = tokens.next();
+        if (name.empty() || !tokens.at_end())
+            reader.fail("a property line must be 'property TYPE NAME'");
+    }
+    p.type = parse_type(reader, first);
+    p.type_name = std::string(first);
+    p.name = std::string(name);
+    for (const Property& other : e.properties)
+        if (other.name == p.name)
+            reader.fail_at(name, "element '" + e.name + "' already has a property " + quoted(name));
+    p.what = "'" + p.name + "' value";
+    p.count_what = "'" + p.name + "' list count";
+    e.properties.push_back(std::move(p));
+}
+
+Header parse_header(LineReader& reader, std::string_view data)
+{
+    Header h;
+    if (!next_header_line(reader))
+        reader.fail("not a PLY file (the file is empty)");
+    Tokenizer magic(reader.line());
+    if (magic.next() != "ply" || !magic.at_end())
+        reader.fail("not a PLY file (the first line must be 'ply')");
+    // A header with CR-only line ends may be followed by binary data starting with LF,
+    // which LineReader would take for the second half of a CRLF.
+    const size_t first_end =
+        static_cast<size_t>(reader.line().data() - data.data()) + reader.line().size();
+    const bool is_cr_only =
+        first_end + 1 < data.size() && data[first_end] == '\r' && data[first_end + 1] != '\n';
+    bool has_format = false;
+    while (next_header_line(reader))
+    {
+        Tokenizer tokens(reader.line());
+        const std::string_view keyword = tokens.next();
+        if (keyword.empty() || keyword == "comment" || keyword == "obj_info")
+            continue;
+        if (keyword == "end_header")
+        {
+            if (!tokens.at_end())
+                reader.fail_at(tokens.next(), "unexpected text after end_header");
+            if (!has_format)
+                reader.fail("no format line before end_header");
+            const size_t end =
+                static_cast<size_t>(reader.line().data() - data.data()) + reader.line().size();
+            h.data_offset = is_cr_only && end < data.size() ? end + 1 : reader.consumed();
+            return h;
+        }
+        if (keyword == "format")
+        {
+            if (has_format)
+                reader.fail_at(keyword, "second format line");
+            parse_format(reader, tokens, h);
+            has_format = true;
+        }
+        else if (keyword == "element")
+        {
+            if (!has_format)
+                reader.fail_at(keyword, "element before the format line");
+            parse_element(reader, tokens, h);
+        }
+        else if (keyword == "property")
+        {
+            if (h.elements.empty())
+                reader.fail_at(keyword, "property before the first element");
+            parse_property(reader, tokens, h.elements.back());
+        }
+        else
+        {
+            reader.fail_at(keyword, "unknown header keyword " + quoted(keyword));
+        }
+    }
+    reader.fail("no end_header (the file ends inside the header)");
+}
+
+[[noreturn]] void fail_line(const std::string& file, std::int64_t line, const std::string& message)
+{
+    throw FormatError(SourceLocation::text(file, line), message);
+}
+
+// Gives each property of the vertex and face elements its role, refusing elements
+// MeshFair cannot read.
+void assign_roles(Header& h, const std::string& file)
+{
+    for (Element& e : h.elements)
+    {
+        const auto find = [&](std::string_view name) -> Property* {
+            for (Property& p : e.properties)
+                if (p.name == name)
+                    return &p;
+            return nullptr;
+        };
+        if (e.kind == Kind::Vertex)
+        {
+            for (const int axis : {0, 1, 2})
+            {
+                const std::string name(1, "xyz"[axis]);
+                Property* p = find(name);
+                if (!p)
+                    fail_line(file, e.line, "vertex element has no property '" + name + "'");
+                if (p->is_list)
+                    fail_line(file, p->line,
+                              "vertex property '" + p->name + "' is a list, not a coordinate");
+                p->axis = axis;
+                p->what = p->name + " coordinate";
+            }
+        }
+        else if (e.kind == Kind::Face)
+        {
+            Property* p = find("vertex_indices");
+            Property* alias = find("vertex_index");
+            if (p && alias)
+                fail_line(file, alias->line,
+                          "face element has both 'vertex_indices' and 'vertex_index'");
+            p = p ? p : alias;
+            if (!p)
+                fail_line(file, e.line,
+                          "face element has no list property 'vertex_indices' (or "
+                          "'vertex_index')");
+            if (!p->is_list)
+                fail_line(file, p->line, "face property '" + p->name + "' is not a list");
+            if (!info(p->type).is_integer)
+                fail_line(file, p->line,
+                          "face property '" + p->name + "' has item type '" + p->type_name +
+                              "' (vertex indices must be integers)");
+            p->is_indices = true;
+            p->what = "vertex index";
+        }
+    }
+}
+
+std::string rows_of(const Element& e)
+{
+    return e.kind == Kind::Vertex ? "vertices"
+           : e.kind == Kind::Face ? "faces"
+                                  : "rows of element '" + e.name + "'";
+}
+
+// Refuses element counts the data cannot hold before anything is allocated for them.
+// A row takes at least its scalars and list counts in binary, and in ASCII one
+// character and one separator per property (the last row needs no line end).
+void check_counts(const Header& h, const std::string& file, size_t available)
+{
+    for (const Element& e : h.elements)
+    {
+        std::uint64_t min_row = 0;
+        for (const Property& p : e.properties)
+            min_row +=
+                h.encoding != Encoding::Ascii ? info(p.is_list ? p.count_type : p.type).size : 2;
+        const std::uint64_t room = h.encoding == Encoding::Ascii ? available + 1 : available;
+        const auto where = SourceLocation::text(file, e.line, e.count_column);
+        if (min_row > 0 && static_cast<std::uint64_t>(e.count) > room / min_row)
+            throw FormatError(where, "header declares " + std::to_string(e.count) + " " +
+                                         rows_of(e) + " but only " + std::to_string(available) +
+                                         " bytes follow");
+        if (e.count > kMaxElements)
+            throw FormatError(where, "element '" + e.name + "' has " + std::to_string(e.count) +
+                                         " rows (MeshFair supports at most " +
+                                         std::to_string(kMaxElements) + ")");
+    }
+}
+
+// Rows of an ASCII body: one row per line, values as whitespace-separated tokens.
+class AsciiRows
+{
+public:
+    explicit AsciiRows(LineReader& reader) : reader_(reader) {}
+
+    void begin_row(const Element& e, std::int64_t row)
+    {
+        element_ = &e;
+        row_ = row;
+        do
+        {
+            if (!reader_.next())
+                reader_.fail("file ends before " + row_name(e, row) + " (the header declares " +
+                             std::to_string(e.count) + " " + rows_of(e) + ")");
+            tokens_ = Tokenizer(reader_.line());
+        } while (tokens_.at_end());
+    }
+
+    void end_row()
+    {
+        if (!tokens_.at_end())
+        {
+            const std::string_view token = tokens_.next();
+            reader_.fail_at(token, "unexpected value " + quoted(token) +
+                                       " after the last property of " + row_name(*element_, row_));
+        }
+    }
+
+    std::int64_t count(const Property& p)
+    {
+        const std::int64_t n = integer(p, p.count_type, p.count_type_name, p.count_what);
+        if (n < 0)
+            reader_.fail_at(last_, p.count_what + " " + std::to_string(n) + " is negative");
+        Tokenizer rest = tokens_;
+        std::int64_t left = 0;
+        while (!rest.next().empty())
+            ++left;
+        if (n > left)
+            reader_.fail_at(last_, p.count_what + " " + std::to_string(n) + " is more than the " +
+                                       count_of(left, "value", "values") + " left on the line");
+        return n;
+    }
+
+    std::int64_t index(const Property& p) { return integer(p, p.type, p.type_name, p.what); }
+
+    double number(const Property& p)
+    {
+        if (info(p.type).is_integer)
+            return static_cast<double>(integer(p, p.type, p.type_name, p.what));
+        const std::string_view token = take(p);
+        const double value = parse_double(reader_, token, p.what);
+        if (p.type == Type::Float32 && std::abs(value) >= kFloatOverflow)
+            reader_.fail_at(token,
+                            p.what + " " + quoted(token) + " does not fit in " + p.type_name);
+        return value;
+    }
+
+    void skip(const Property& p)
+    {
+        const std::int64_t n = p.is_list ? count(p) : 1;
+        for (std::int64_t k = 0; k < n; ++k)
+            number(p);
+    }
+
+    // Only blank lines may follow the last row.
+    void finish()
+    {
+        while (reader_.next())
+        {
+            Tokenizer tokens(reader_.line());
+            if (!tokens.at_end())
+                reader_.fail_at(tokens.next(), "unexpected data after the last element");
+        }
+    }
+
+    SourceLocation where() const { return reader_.here(reader_.column_of(last_)); }
+    SourceLocation row_where() const { return reader_.here(); }
+    [[noreturn]] void fail(const std::string& message) const
+    {
+        throw FormatError(where(), message);
+    }
+
+private:
+    std::string_view take(const Property& p)
+    {
+        const std::string_view token = tokens_.next();
+        if (token.empty())
+            reader_.fail(row_name(*element_, row_) + " has no value for property '" + p.name + "'",
+                         static_cast<std::int64_t>(reader_.line().size()) + 1);
+        last_ = token;
+        return token;
+    }
+
+    std::int64_t integer(const Property& p, Type type, const std::string& type_name,
+                         const std::string& what)
+    {
+        const std::string_view token = take(p);
+        const std::int64_t value = parse_integer(reader_, token, what);
+        if (value < info(type).min || value > info(type).max)
+            reader_.fail_at(token,
+                            what + " " + std::to_string(value) + " does not fit in " + type_name);
+        return value;
+    }
+
+    LineReader& reader_;
+    Tokenizer tokens_{std::string_view()};
+    std::string_view last_;
+    const Element* element_ = nullptr;
+    std::int64_t row_ = 0;
+};
+
+template <typename T>
+std::int64_t read_integer(ByteReader& bytes, ByteOrder order)
+{
+    return bytes.read<T>(order);
+}
+
+// Indexed by Type, for the integer types.
+constexpr std::int64_t (*kIntegerReaders[])(ByteReader&, ByteOrder) = {
+    read_integer<std::int8_t>,   read_integer<std::uint8_t>, read_integer<std::int16_t>,
+    read_integer<std::uint16_t>, read_integer<std::int32_t>, read_integer<std::uint32_t>};
+
+// Rows of a binary body: values back to back in the declared types and byte order.
+class BinaryRows
+{
+public:
+    BinaryRows(std::string_view data, const std::string& file, size_t offset, ByteOrder order)
+        : bytes_(data, file, offset), order_(order)
+    {
+    }
+
+    void begin_row(const Element& e, std::int64_t row)
+    {
+        element_ = &e;
+        row_ = row;
+    }
+    void end_row() {}
+
+    std::int64_t count(const Property& p)
+    {
+        bytes_.at(element_->name, row_, p.name);
+        list_start_ = start_ = bytes_.offset();
+        const std::int64_t n = integer(p.count_type);
+        if (n < 0)
+            fail(p.count_what + " " + std::to_string(n) + " is negative");
+        const std::uint64_t needed = static_cast<std::uint64_t>(n) * info(p.type).size;
+        if (needed > bytes_.remaining())
+            fail(p.count_what + " " + std::to_string(n) + " needs " + std::to_string(needed) +
+                 " bytes, more than the " + count_of(bytes_.remaining(), "byte", "bytes") +
+                 " left");
+        return n;
+    }
+
+    std::int64_t index(const Property& p)
+    {
+        start_ = bytes_.offset();
+        return integer(p.type);
+    }
+
+    double number(const Property& p)
+    {
+        bytes_.at(element_->name, row_, p.name);
+        start_ = bytes_.offset();
+        switch (p.type)
+        {
+            case Type::Float32:
+                return static_cast<double>(bytes_.read<float>(order_));
+            case Type::Float64:
+                return bytes_.read<double>(order_);
+            default:
+                return static_cast<double>(integer(p.type));
+        }
+    }
+
+    void skip(const Property& p)
+    {
+        if (p.is_list)
+        {
+            const std::int64_t n = count(p);
+            bytes_.skip(static_cast<size_t>(n) * info(p.type).size);
+            return;
+        }
+        bytes_.at(element_->name, row_, p.name);
+        start_ = bytes_.offset();
+        bytes_.skip(info(p.type).size);
+    }
+
+    // Counts that lie leave bytes behind; a correct file ends with its last row.
+    void finish()
+    {
+        if (bytes_.at_end())
+            return;
+        bytes_.at("", -1, "");
+        bytes_.fail("unexpected data after the last element (" +
+                    count_of(bytes_.remaining(), "byte", "bytes") + ")");
+    }
+
+    SourceLocation where() const { return located(start_); }
+    SourceLocation row_where() const { return located(list_start_); }
+    [[noreturn]] void fail(const std::string& message) const
+    {
+        throw FormatError(where(), message);
+    }
+
+private:
+    // Where the value at `offset` starts, in the element, row and property read last.
+    SourceLocation located(size_t offset) const
+    {
+        SourceLocation loc = bytes_.here();
+        loc.byte_offset = static_cast<std::int64_t>(offset);
+        return loc;
+    }
+
+    std::int64_t integer(Type type)
+    {
+        assert(info(type).is_integer);
+        return kIntegerReaders[static_cast<int>(type)](bytes_, order_);
+    }
+
+    ByteReader bytes_;
+    ByteOrder order_;
+    size_t start_ = 0;      // offset of the value read last
+    size_t list_start_ = 0; // offset of the list count read last
+    const Element* element_ = nullptr;
+    std::int64_t row_ = 0;
+};
+
+struct Body
+{
+    std::int64_t vertex_count = 0;
+    Mesh mesh;
+    NoteCounter collapsed;
+    std::vector<Index> face;
+};
+
+template <typename Rows>
+void read_face(Rows& rows, const Property& p, std::int64_t row, Body& body)
+{
+    const std::int64_t n = rows.count(p);
+    if (n < 3)
+        rows.fail("face " + std::to_string(row) + " has " + std::to_string(n) +
+                  " vertices (a face needs at least 3)");
+    body.face.clear();
+    for (std::int64_t k = 0; k < n; ++k)
+    {
+        const std::int64_t v = rows.index(p);
+        if (v < 0)
+            rows.fail("face " + std::to_string(row) + " uses vertex index " + std::to_string(v) +
+                      " (PLY vertex indices start at 0)");
+        if (v >= body.vertex_count)
+            rows.fail("face " + std::to_string(row) + " uses vertex index " + std::to_string(v) +
+                      " but the file declares " + std::to_string(body.vertex_count) + " vertices");
+        body.face.push_back(static_cast<Index>(v));
+    }
+    const FaceCheck check = normalize_face(body.face);
+    if (!check.ok)
+        throw FormatError(rows.row_where(), check.problem);
+    if (check.collapsed > 0)
+        body.collapsed.add(check.collapsed, rows.row_where().to_string());
+    if (body.mesh.face_vertices.size() + body.face.size() > static_cast<size_t>(kMaxElements))
+        rows.fail("more face corners than MeshFair supports");
+    body.mesh.add_face(body.face);
+}
+
+template <typename Rows>
+void read_rows(Rows& rows, const Header& h, Body& body)
+{
+    for (const Element& e : h.elements)
+    {
+        // Rows without properties hold no bytes, and no tokens to put on a line.
+        if (e.properties.empty())
+            continue;
+        // check_counts bounds these by the size of the data.
+        if (e.kind == Kind::Vertex)
+            body.mesh.positions.reserve(3 * static_cast<size_t>(e.count));
+        if (e.kind == Kind::Face)
+            body.mesh.face_offsets.reserve(static_cast<size_t>(e.count) + 1);
+        for (std::int64_t row = 0; row < e.count; ++row)
+        {
+            rows.begin_row(e, row);
+            double xyz[3] = {0, 0, 0};
+            for (const Property& p : e.properties)
+            {
+                if (p.is_indices)
+                {
+                    read_face(rows, p, row, body);
+                }
+                else if (p.axis < 0)
+                {
+                    rows.skip(p);
+                }
+                else
+                {
+                    const double value = rows.number(p);
+                    if (!std::isfinite(value))
+                        rows.fail(row_name(e, row) + " has a non-finite " + p.what + " (" +
+                                  std::to_string(value) + ")");
+                    xyz[p.axis] = value;
+                }
+            }
+            rows.end_row();
+            if (e.kind == Kind::Vertex)
+                body.mesh.add_vertex(xyz[0], xyz[1], xyz[2]);
+        }
+    }
+    rows.finish();
+}
+
+void add_notes(const Header& h, ReadReport& report)
+{
+    for (const Element& e : h.elements)
+    {
+        if (e.kind == Kind::Other)
+        {
+            report.notes.push_back("skipped element '" + e.name + "' (" +
+                                   count_of(e.count, "row", "rows") + ")");
+            continue;
+        }
+        std::string skipped;
+        for (const Property& p : e.properties)
+            if (p.axis < 0 && !p.is_indices)
+                skipped += (skipped.empty() ? "'" : ", '") + p.name + "'";
+        if (!skipped.empty())
+            report.notes.push_back("skipped " + e.name + " properties " + skipped);
+    }
+}
+
+} // namespace
+
+Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report)
+{
+    report.format = Format::Ply;
+    LineReader reader(data, name);
+    Header h = parse_header(reader, data);
+    report.encoding = h.encoding;
+    assign_roles(h, name);
+    check_counts(h, name, data.size() - h.data_offset);
+
+    Body body;
+    for (const Element& e : h.elements)
+        if (e.kind == Kind::Vertex)
+            body.vertex_count = e.count;
+    if (h.encoding == Encoding::Ascii)
+    {
+        AsciiRows rows(reader);
+        read_rows(rows, h, body);
+    }
+    else
+    {
+        BinaryRows rows(
+            data, name, h.data_offset,
+            h.encoding == Encoding::BinaryLittleEndian ? ByteOrder::Little : ByteOrder::Big);
+        read_rows(rows, h, body);
+    }
+    add_notes(h, report);
+    report_collapsed(body.collapsed, report.notes);
+    return std::move(body.mesh);
 }
 
 } // namespace meshfair::io

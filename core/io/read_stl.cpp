@@ -16,44 +16,12 @@
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
 
-namespace meshfair::io
-{
+namespace meshfair::io {
 
-namespace
-{
+namespace {
 
-constexpr size_t kBinaryHeaderBytes = 84;    // 80-byte comment + uint32 triangle count
-constexpr size_t kBinaryTriangleBytes = 50;  // 12 float32 + uint16 attribute
-
-std::string count_of(std::int64_t n, const char* singular, const char* plural)
-{
-    return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
-std::string quoted(std::string_view token)
-{
-    constexpr size_t kMax = 40;
-    std::string s(token.substr(0, kMax));
-    if (token.size() > kMax)
-        s += "...";
-    return "'" + s + "'";
-}
-
-// ASCII only, without the locale: keywords are plain English words.
-char ascii_lower(char c)
-{
-    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
-}
-
-bool equals_ignoring_case(std::string_view a, std::string_view b)
-{
-    if (a.size() != b.size())
-        return false;
-    for (size_t k = 0; k < a.size(); ++k)
-        if (ascii_lower(a[k]) != ascii_lower(b[k]))
-            return false;
-    return true;
-}
+constexpr size_t kBinaryHeaderBytes = 84;   // 80-byte comment + uint32 triangle count
+constexpr size_t kBinaryTriangleBytes = 50; // 12 float32 + uint16 attribute
 
 // Gives each distinct position one vertex, numbered in order of first appearance.
 // Positions are compared bit for bit, except that -0.0 equals +0.0; the first
@@ -173,7 +141,7 @@ Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t c
     {
         const size_t start = bytes.offset();
         face.resize(3);
-        bytes.skip(12);  // the normal is recomputed from the corners by anyone who needs it
+        bytes.skip(12); // the normal is recomputed from the corners by anyone who needs it
         for (int k = 0; k < 3; ++k)
         {
             float p[3];
@@ -354,7 +322,7 @@ private:
     std::vector<Index> face_;
 };
 
-}  // namespace
+} // namespace
 
 Mesh read_stl(std::string_view data, const std::string& name, ReadReport& report)
 {
@@ -381,4 +349,4 @@ Mesh read_stl(std::string_view data, const std::string& name, ReadReport& report
     return AsciiStl(data, name, report).read();
 }
 
-}  // namespace meshfair::io
+} // namespace meshfair::io

@@ -36,8 +36,7 @@ bool LineReader::next()
             pos_ += 1;
     }
     if (const void* nul = std::memchr(line_.data(), '\0', line_.size()))
-        fail("NUL byte in a text file",
-             static_cast<const char*>(nul) - line_.data() + 1);
+        fail("NUL byte in a text file", static_cast<const char*>(nul) - line_.data() + 1);
     return true;
 }
 
@@ -92,8 +91,6 @@ bool Tokenizer::at_end()
     return rest_.empty();
 }
 
-namespace {
-
 std::string quoted(std::string_view token)
 {
     constexpr size_t kMax = 40;
@@ -103,7 +100,23 @@ std::string quoted(std::string_view token)
     return "'" + s + "'";
 }
 
-} // namespace
+std::string count_of(std::int64_t n, const char* singular, const char* plural)
+{
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+bool equals_ignoring_case(std::string_view a, std::string_view b)
+{
+    const auto lower = [](char c) {
+        return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+    };
+    if (a.size() != b.size())
+        return false;
+    for (size_t k = 0; k < a.size(); ++k)
+        if (lower(a[k]) != lower(b[k]))
+            return false;
+    return true;
+}
 
 double parse_double(const LineReader& reader, std::string_view token, std::string_view what)
 {
@@ -120,8 +133,8 @@ double parse_double(const LineReader& reader, std::string_view token, std::strin
     // std::from_chars is correctly rounded, like strtod, but never reads a locale.
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec == std::errc::result_out_of_range)
-        reader.fail_at(token, std::string(what) + " " + quoted(token) +
-                                  " is out of the range of a double");
+        reader.fail_at(
+            token, std::string(what) + " " + quoted(token) + " is out of the range of a double");
     if (ec != std::errc() || end != digits.data() + digits.size() || digits.empty())
         reader.fail_at(token, std::string(what) + " " + quoted(token) + " is not a number");
     if (!std::isfinite(value))
@@ -129,8 +142,7 @@ double parse_double(const LineReader& reader, std::string_view token, std::strin
     return value;
 }
 
-std::int64_t parse_integer(const LineReader& reader, std::string_view token,
-                           std::string_view what)
+std::int64_t parse_integer(const LineReader& reader, std::string_view token, std::string_view what)
 {
     if (token.empty())
         reader.fail(std::string("missing ") + std::string(what));

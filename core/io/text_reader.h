@@ -61,6 +61,15 @@ private:
 //! True for the characters Tokenizer treats as blanks.
 bool is_blank(char c);
 
+//! A token quoted for a message, cut after 40 characters: 'abc...'.
+std::string quoted(std::string_view token);
+
+//! "1 vertex", "3 vertices": a count with the right noun.
+std::string count_of(std::int64_t n, const char* singular, const char* plural);
+
+//! ASCII case-insensitive comparison, independent of the locale (format keywords).
+bool equals_ignoring_case(std::string_view a, std::string_view b);
+
 //! \brief Parses a whole token as a double exactly as strtod would (correctly rounded;
 //! a leading '+' is accepted), refusing anything else with the token's column.
 //! \throw FormatError for text that is not a number, or that is nan, inf or out of range.
@@ -68,7 +77,6 @@ double parse_double(const LineReader& reader, std::string_view token, std::strin
 
 //! \brief Parses a whole token as a decimal integer.
 //! \throw FormatError for text that is not an integer or outside int64.
-std::int64_t parse_integer(const LineReader& reader, std::string_view token,
-                           std::string_view what);
+std::int64_t parse_integer(const LineReader& reader, std::string_view token, std::string_view what);
 
 } // namespace meshfair::io

@@ -4,8 +4,7 @@
 
 #include "core/io/text_writer.h"
 
-namespace meshfair::io
-{
+namespace meshfair::io {
 
 void write_off(const Mesh& mesh, std::string& out)
 {
@@ -37,4 +36,4 @@ void write_off(const Mesh& mesh, std::string& out)
     }
 }
 
-}  // namespace meshfair::io
+} // namespace meshfair::io

@@ -12,11 +12,9 @@
 #include "core/errors.h"
 #include "core/io/text_writer.h"
 
-namespace meshfair::io
-{
+namespace meshfair::io {
 
-namespace
-{
+namespace {
 
 // Unit normal of the triangle (a, b, c), or 0 0 0 when it has no area.
 Vec3 triangle_normal(const Vec3& a, const Vec3& b, const Vec3& c)
@@ -68,32 +66,26 @@ void write_ascii(const Mesh& mesh, std::string& out)
     }
     // Reserving the whole text up front avoids copying hundreds of megabytes as it grows.
     size_t size = 0;
-    for_each_fan_triangle(mesh,
-                          [&](Index a, Index b, Index c)
-                          {
-                              size += kFacetTextBytes;
-                              for (const Index v : {a, b, c})
-                                  size += starts[static_cast<size_t>(v) + 1] -
-                                          starts[static_cast<size_t>(v)];
-                          });
+    for_each_fan_triangle(mesh, [&](Index a, Index b, Index c) {
+        size += kFacetTextBytes;
+        for (const Index v : {a, b, c})
+            size += starts[static_cast<size_t>(v) + 1] - starts[static_cast<size_t>(v)];
+    });
     out.reserve(out.size() + size + 64);
     out += "solid meshfair\n";
-    for_each_fan_triangle(mesh,
-                          [&](Index a, Index b, Index c)
-                          {
-                              out += "  facet normal";
-                              append_vector(out, triangle_normal(mesh.position(a), mesh.position(b),
-                                                                 mesh.position(c)));
-                              out += "\n    outer loop\n";
-                              for (const Index v : {a, b, c})
-                              {
-                                  const auto k = static_cast<size_t>(v);
-                                  out += "      vertex";
-                                  out.append(coordinates, starts[k], starts[k + 1] - starts[k]);
-                                  out += '\n';
-                              }
-                              out += "    endloop\n  endfacet\n";
-                          });
+    for_each_fan_triangle(mesh, [&](Index a, Index b, Index c) {
+        out += "  facet normal";
+        append_vector(out, triangle_normal(mesh.position(a), mesh.position(b), mesh.position(c)));
+        out += "\n    outer loop\n";
+        for (const Index v : {a, b, c})
+        {
+            const auto k = static_cast<size_t>(v);
+            out += "      vertex";
+            out.append(coordinates, starts[k], starts[k + 1] - starts[k]);
+            out += '\n';
+        }
+        out += "    endloop\n  endfacet\n";
+    });
     out += "endsolid meshfair\n";
 }
 
@@ -133,19 +125,16 @@ void write_binary(const Mesh& mesh, std::string& out)
     out.reserve(out.size() + 84 + 50 * static_cast<size_t>(triangles));
     out += header;
     append_little_endian(out, static_cast<std::uint32_t>(triangles));
-    for_each_fan_triangle(mesh,
-                          [&](Index a, Index b, Index c)
-                          {
-                              const Vec3 pa = mesh.position(a), pb = mesh.position(b),
-                                         pc = mesh.position(c);
-                              for (const Vec3& p : {triangle_normal(pa, pb, pc), pa, pb, pc})
-                                  for (int k = 0; k < 3; ++k)
-                                      append_float(out, p[k]);
-                              append_little_endian(out, std::uint16_t{0});
-                          });
+    for_each_fan_triangle(mesh, [&](Index a, Index b, Index c) {
+        const Vec3 pa = mesh.position(a), pb = mesh.position(b), pc = mesh.position(c);
+        for (const Vec3& p : {triangle_normal(pa, pb, pc), pa, pb, pc})
+            for (int k = 0; k < 3; ++k)
+                append_float(out, p[k]);
+        append_little_endian(out, std::uint16_t{0});
+    });
 }
 
-}  // namespace
+} // namespace
 
 void write_stl(const Mesh& mesh, Encoding encoding, std::string& out)
 {
@@ -156,4 +145,4 @@ void write_stl(const Mesh& mesh, Encoding encoding, std::string& out)
         write_binary(mesh, out);
 }
 
-}  // namespace meshfair::io
+} // namespace meshfair::io

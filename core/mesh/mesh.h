@@ -24,9 +24,9 @@ namespace meshfair {
 //! from; nothing in MeshFair reorders them. Polygons are never triangulated here.
 struct Mesh
 {
-    std::vector<Scalar> positions;        //!< 3 #V coordinates
-    std::vector<Index> face_offsets{0};   //!< #F + 1 offsets, face_offsets[0] = 0
-    std::vector<Index> face_vertices;     //!< concatenated faces (corners)
+    std::vector<Scalar> positions;      //!< 3 #V coordinates
+    std::vector<Index> face_offsets{0}; //!< #F + 1 offsets, face_offsets[0] = 0
+    std::vector<Index> face_vertices;   //!< concatenated faces (corners)
 
     Index vertex_count() const { return static_cast<Index>(positions.size() / 3); }
     Index face_count() const { return static_cast<Index>(face_offsets.size() - 1); }

@@ -175,8 +175,9 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
     {
         check_weight(r.joint->gamma, "joint.gamma");
         if (!r.normal)
-            throw RecipeError("joint", "needs a \"normal\" section (its faces and mu couple x "
-                                       "and u)");
+            throw RecipeError("joint",
+                              "needs a \"normal\" section (its faces and mu couple x "
+                              "and u)");
     }
 }
 

@@ -105,7 +105,7 @@ struct Recipe
     int iterations = 10;
     bool optimal_step = false; //!< exact line search instead of the fixed lambda
     Scalar lambda = 0.5;
-    Scalar tolerance = 0;      //!< stop when the relative energy decrease falls below
+    Scalar tolerance = 0; //!< stop when the relative energy decrease falls below
     Method method = Method::Jacobi;
 
     std::optional<Region> region;

@@ -167,8 +167,8 @@ Recipe parse_recipe(std::string_view json_text, const std::string& name)
     }
     catch (const Json::parse_error& e)
     {
-        throw InvalidInputError("'" + name + "': not valid JSON: byte " +
-                                std::to_string(e.byte) + ": " + e.what());
+        throw InvalidInputError("'" + name + "': not valid JSON: byte " + std::to_string(e.byte) +
+                                ": " + e.what());
     }
     catch (const Json::exception& e)
     {

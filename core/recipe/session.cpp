@@ -154,10 +154,12 @@ void Session::precompute()
         normal_.emplace(mesh, *topology_, faces, n.mu);
 
         const NormalSmoothing ns = recipe_.normal_smoothing.value_or(NormalSmoothing{});
-        const std::vector<Scalar> hard_normals =
-            ns.hard.normals.empty() ? gather3(initial, ns.hard.faces) : unit_normals(ns.hard.normals);
-        const std::vector<Scalar> soft_normals =
-            ns.soft.normals.empty() ? gather3(initial, ns.soft.faces) : unit_normals(ns.soft.normals);
+        const std::vector<Scalar> hard_normals = ns.hard.normals.empty()
+                                                     ? gather3(initial, ns.hard.faces)
+                                                     : unit_normals(ns.hard.normals);
+        const std::vector<Scalar> soft_normals = ns.soft.normals.empty()
+                                                     ? gather3(initial, ns.soft.faces)
+                                                     : unit_normals(ns.soft.normals);
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
                            soft_normals);
         smoothing_->apply_hard(normals_);
@@ -333,8 +335,7 @@ SmoothResult run(Session& session, std::span<Scalar> x,
         ++result.iterations;
         if (on_step)
             on_step(result.iterations, result.energies.back());
-        if (converged(result.energies[k].total(), result.energies[k + 1].total(),
-                      recipe.tolerance))
+        if (converged(result.energies[k].total(), result.energies[k + 1].total(), recipe.tolerance))
         {
             result.stopped_by_tolerance = true;
             break;

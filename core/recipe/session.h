@@ -112,7 +112,7 @@ private:
     std::optional<NormalSmoothingTerm> smoothing_;
     std::optional<JointTerm> joint_;
 
-    std::vector<Scalar> normals_;   //!< 3 #F
+    std::vector<Scalar> normals_; //!< 3 #F
     std::vector<Scalar> smoothing_trace_;
     JacobiSystem system_;
     std::vector<Scalar> dx_;        //!< 3 #V, zero on non-free vertices

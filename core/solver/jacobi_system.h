@@ -31,8 +31,7 @@ struct JacobiSystem
 //! matrix (d I + B), B given as xx xy xz yy yz zz. False when not positive definite.
 inline bool cholesky3(Scalar d, const Scalar* B, Scalar* L)
 {
-    const Scalar a00 = d + B[0], a10 = B[1], a20 = B[2], a11 = d + B[3], a21 = B[4],
-                 a22 = d + B[5];
+    const Scalar a00 = d + B[0], a10 = B[1], a20 = B[2], a11 = d + B[3], a21 = B[4], a22 = d + B[5];
     if (!(a00 > 0))
         return false;
     const Scalar l00 = std::sqrt(a00);

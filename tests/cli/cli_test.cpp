@@ -38,8 +38,8 @@ Run cli(const std::string& args)
     const fs::path dir = test::temp_dir();
     const fs::path out = dir / ("out" + std::to_string(counter)),
                    err = dir / ("err" + std::to_string(counter++));
-    const std::string command = quote(MESHFAIR_CLI) + " " + args + " >" + quote(out.string()) +
-                                " 2>" + quote(err.string());
+    const std::string command =
+        quote(MESHFAIR_CLI) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
     const int status = std::system(command.c_str());
     Run r;
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -48,7 +48,10 @@ Run cli(const std::string& args)
     return r;
 }
 
-std::string bunny() { return quote((test::assets_dir() / "bunny.obj").string()); }
+std::string bunny()
+{
+    return quote((test::assets_dir() / "bunny.obj").string());
+}
 
 } // namespace
 
@@ -102,8 +105,8 @@ TEST_SUITE("Cli")
             "centroid": {"faces": "all"}, "normal": {"faces": "all", "normals": "smoothed"},
             "normal_smoothing": {"iterations": 3}})");
         const std::string out = (dir / "s.ply").string(), report = (dir / "report.json").string();
-        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " +
-                          quote(recipe) + " --report " + quote(report));
+        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " + quote(recipe) +
+                          " --report " + quote(report));
         REQUIRE(r.code == 0);
         const auto j = nlohmann::json::parse(io::read_file(report));
         CHECK(j["vertices"] == 34835);
@@ -114,10 +117,9 @@ TEST_SUITE("Cli")
             CHECK(j["terms"][term].size() == 5);
         for (size_t k = 0; k < 5; ++k)
         {
-            const double sum = j["terms"]["edge"][k].get<double>() +
-                               j["terms"]["soft"][k].get<double>() +
-                               j["terms"]["centroid"][k].get<double>() +
-                               j["terms"]["normal"][k].get<double>();
+            const double sum =
+                j["terms"]["edge"][k].get<double>() + j["terms"]["soft"][k].get<double>() +
+                j["terms"]["centroid"][k].get<double>() + j["terms"]["normal"][k].get<double>();
             CHECK(j["energy"][k].get<double>() == doctest::Approx(sum).epsilon(1e-14));
         }
         CHECK(j["normal_smoothing_energy"].size() == 4);
@@ -131,9 +133,9 @@ TEST_SUITE("Cli")
         const fs::path dir = test::temp_dir();
         const std::string recipe = (dir / "r.json").string();
         test::write_bytes(recipe, R"({"iterations": 50, "lambda": 0.5})");
-        const Run r = cli("smooth " + bunny() + " -o " + quote((dir / "o.obj").string()) +
-                          " --recipe " + quote(recipe) +
-                          " --iterations 2 --lambda optimal --report -");
+        const Run r =
+            cli("smooth " + bunny() + " -o " + quote((dir / "o.obj").string()) + " --recipe " +
+                quote(recipe) + " --iterations 2 --lambda optimal --report -");
         REQUIRE(r.code == 0);
         const auto j = nlohmann::json::parse(r.out);
         CHECK(j["iterations"] == 2);
@@ -189,8 +191,8 @@ TEST_SUITE("Cli")
     TEST_CASE("an unwritable output exits 3 and leaves the existing file intact")
     {
         const fs::path dir = test::temp_dir();
-        const Run r = cli("smooth " + bunny() + " -o " +
-                          quote((dir / "no" / "such" / "dir.obj").string()));
+        const Run r =
+            cli("smooth " + bunny() + " -o " + quote((dir / "no" / "such" / "dir.obj").string()));
         CHECK(r.code == 3);
         CHECK(r.err.find("cannot write") != std::string::npos);
         // A directory in the way of the output.

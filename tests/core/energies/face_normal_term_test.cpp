@@ -112,8 +112,8 @@ TEST_SUITE("FaceNormalTerm")
                         continue;
                     const Eigen::Vector3d uf(&u[3 * f]);
                     const Eigen::Matrix3d P = uf * uf.transpose();
-                    for (const Index j : {face[(k + 1) % face.size()],
-                                          face[(k + face.size() - 1) % face.size()]})
+                    for (const Index j :
+                         {face[(k + 1) % face.size()], face[(k + face.size() - 1) % face.size()]})
                     {
                         A += mu * P;
                         b += mu * P * (Eigen::Vector3d(&before.positions[3 * j]) - xi);

@@ -54,8 +54,8 @@ TEST_SUITE("SoftVertexTerm")
                 Scalar sum = 0;
                 for (const Index j : t.neighbors(i))
                     sum += before.positions[3 * j + a] - before.positions[3 * i + a];
-                const Scalar dx = (sum + mu * (target[a] - before.positions[3 * i + a])) /
-                                  (t.valence(i) + mu);
+                const Scalar dx =
+                    (sum + mu * (target[a] - before.positions[3 * i + a])) / (t.valence(i) + mu);
                 CHECK(m.positions[3 * i + a] ==
                       doctest::Approx(before.positions[3 * i + a] + dx).epsilon(1e-14));
             }

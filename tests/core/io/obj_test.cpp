@@ -50,9 +50,14 @@ TEST_SUITE("ReadObj")
 
     TEST_CASE("coordinates are read exactly as strtod reads them")
     {
-        const char* values[] = {"0.3", "0.1", "-2.7182818284590451", "1.0000000000000002",
-                                "4.9406564584124654e-324", "1.7976931348623157e308",
-                                "0.30000000000000004", "123456789.12345678"};
+        const char* values[] = {"0.3",
+                                "0.1",
+                                "-2.7182818284590451",
+                                "1.0000000000000002",
+                                "4.9406564584124654e-324",
+                                "1.7976931348623157e308",
+                                "0.30000000000000004",
+                                "123456789.12345678"};
         std::string text;
         for (const char* v : values)
             text += std::string("v ") + v + " " + v + (v[0] == '-' ? " " : " +") + v + "\n";
@@ -117,7 +122,8 @@ TEST_SUITE("ReadObj")
               "t.obj:4: face has 2 distinct vertices (a face needs at least 3)");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 2 2\nf 1 2 1 3\n") ==
               "t.obj:5: face uses vertex 0 at two corners that are not adjacent");
-        CHECK(error_of(std::string("v 0 0 0\nv 1 \0 0\n", 17)) == "t.obj:2:5: NUL byte in a text file");
+        CHECK(error_of(std::string("v 0 0 0\nv 1 \0 0\n", 17)) ==
+              "t.obj:2:5: NUL byte in a text file");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 /2 3\n") ==
               "t.obj:4:5: face corner '/2' has no vertex index");
     }

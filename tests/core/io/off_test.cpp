@@ -18,8 +18,7 @@
 
 using namespace meshfair;
 
-namespace
-{
+namespace {
 
 Mesh parse(const std::string& text, io::ReadReport* report = nullptr)
 {
@@ -56,7 +55,7 @@ Mesh square()
     return parse("OFF\n5 2 0\n" + kVertices + kFaces);
 }
 
-}  // namespace
+} // namespace
 
 TEST_SUITE("ReadOff")
 {

@@ -22,8 +22,7 @@
 
 using namespace meshfair;
 
-namespace
-{
+namespace {
 
 Mesh parse(const std::string& data, io::ReadReport* report = nullptr)
 {
@@ -151,7 +150,7 @@ T read_le(const std::string& bytes, size_t offset)
     return value;
 }
 
-}  // namespace
+} // namespace
 
 TEST_SUITE("ReadStl")
 {
@@ -415,8 +414,7 @@ TEST_SUITE("ReadStl")
 
     TEST_CASE("bad ASCII coordinates are refused with line and column")
     {
-        const auto with_vertex = [](const std::string& v)
-        {
+        const auto with_vertex = [](const std::string& v) {
             return error_of("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
                             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\n" + v +
                             "\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
@@ -498,7 +496,7 @@ TEST_SUITE("WriteStl")
         CHECK(read_le<float>(out, 84) == 0.0f);
         CHECK(read_le<float>(out, 88) == 0.0f);
         CHECK(read_le<float>(out, 92) == -1.0f);
-        CHECK(read_le<float>(out, 96 + 12) == 0.0f);  // corner 1 = vertex 3 = (0 1 0)
+        CHECK(read_le<float>(out, 96 + 12) == 0.0f); // corner 1 = vertex 3 = (0 1 0)
         CHECK(read_le<float>(out, 96 + 16) == 1.0f);
         for (size_t t = 0; t < 12; ++t)
             CHECK(read_le<std::uint16_t>(out, 84 + 50 * t + 48) == 0);

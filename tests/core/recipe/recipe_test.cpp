@@ -67,8 +67,8 @@ TEST_SUITE("Recipe")
         CHECK_FALSE(r.optimal_step);
         CHECK_FALSE(r.soft.has_value());
         CHECK_FALSE(r.normal.has_value());
-        const Recipe s = parse_recipe(R"({"normal": {"faces": "all"}, "normal_smoothing": {}})",
-                                      "r.json");
+        const Recipe s =
+            parse_recipe(R"({"normal": {"faces": "all"}, "normal_smoothing": {}})", "r.json");
         CHECK(s.normal->source == NormalSource::Smoothed);
     }
 

@@ -67,8 +67,8 @@ std::vector<Case> configurations(const Mesh& m)
         centroid.centroid->faces.all = true;
         centroid.centroid->mu = 1.0;
         centroid.centroid->denominator = d;
-        cases.push_back({d == CentroidDenominator::Paper ? "centroid paper" : "centroid exact",
-                         centroid});
+        cases.push_back(
+            {d == CentroidDenominator::Paper ? "centroid paper" : "centroid exact", centroid});
     }
 
     Recipe normal = base;
@@ -88,10 +88,10 @@ std::vector<Case> configurations(const Mesh& m)
         all.region->vertices.push_back(v);
     all.hard = HardVertices{{nv / 3}, {}};
     all.soft = SoftVertices{{false, {2, nv - 2}}, 0.3, {}};
-    all.centroid = CentroidConstraints{{false, distinct({0, nf / 2, nf - 1})}, 1.0, {},
-                                       CentroidDenominator::Paper};
-    all.normal = NormalConstraints{{false, distinct({1, nf / 3, nf - 2})}, 1.5,
-                                   NormalSource::Smoothed, {}};
+    all.centroid = CentroidConstraints{
+        {false, distinct({0, nf / 2, nf - 1})}, 1.0, {}, CentroidDenominator::Paper};
+    all.normal =
+        NormalConstraints{{false, distinct({1, nf / 3, nf - 2})}, 1.5, NormalSource::Smoothed, {}};
     all.normal_smoothing = NormalSmoothing{5, 0.5, {{nf - 1}, {}}, {{0}, 0.5, {}}};
     cases.push_back({"combined", all});
     return cases;
@@ -300,7 +300,8 @@ TEST_SUITE("Session")
         smooth(m, t, r);
         for (Index i = 0; i < m.vertex_count(); ++i)
             for (int a = 0; a < 3; ++a)
-                CHECK(m.positions[3 * i + a] == doctest::Approx(centroid[a]).epsilon(1e-6).scale(1));
+                CHECK(m.positions[3 * i + a] ==
+                      doctest::Approx(centroid[a]).epsilon(1e-6).scale(1));
     }
 
     TEST_CASE("constraints prevent the shrinkage")
@@ -379,8 +380,8 @@ TEST_SUITE("Session")
             cases.push_back({"centroid", c});
         }
         Recipe normal = base;
-        normal.normal = NormalConstraints{{false, {0, 1, 2, 3, 4, 5, 6}}, 3.0,
-                                          NormalSource::Initial, {}};
+        normal.normal =
+            NormalConstraints{{false, {0, 1, 2, 3, 4, 5, 6}}, 3.0, NormalSource::Initial, {}};
         cases.push_back({"normal", normal});
         Recipe all = normal;
         all.hard = HardVertices{{0, 11}, {}};
@@ -395,10 +396,10 @@ TEST_SUITE("Session")
                 c.recipe.optimal_step = optimal;
                 Mesh x = m;
                 const Session session(x, t, c.recipe);
-                const std::vector<Scalar> expected = direct_minimizer(
-                    m, t, c.recipe, m.positions,
-                    std::vector<Index>(session.free_vertices().begin(),
-                                       session.free_vertices().end()));
+                const std::vector<Scalar> expected =
+                    direct_minimizer(m, t, c.recipe, m.positions,
+                                     std::vector<Index>(session.free_vertices().begin(),
+                                                        session.free_vertices().end()));
                 smooth(x, t, c.recipe);
                 for (Index k = 0; k < 3 * nv; ++k)
                     CHECK(x.positions[k] == doctest::Approx(expected[k]).scale(1).epsilon(1e-9));
@@ -502,8 +503,7 @@ TEST_SUITE("Session")
         const Topology t = build_topology(m);
         Recipe r;
         r.hard = HardVertices{{7}, {}};
-        CHECK_THROWS_WITH_AS(Session(m, t, r), doctest::Contains("hard.vertices[0]"),
-                             RecipeError);
+        CHECK_THROWS_WITH_AS(Session(m, t, r), doctest::Contains("hard.vertices[0]"), RecipeError);
         Mesh x = m;
         Recipe ok;
         Session session(x, t, ok);

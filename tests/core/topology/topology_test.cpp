@@ -150,10 +150,10 @@ TEST_SUITE("Topology")
 
     TEST_CASE("invariants hold on every fixture and on the bundled bunny")
     {
-        for (const Mesh& m : {test::tetrahedron(), test::quad_cube(), test::open_grid(4, 3),
-                              test::nonmanifold_fan(), test::two_components(),
-                              test::with_isolated_vertex(), test::mixed_polygons(),
-                              test::quad_torus(6, 5, 2, 1), test::icosphere(2)})
+        for (const Mesh& m :
+             {test::tetrahedron(), test::quad_cube(), test::open_grid(4, 3),
+              test::nonmanifold_fan(), test::two_components(), test::with_isolated_vertex(),
+              test::mixed_polygons(), test::quad_torus(6, 5, 2, 1), test::icosphere(2)})
             check_invariants(m);
         const Mesh bunny = io::read_mesh((test::assets_dir() / "bunny.obj").string());
         check_invariants(bunny);
