@@ -11,6 +11,7 @@
 
 #include <unistd.h>
 
+#include "core/errors.h"
 #include "core/geometry/noise.h"
 
 namespace meshfair::test {
@@ -55,9 +56,25 @@ void write_bytes(const std::filesystem::path& path, const std::string& content)
         throw std::runtime_error("cannot write test file " + path.string());
 }
 
-namespace {
+Mesh read_as(const std::string& data, io::Format format, io::ReadReport* report)
+{
+    return io::read_mesh_data(data, format, "t." + std::string(io::format_name(format)), report);
+}
 
-Mesh make(std::initializer_list<Vec3> points, std::initializer_list<std::vector<Index>> faces)
+std::string read_error(const std::string& data, io::Format format)
+{
+    try
+    {
+        read_as(data, format);
+    }
+    catch (const FormatError& e)
+    {
+        return e.what();
+    }
+    return "accepted";
+}
+
+Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces)
 {
     Mesh m;
     for (const auto& p : points)
@@ -67,17 +84,23 @@ Mesh make(std::initializer_list<Vec3> points, std::initializer_list<std::vector<
     return m;
 }
 
-} // namespace
+std::vector<Index> all_indices(Index n)
+{
+    std::vector<Index> v(n);
+    for (Index i = 0; i < n; ++i)
+        v[i] = i;
+    return v;
+}
 
 Mesh tetrahedron()
 {
-    return make({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}},
-                {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+    return make_mesh({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}},
+                     {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
 }
 
 Mesh quad_cube()
 {
-    return make(
+    return make_mesh(
         {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}},
         {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}});
 }
@@ -100,19 +123,19 @@ Mesh open_grid(int nx, int ny)
 
 Mesh nonmanifold_fan()
 {
-    return make({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
-                {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+    return make_mesh({{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}},
+                     {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
 }
 
 Mesh two_components()
 {
-    return make({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}},
-                {{0, 1, 2}, {3, 4, 5}});
+    return make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {5, 0, 0}, {6, 0, 0}, {5, 1, 0}},
+                     {{0, 1, 2}, {3, 4, 5}});
 }
 
 Mesh with_isolated_vertex()
 {
-    return make({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 3, 3}}, {{0, 1, 2}});
+    return make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {3, 3, 3}}, {{0, 1, 2}});
 }
 
 Mesh quad_torus(int nu, int nv, double R, double r)
@@ -138,22 +161,22 @@ Mesh quad_torus(int nu, int nv, double R, double r)
 Mesh icosphere(int subdivisions)
 {
     const double t = (1 + std::sqrt(5.0)) / 2;
-    Mesh m =
-        make({{-1, t, 0},
-              {1, t, 0},
-              {-1, -t, 0},
-              {1, -t, 0},
-              {0, -1, t},
-              {0, 1, t},
-              {0, -1, -t},
-              {0, 1, -t},
-              {t, 0, -1},
-              {t, 0, 1},
-              {-t, 0, -1},
-              {-t, 0, 1}},
-             {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
-              {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
-              {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
+    Mesh m = make_mesh(
+        {{-1, t, 0},
+         {1, t, 0},
+         {-1, -t, 0},
+         {1, -t, 0},
+         {0, -1, t},
+         {0, 1, t},
+         {0, -1, -t},
+         {0, 1, -t},
+         {t, 0, -1},
+         {t, 0, 1},
+         {-t, 0, -1},
+         {-t, 0, 1}},
+        {{0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+         {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+         {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}});
     for (int s = 0; s < subdivisions; ++s)
     {
         Mesh next;
@@ -194,26 +217,26 @@ Mesh icosphere(int subdivisions)
 Mesh mixed_polygons()
 {
     // A 3x2 patch: quads, two triangles and a pentagon, slightly non-planar.
-    return make({{0, 0, 0},
-                 {1, 0, 0.1},
-                 {2, 0, 0},
-                 {3, 0, 0.2},
-                 {0, 1, 0.1},
-                 {1, 1, 0},
-                 {2, 1, 0.3},
-                 {3, 1, 0},
-                 {0, 2, 0},
-                 {1, 2, 0.2},
-                 {2, 2, 0},
-                 {3, 2, 0.1},
-                 {1.5, 2.6, 0.1}},
-                {{0, 1, 5, 4},
-                 {1, 2, 6, 5},
-                 {2, 3, 7},
-                 {2, 7, 6},
-                 {4, 5, 9, 8},
-                 {5, 6, 10, 12, 9},
-                 {6, 7, 11, 10}});
+    return make_mesh({{0, 0, 0},
+                      {1, 0, 0.1},
+                      {2, 0, 0},
+                      {3, 0, 0.2},
+                      {0, 1, 0.1},
+                      {1, 1, 0},
+                      {2, 1, 0.3},
+                      {3, 1, 0},
+                      {0, 2, 0},
+                      {1, 2, 0.2},
+                      {2, 2, 0},
+                      {3, 2, 0.1},
+                      {1.5, 2.6, 0.1}},
+                     {{0, 1, 5, 4},
+                      {1, 2, 6, 5},
+                      {2, 3, 7},
+                      {2, 7, 6},
+                      {4, 5, 9, 8},
+                      {5, 6, 10, 12, 9},
+                      {6, 7, 11, 10}});
 }
 
 void perturb(Mesh& mesh, double sigma, unsigned seed)

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/io/io.h"
 #include "core/mesh/mesh.h"
 
 namespace meshfair::test {
@@ -19,6 +20,16 @@ std::filesystem::path temp_dir();
 
 //! Writes `content` to `path` byte for byte.
 void write_bytes(const std::filesystem::path& path, const std::string& content);
+
+//! Reads `data` as `format`, naming it "t.obj", "t.off", ... in messages.
+Mesh read_as(const std::string& data, io::Format format, io::ReadReport* report = nullptr);
+//! The message of the FormatError that reading `data` raises, or "accepted".
+std::string read_error(const std::string& data, io::Format format);
+
+//! A mesh from points and faces.
+Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces);
+//! 0, 1, ..., n - 1.
+std::vector<Index> all_indices(Index n);
 
 // Synthetic meshes (pmp-style fixtures).
 Mesh tetrahedron();             //!< 4 vertices, 4 triangles, closed

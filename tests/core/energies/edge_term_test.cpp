@@ -14,14 +14,6 @@ using namespace meshfair;
 
 namespace {
 
-std::vector<Index> all_vertices(Index n)
-{
-    std::vector<Index> v(n);
-    for (Index i = 0; i < n; ++i)
-        v[i] = i;
-    return v;
-}
-
 // The paper's three-step algorithm, written from its text: zero the displacements and
 // counts, traverse the array of edges adding x_j - x_i to dx_i and x_i - x_j to dx_j,
 // then divide by n_i where n_i != 0; finally x'_i = x_i + lambda dx_i.
@@ -59,7 +51,7 @@ TEST_SUITE("EdgeTerm")
         const Topology t = build_topology(m);
         const EdgeTerm term(t);
         std::vector<Scalar> rhs(m.positions.size(), 0);
-        term.add_rhs(m.positions, all_vertices(m.vertex_count()), rhs);
+        term.add_rhs(m.positions, test::all_indices(m.vertex_count()), rhs);
         test::check_rhs_is_half_negative_gradient(
             [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
     }

@@ -14,14 +14,6 @@ using namespace meshfair;
 
 namespace {
 
-std::vector<Index> iota(Index n)
-{
-    std::vector<Index> v(n);
-    for (Index i = 0; i < n; ++i)
-        v[i] = i;
-    return v;
-}
-
 std::vector<Scalar> centroids(const Mesh& m, std::span<const Index> faces)
 {
     std::vector<Scalar> c;
@@ -38,7 +30,7 @@ std::vector<Scalar> centroids(const Mesh& m, std::span<const Index> faces)
 Vec3 rhs_after_single_vertex_step(Mesh m, const Topology& t, Index i,
                                   CentroidDenominator denominator)
 {
-    const std::vector<Index> faces = iota(m.face_count());
+    const std::vector<Index> faces = test::all_indices(m.face_count());
     const std::vector<Scalar> targets = centroids(m, faces);
     test::perturb(m, 0.2, 4);
     const EdgeTerm edge(t);
@@ -74,7 +66,7 @@ TEST_SUITE("FaceCentroidTerm")
         {
             FaceCentroidTerm term(m, t, faces, 1.7, targets, d);
             std::vector<Scalar> rhs(m.positions.size(), 0);
-            term.add_rhs(m.positions, iota(m.vertex_count()), rhs);
+            term.add_rhs(m.positions, test::all_indices(m.vertex_count()), rhs);
             test::check_rhs_is_half_negative_gradient(
                 [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
         }

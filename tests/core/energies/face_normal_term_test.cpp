@@ -17,14 +17,6 @@ using namespace meshfair;
 
 namespace {
 
-std::vector<Index> iota(Index n)
-{
-    std::vector<Index> v(n);
-    for (Index i = 0; i < n; ++i)
-        v[i] = i;
-    return v;
-}
-
 } // namespace
 
 TEST_SUITE("FaceNormalTerm")
@@ -38,7 +30,7 @@ TEST_SUITE("FaceNormalTerm")
         const std::vector<Index> faces{0, 3, 5};
         const FaceNormalTerm term(m, t, faces, 1.3);
         std::vector<Scalar> rhs(m.positions.size(), 0);
-        term.add_rhs(m.positions, normals, iota(m.vertex_count()), rhs);
+        term.add_rhs(m.positions, normals, test::all_indices(m.vertex_count()), rhs);
         test::check_rhs_is_half_negative_gradient(
             [&](std::span<const Scalar> x) { return term.energy(x, normals); }, m.positions, rhs);
     }
@@ -47,7 +39,7 @@ TEST_SUITE("FaceNormalTerm")
     {
         const Mesh m = test::open_grid(3, 3);
         const Topology t = build_topology(m);
-        const FaceNormalTerm term(m, t, iota(m.face_count()), 5.0);
+        const FaceNormalTerm term(m, t, test::all_indices(m.face_count()), 5.0);
         CHECK(term.energy(m.positions, face_normals(m, m.positions)) == 0.0);
     }
 
@@ -58,7 +50,7 @@ TEST_SUITE("FaceNormalTerm")
         test::perturb(m, 0.15, 13);
         const Topology t = build_topology(m);
         const EdgeTerm edge(t);
-        const FaceNormalTerm term(m, t, iota(m.face_count()), 4.0);
+        const FaceNormalTerm term(m, t, test::all_indices(m.face_count()), 4.0);
         const Index i = 5; // corner of a pentagon: V(f, i) must be its two boundary neighbours
         const std::vector<Index> one{i};
         std::vector<Scalar> diagonal(m.vertex_count(), 0), block(6 * m.vertex_count(), 0),

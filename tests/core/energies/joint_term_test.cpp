@@ -28,19 +28,11 @@ struct JointFixture
         : mesh(std::move(m)),
           topology(build_topology(mesh)),
           u(face_normals(mesh, mesh.positions)),
-          faces(all_faces(mesh.face_count())),
+          faces(test::all_indices(mesh.face_count())),
           normal_term(mesh, topology, faces, 1.5),
           smoothing(topology, {}, {}, soft_faces, 0.8, soft_normal),
           joint(normal_term, smoothing, topology, 0.7)
     {
-    }
-
-    static std::vector<Index> all_faces(Index n)
-    {
-        std::vector<Index> v(n);
-        for (Index i = 0; i < n; ++i)
-            v[i] = i;
-        return v;
     }
 
     Scalar energy_in_u(std::span<const Scalar> normals) const

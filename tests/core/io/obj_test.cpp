@@ -17,20 +17,12 @@ namespace {
 
 Mesh parse(const std::string& text, io::ReadReport* report = nullptr)
 {
-    return io::read_mesh_data(text, io::Format::Obj, "t.obj", report);
+    return test::read_as(text, io::Format::Obj, report);
 }
 
 std::string error_of(const std::string& text)
 {
-    try
-    {
-        parse(text);
-    }
-    catch (const FormatError& e)
-    {
-        return e.what();
-    }
-    return "accepted";
+    return test::read_error(text, io::Format::Obj);
 }
 
 } // namespace

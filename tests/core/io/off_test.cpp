@@ -22,20 +22,12 @@ namespace {
 
 Mesh parse(const std::string& text, io::ReadReport* report = nullptr)
 {
-    return io::read_mesh_data(text, io::Format::Off, "t.off", report);
+    return test::read_as(text, io::Format::Off, report);
 }
 
 std::string error_of(const std::string& text)
 {
-    try
-    {
-        parse(text);
-    }
-    catch (const FormatError& e)
-    {
-        return e.what();
-    }
-    return "accepted";
+    return test::read_error(text, io::Format::Off);
 }
 
 std::vector<std::string> notes_of(const std::string& text)

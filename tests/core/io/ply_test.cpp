@@ -30,30 +30,12 @@ constexpr Encoding kEncodings[] = {Encoding::Ascii, Encoding::BinaryLittleEndian
 
 Mesh parse(const std::string& data, io::ReadReport* report = nullptr)
 {
-    return io::read_mesh_data(data, io::Format::Ply, "t.ply", report);
+    return test::read_as(data, io::Format::Ply, report);
 }
 
 std::string error_of(const std::string& data)
 {
-    try
-    {
-        parse(data);
-    }
-    catch (const FormatError& e)
-    {
-        return e.what();
-    }
-    return "accepted";
-}
-
-Mesh make(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces)
-{
-    Mesh m;
-    for (const Vec3& p : points)
-        m.add_vertex(p[0], p[1], p[2]);
-    for (const auto& f : faces)
-        m.add_face(f);
-    return m;
+    return test::read_error(data, io::Format::Ply);
 }
 
 // Appends values in one byte order, to assemble binary bodies byte by byte.
@@ -178,7 +160,7 @@ const std::string kTwoTriangles = vertex_decl(4) + face_decl(2);
 
 Mesh two_triangles()
 {
-    return make({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+    return test::make_mesh({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
 }
 
 // One triangle: its binary little-endian header (the body starts right after it).
@@ -281,7 +263,7 @@ TEST_SUITE("ReadPly")
             Row{{"uchar", 0}} + tri(0, 1, 2) + list("ushort", "float", {1, 2, 3, 4, 5, 6}) +
                 Row{{"int", 1 << 20}}};
         const Mesh expected =
-            make({{0.1, -300, 0.3}, {-1, 0, 1e-300}, {3, 4, 5}}, {{2, 1, 0}, {0, 1, 2}});
+            test::make_mesh({{0.1, -300, 0.3}, {-1, 0, 1e-300}, {3, 4, 5}}, {{2, 1, 0}, {0, 1, 2}});
         for (const Encoding encoding : kEncodings)
         {
             CAPTURE(io::encoding_name(encoding));
@@ -408,7 +390,7 @@ TEST_SUITE("ReadPly")
             "comment between properties\nproperty float x\nproperty float y\nproperty float "
             "z\n\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
             "0 0 0\n1 0 0\n\n0 1 0\n3 0 1 2\n\n");
-        CHECK(m == make({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
+        CHECK(m == test::make_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}}));
     }
 
     TEST_CASE("repeated consecutive indices are collapsed and reported")
@@ -673,8 +655,8 @@ TEST_SUITE("WritePly")
 
     TEST_CASE("the ASCII file holds the documented header and shortest decimals")
     {
-        const Mesh m =
-            make({{0.1, -2, 1e-7}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}}, {{0, 1, 3, 2}, {0, 1, 2}});
+        const Mesh m = test::make_mesh({{0.1, -2, 1e-7}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
+                                       {{0, 1, 3, 2}, {0, 1, 2}});
         std::string out;
         io::write_ply(m, Encoding::Ascii, out);
         CHECK(out == "ply\nformat ascii 1.0\ncomment MeshFair\n" + vertex_decl(4, "double") +
@@ -684,7 +666,7 @@ TEST_SUITE("WritePly")
 
     TEST_CASE("binary files hold doubles and int32 in the requested byte order")
     {
-        const Mesh m = make({{1.5, -2, 0}, {0, 1, 0}, {0, 0, 1}}, {{2, 0, 1}});
+        const Mesh m = test::make_mesh({{1.5, -2, 0}, {0, 1, 0}, {0, 0, 1}}, {{2, 0, 1}});
         for (const Encoding encoding : {Encoding::BinaryLittleEndian, Encoding::BinaryBigEndian})
         {
             std::string out;
@@ -723,7 +705,7 @@ TEST_SUITE("WritePly")
 
     TEST_CASE("meshes without faces still declare the face element")
     {
-        for (const Mesh& m : {Mesh{}, make({{1, 2, 3}}, {})})
+        for (const Mesh& m : {Mesh{}, test::make_mesh({{1, 2, 3}}, {})})
             for (const Encoding encoding : kEncodings)
             {
                 std::string out;

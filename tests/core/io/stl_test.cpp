@@ -26,20 +26,12 @@ namespace {
 
 Mesh parse(const std::string& data, io::ReadReport* report = nullptr)
 {
-    return io::read_mesh_data(data, io::Format::Stl, "t.stl", report);
+    return test::read_as(data, io::Format::Stl, report);
 }
 
 std::string error_of(const std::string& data)
 {
-    try
-    {
-        parse(data);
-    }
-    catch (const FormatError& e)
-    {
-        return e.what();
-    }
-    return "accepted";
+    return test::read_error(data, io::Format::Stl);
 }
 
 std::vector<Index> corners(const Mesh& m, Index f)
