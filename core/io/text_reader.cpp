@@ -118,17 +118,27 @@ bool equals_ignoring_case(std::string_view a, std::string_view b)
     return true;
 }
 
+namespace {
+
+// std::from_chars refuses the leading '+' that strtod accepts; "+-1" stays refused.
+std::string_view without_plus(const LineReader& reader, std::string_view token,
+                              std::string_view what, const char* kind)
+{
+    if (token.front() != '+')
+        return token;
+    const std::string_view rest = token.substr(1);
+    if (!rest.empty() && (rest.front() == '+' || rest.front() == '-'))
+        reader.fail_at(token, std::string(what) + " " + quoted(token) + " is not " + kind);
+    return rest;
+}
+
+} // namespace
+
 double parse_double(const LineReader& reader, std::string_view token, std::string_view what)
 {
     if (token.empty())
         reader.fail(std::string("missing ") + std::string(what));
-    std::string_view digits = token;
-    if (digits.front() == '+')
-    {
-        digits.remove_prefix(1);
-        if (!digits.empty() && (digits.front() == '+' || digits.front() == '-'))
-            reader.fail_at(token, std::string(what) + " " + quoted(token) + " is not a number");
-    }
+    const std::string_view digits = without_plus(reader, token, what, "a number");
     double value = 0;
     // std::from_chars is correctly rounded, like strtod, but never reads a locale.
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
@@ -146,13 +156,7 @@ std::int64_t parse_integer(const LineReader& reader, std::string_view token, std
 {
     if (token.empty())
         reader.fail(std::string("missing ") + std::string(what));
-    std::string_view digits = token;
-    if (digits.front() == '+')
-    {
-        digits.remove_prefix(1);
-        if (!digits.empty() && (digits.front() == '+' || digits.front() == '-'))
-            reader.fail_at(token, std::string(what) + " " + quoted(token) + " is not an integer");
-    }
+    const std::string_view digits = without_plus(reader, token, what, "an integer");
     std::int64_t value = 0;
     auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
     if (ec == std::errc::result_out_of_range)

@@ -21,4 +21,31 @@ void append_integer(std::string& out, std::int64_t value)
     out.append(buffer, end);
 }
 
+void append_vertex_rows(std::string& out, const Mesh& mesh)
+{
+    for (Index i = 0; i < mesh.vertex_count(); ++i)
+    {
+        append_double(out, mesh.positions[3 * i]);
+        out += ' ';
+        append_double(out, mesh.positions[3 * i + 1]);
+        out += ' ';
+        append_double(out, mesh.positions[3 * i + 2]);
+        out += '\n';
+    }
+}
+
+void append_counted_face_rows(std::string& out, const Mesh& mesh)
+{
+    for (Index f = 0; f < mesh.face_count(); ++f)
+    {
+        append_integer(out, mesh.face_size(f));
+        for (const Index v : mesh.face(f))
+        {
+            out += ' ';
+            append_integer(out, v);
+        }
+        out += '\n';
+    }
+}
+
 } // namespace meshfair::io

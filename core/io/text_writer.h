@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/mesh/mesh.h"
+
 namespace meshfair::io {
 
 //! \brief Appends the shortest decimal text that reads back (with strtod or
@@ -13,5 +15,11 @@ void append_double(std::string& out, double value);
 
 //! Appends a decimal integer.
 void append_integer(std::string& out, std::int64_t value);
+
+//! Appends one "x y z" line per vertex (the body rows of OFF and ASCII PLY).
+void append_vertex_rows(std::string& out, const Mesh& mesh);
+
+//! Appends one "n i_1 ... i_n" line per face, 0-based (the body rows of OFF and ASCII PLY).
+void append_counted_face_rows(std::string& out, const Mesh& mesh);
 
 } // namespace meshfair::io

@@ -14,26 +14,8 @@ void write_off(const Mesh& mesh, std::string& out)
     append_integer(out, mesh.face_count());
     // The edge count is optional information that readers ignore; 0 is customary.
     out += " 0\n";
-    for (Index i = 0; i < mesh.vertex_count(); ++i)
-    {
-        for (int c = 0; c < 3; ++c)
-        {
-            if (c > 0)
-                out += ' ';
-            append_double(out, mesh.positions[3 * i + c]);
-        }
-        out += '\n';
-    }
-    for (Index f = 0; f < mesh.face_count(); ++f)
-    {
-        append_integer(out, mesh.face_size(f));
-        for (Index v : mesh.face(f))
-        {
-            out += ' ';
-            append_integer(out, v);
-        }
-        out += '\n';
-    }
+    append_vertex_rows(out, mesh);
+    append_counted_face_rows(out, mesh);
 }
 
 } // namespace meshfair::io

@@ -43,26 +43,8 @@ void write_ply(const Mesh& mesh, Encoding encoding, std::string& out)
 
     if (encoding == Encoding::Ascii)
     {
-        for (Index i = 0; i < mesh.vertex_count(); ++i)
-        {
-            for (int c = 0; c < 3; ++c)
-            {
-                if (c > 0)
-                    out += ' ';
-                append_double(out, mesh.positions[3 * i + c]);
-            }
-            out += '\n';
-        }
-        for (Index f = 0; f < mesh.face_count(); ++f)
-        {
-            append_integer(out, mesh.face_size(f));
-            for (Index v : mesh.face(f))
-            {
-                out += ' ';
-                append_integer(out, v);
-            }
-            out += '\n';
-        }
+        append_vertex_rows(out, mesh);
+        append_counted_face_rows(out, mesh);
         return;
     }
 
