@@ -6,7 +6,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -112,18 +114,14 @@ int run_smooth(const SmoothOptions& o)
             recipe.optimal_step = true;
         else
         {
-            try
-            {
-                size_t used = 0;
-                recipe.lambda = std::stod(*o.lambda, &used);
-                if (used != o.lambda->size())
-                    throw std::invalid_argument("trailing text");
-            }
-            catch (const std::exception&)
-            {
+            double value = 0;
+            const char* begin = o.lambda->data();
+            const char* end = begin + o.lambda->size();
+            const auto [stop, ec] = std::from_chars(begin, end, value);
+            if (ec != std::errc() || stop != end || !(value > 0) || !std::isfinite(value))
                 throw InvalidInputError("--lambda: expected a number > 0 or 'optimal', got '" +
                                         *o.lambda + "'");
-            }
+            recipe.lambda = value;
             recipe.optimal_step = false;
         }
     }

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// Replaces the global allocation functions of the test program with counting ones, so a
+// test can assert that a region of code allocates nothing.
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "core/recipe/session.h"
+#include "tests/helpers.h"
+
+namespace {
+
+std::atomic<long> g_allocations{0};
+
+} // namespace
+
+void* operator new(std::size_t size)
+{
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    if (void* p = std::malloc(size == 0 ? 1 : size))
+        return p;
+    throw std::bad_alloc();
+}
+
+void* operator new[](std::size_t size)
+{
+    return operator new(size);
+}
+
+void operator delete(void* p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void* p) noexcept
+{
+    std::free(p);
+}
+
+void operator delete(void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+void operator delete[](void* p, std::size_t) noexcept
+{
+    std::free(p);
+}
+
+using namespace meshfair;
+
+TEST_SUITE("Session")
+{
+    TEST_CASE("a step and an energy evaluation allocate nothing")
+    {
+        Mesh m = test::icosphere(2);
+        test::perturb(m, 0.03, 8);
+        const Topology t = build_topology(m);
+        const Index nv = m.vertex_count(), nf = m.face_count();
+        Recipe all;
+        all.region = Region{{}, test::all_indices(nf - 3)};
+        all.hard = HardVertices{{0}, {{0.0, 0.0, 1.5}}};
+        all.soft = SoftVertices{{false, {1, 2, nv - 1}}, 0.5, {}};
+        all.centroid = CentroidConstraints{{true, {}}, 1.0, {}, CentroidDenominator::Paper};
+        all.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Smoothed, {}};
+        all.normal_smoothing = NormalSmoothing{3, 0.5, {{4}, {}}, {{5}, 0.5, {}}};
+        for (const bool joint : {false, true})
+            for (const bool optimal : {false, true})
+            {
+                CAPTURE(joint);
+                CAPTURE(optimal);
+                Recipe r = all;
+                r.optimal_step = optimal;
+                if (joint)
+                    r.joint = Joint{1.0};
+                Mesh x = m;
+                Session session(x, t, r);
+                session.apply_hard_targets(x.positions);
+                session.step(x.positions); // warm-up outside the measured region
+                const long before = g_allocations.load();
+                Scalar total = 0;
+                for (int k = 0; k < 5; ++k)
+                {
+                    session.step(x.positions);
+                    total += session.energy(x.positions).total();
+                }
+                CHECK(g_allocations.load() == before);
+                CHECK(total > 0);
+            }
+        // The counter itself works: a vector allocates.
+        const long before = g_allocations.load();
+        std::vector<int> v(10);
+        CHECK(g_allocations.load() > before);
+    }
+}
