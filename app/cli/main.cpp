@@ -55,6 +55,18 @@ io::WriteOptions output_options(const std::string& requested, io::Format out_for
     return options;
 }
 
+//! Writes the mesh; says on stderr what the target format cannot hold (STL keeps no
+//! isolated vertices), so nothing is lost silently.
+void write_output(const Mesh& mesh, const Topology& topology, const std::string& path,
+                  io::Format format, const io::WriteOptions& options)
+{
+    io::write_file_atomically(path, io::write_mesh_data(mesh, format, options));
+    if (format == io::Format::Stl)
+        if (const Index isolated = summarize(topology).isolated_vertices; isolated > 0)
+            std::cerr << "meshfair-cli: note: STL cannot store vertices without faces; " << isolated
+                      << " of them are not in '" << path << "'\n";
+}
+
 void write_text_atomically(const std::string& path, const std::string& text)
 {
     if (path == "-")
@@ -150,9 +162,8 @@ int run_smooth(const SmoothOptions& o)
     validate_mesh(mesh); // never write garbage: every coordinate is still finite
 
     const auto t_write = Clock::now();
-    io::write_file_atomically(
-        o.out,
-        io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format, read_report)));
+    write_output(mesh, topology, o.out, out_format,
+                 output_options(o.encoding, out_format, read_report));
     const double write_seconds = seconds_since(t_write);
 
     nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
@@ -186,9 +197,8 @@ int run_noise(const NoiseOptions& o)
                                 "': noise needs edges (sigma is in units of the mean edge "
                                 "length) and this mesh has none of positive length");
     add_gaussian_noise(mesh, o.sigma * unit, o.seed);
-    io::write_file_atomically(
-        o.out,
-        io::write_mesh_data(mesh, out_format, output_options(o.encoding, out_format, read_report)));
+    write_output(mesh, topology, o.out, out_format,
+                 output_options(o.encoding, out_format, read_report));
     return 0;
 }
 

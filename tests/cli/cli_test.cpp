@@ -188,6 +188,17 @@ TEST_SUITE("Cli")
         CHECK_FALSE(fs::exists(out));
     }
 
+    TEST_CASE("writing STL says which vertices it cannot hold")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string in = (dir / "m.obj").string(), out = (dir / "m.stl").string();
+        test::write_bytes(in, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n");
+        const Run r = cli("smooth " + quote(in) + " -o " + quote(out) + " -q");
+        CHECK(r.code == 0);
+        CHECK(r.err.find("1 of them are not in") != std::string::npos);
+        CHECK(io::read_mesh(out).vertex_count() == 3);
+    }
+
     TEST_CASE("an unwritable output exits 3 and leaves the existing file intact")
     {
         const fs::path dir = test::temp_dir();
