@@ -115,7 +115,9 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
         {"centroid", recipe.centroid.has_value(), &TermEnergies::centroid},
         {"normal", recipe.normal.has_value(), &TermEnergies::normal},
         {"normal_smoothing", recipe.joint.has_value(), &TermEnergies::normal_smoothing},
-        {"normal_soft", recipe.joint.has_value(), &TermEnergies::normal_soft},
+        {"normal_soft",
+         recipe.joint && recipe.normal_smoothing && !recipe.normal_smoothing->soft.faces.empty(),
+         &TermEnergies::normal_soft},
     };
     Json per_term = Json::object();
     for (const Term& t : terms)
