@@ -42,7 +42,11 @@ fi
 
 build=build
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHFAIR_WERROR=ON >/dev/null
-cmake --build "$build" -j"$(nproc)"
+if [ "$mode" = run ]; then
+    cmake --build "$build" -j"$(nproc)" --target meshfair-cli
+else
+    cmake --build "$build" -j"$(nproc)"
+fi
 
 if [ "$mode" = run ]; then
     cli="$build/app/meshfair-cli"
