@@ -61,10 +61,14 @@ void write_output(const Mesh& mesh, const Topology& topology, const std::string&
                   io::Format format, const io::WriteOptions& options)
 {
     io::write_file_atomically(path, io::write_mesh_data(mesh, format, options));
-    if (format == io::Format::Stl)
-        if (const Index isolated = summarize(topology).isolated_vertices; isolated > 0)
-            std::cerr << "meshfair-cli: note: STL cannot store vertices without faces; " << isolated
-                      << " of them are not in '" << path << "'\n";
+    if (format != io::Format::Stl)
+        return;
+    Index isolated = 0; // vertices without neighbours belong to no face
+    for (Index i = 0; i < topology.vertex_count; ++i)
+        isolated += topology.valence(i) == 0 ? 1 : 0;
+    if (isolated > 0)
+        std::cerr << "meshfair-cli: note: STL cannot store vertices without faces; " << isolated
+                  << " of them are not in '" << path << "'\n";
 }
 
 void write_text_atomically(const std::string& path, const std::string& text)
@@ -141,18 +145,20 @@ int run_smooth(const SmoothOptions& o)
         recipe.tolerance = *o.tolerance;
     if (o.method)
         recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
-    try
-    {
-        check_recipe(recipe, mesh);
-    }
-    catch (const RecipeError& e)
-    {
-        throw RecipeError(e.key(), e.message(), o.recipe.empty() ? "" : o.recipe);
-    }
 
     const auto t_setup = Clock::now();
     const Topology topology = build_topology(mesh);
-    Session session(mesh, topology, recipe);
+    // The session checks the recipe against the mesh; name the recipe file in its errors.
+    std::optional<Session> built;
+    try
+    {
+        built.emplace(mesh, topology, recipe);
+    }
+    catch (const RecipeError& e)
+    {
+        throw RecipeError(e.key(), e.message(), o.recipe);
+    }
+    Session& session = *built;
     session.apply_hard_targets(mesh.positions);
     const double setup_seconds = seconds_since(t_setup);
 

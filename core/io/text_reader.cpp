@@ -22,7 +22,7 @@ bool LineReader::next()
     ++line_number_;
     const char* begin = data_.data() + pos_;
     const size_t n = data_.size() - pos_;
-    // memchr-style scans keep long lines linear.
+    // One pass per line: the terminator search and the NUL check below are both linear.
     size_t len = 0;
     while (len < n && begin[len] != '\n' && begin[len] != '\r')
         ++len;

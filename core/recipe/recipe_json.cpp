@@ -150,48 +150,6 @@ void parse_lambda(const Json& j, Recipe& r)
     r.optimal_step = false;
 }
 
-} // namespace
-
-namespace {
-
-Recipe parse_recipe_json(const nlohmann::json& j);
-
-} // namespace
-
-Recipe parse_recipe(std::string_view json_text, const std::string& name)
-{
-    nlohmann::json j;
-    try
-    {
-        j = Json::parse(json_text.begin(), json_text.end());
-    }
-    catch (const Json::parse_error& e)
-    {
-        throw InvalidInputError("'" + name + "': not valid JSON: byte " + std::to_string(e.byte) +
-                                ": " + e.what());
-    }
-    catch (const Json::exception& e)
-    {
-        // e.g. a number too large for a double ("number overflow parsing '1e400'").
-        throw InvalidInputError("'" + name + "': not valid JSON: " + e.what());
-    }
-    try
-    {
-        return parse_recipe_json(j);
-    }
-    catch (const RecipeError& e)
-    {
-        throw RecipeError(e.key(), e.message(), name);
-    }
-}
-
-Recipe read_recipe(const std::string& path)
-{
-    return parse_recipe(io::read_file(path), path);
-}
-
-namespace {
-
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
@@ -365,6 +323,38 @@ Json set_json(const IndexSet& s)
 }
 
 } // namespace
+
+Recipe parse_recipe(std::string_view json_text, const std::string& name)
+{
+    nlohmann::json j;
+    try
+    {
+        j = Json::parse(json_text.begin(), json_text.end());
+    }
+    catch (const Json::parse_error& e)
+    {
+        throw InvalidInputError("'" + name + "': not valid JSON: byte " + std::to_string(e.byte) +
+                                ": " + e.what());
+    }
+    catch (const Json::exception& e)
+    {
+        // e.g. a number too large for a double ("number overflow parsing '1e400'").
+        throw InvalidInputError("'" + name + "': not valid JSON: " + e.what());
+    }
+    try
+    {
+        return parse_recipe_json(j);
+    }
+    catch (const RecipeError& e)
+    {
+        throw RecipeError(e.key(), e.message(), name);
+    }
+}
+
+Recipe read_recipe(const std::string& path)
+{
+    return parse_recipe(io::read_file(path), path);
+}
 
 nlohmann::json recipe_to_json(const Recipe& r)
 {
