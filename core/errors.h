@@ -78,7 +78,8 @@ public:
     explicit IOError(const std::string& what) : std::runtime_error(what) {}
 };
 
-//! Writing an output file failed; the target is left as it was.
+//! Writing an output file failed; the target is left as it was, except when only the
+//! final directory fsync failed after the new content was in place (the message says so).
 class WriteError : public IOError
 {
 public:

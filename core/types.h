@@ -18,8 +18,11 @@ using Index = std::int32_t;
 //! Marks "no element", like the paper's -1.
 inline constexpr Index kInvalidIndex = -1;
 
-//! Largest element count a mesh may have.
+//! Largest element count a mesh may have (faces, corners, edges).
 inline constexpr std::int64_t kMaxElements = 2147483647;
+//! Largest vertex count: the coordinate index 3 i + 2 of every vertex i must fit in an
+//! Index, so `positions[3 * i + a]` never overflows however it is computed.
+inline constexpr std::int64_t kMaxVertices = kMaxElements / 3;
 
 using Vec3 = std::array<Scalar, 3>;
 

@@ -20,6 +20,11 @@ std::filesystem::path data_dir()
 {
     return MESHFAIR_TEST_DATA_DIR;
 }
+std::filesystem::path adversarial_dir()
+{
+    return MESHFAIR_ADVERSARIAL_DIR;
+}
+
 std::filesystem::path assets_dir()
 {
     return MESHFAIR_ASSETS_DIR;

@@ -15,6 +15,8 @@ namespace meshfair::test {
 std::filesystem::path data_dir();
 //! assets/ (the bundled meshes).
 std::filesystem::path assets_dir();
+//! tests/adversarial (hostile input files, one folder per format).
+std::filesystem::path adversarial_dir();
 //! A fresh, empty directory for the calling test case, removed at exit.
 std::filesystem::path temp_dir();
 

@@ -9,6 +9,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -212,6 +213,10 @@ int run_noise(const NoiseOptions& o)
 
 int main(int argc, char** argv)
 {
+    // Over a file-size limit (ulimit -f) the kernel sends SIGXFSZ, which kills by
+    // default in the middle of a save; ignored, the write fails with EFBIG, the save is
+    // abandoned cleanly (temporary removed, target intact) and exit code 3 says why.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{
         "meshfair-cli: polygon mesh smoothing from scripts (Taubin 2012 energies,\n"
         "generalized Jacobi solver). Formats: .obj .off .ply .stl (from the extension)."};

@@ -52,6 +52,10 @@ Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport&
     j["format"] = std::string(io::format_name(read_report.format));
     j["encoding"] = std::string(io::encoding_name(read_report.encoding));
     j["notes"] = read_report.notes;
+    char hash[17];
+    std::snprintf(hash, sizeof hash, "%016llx",
+                  static_cast<unsigned long long>(content_hash(mesh)));
+    j["content_hash"] = hash;
     return j;
 }
 
@@ -86,6 +90,7 @@ std::string info_text(const Json& j)
         }
         line("bounding_box", box);
     }
+    line("content_hash", j["content_hash"].get<std::string>());
     for (const auto& note : j["notes"])
         line("note", note.get<std::string>());
     return s;

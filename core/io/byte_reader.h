@@ -43,6 +43,8 @@ public:
     size_t offset() const { return pos_; }
     size_t remaining() const { return data_.size() - pos_; }
     bool at_end() const { return pos_ >= data_.size(); }
+    //! The bytes not read yet.
+    std::string_view rest() const { return data_.substr(pos_); }
 
     template <typename T>
     T read(ByteOrder order)

@@ -20,8 +20,8 @@ FaceCheck normalize_face(std::vector<Index>& face)
     if (face.size() < 3)
     {
         check.ok = false;
-        check.problem = "face has " + std::to_string(face.size()) +
-                        " distinct vertices (a face needs at least 3)";
+        check.problem = "face has " + std::to_string(face.size()) + " distinct " +
+                        (face.size() == 1 ? "vertex" : "vertices") + " (a face needs at least 3)";
         return check;
     }
     if (Index r = repeated_vertex(face); r != kInvalidIndex)

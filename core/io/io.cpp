@@ -9,15 +9,16 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <climits>
 #include <cstring>
 #include <fstream>
-#include <random>
 
 #include "core/errors.h"
 #include "core/io/read_obj.h"
 #include "core/io/read_off.h"
 #include "core/io/read_ply.h"
 #include "core/io/read_stl.h"
+#include "core/io/text_reader.h"
 #include "core/io/write_obj.h"
 #include "core/io/write_off.h"
 #include "core/io/write_ply.h"
@@ -107,6 +108,10 @@ Mesh read_mesh_data(std::string_view data, Format format, const std::string& nam
     ReadReport& r = report ? *report : local;
     r = ReadReport{};
     r.format = format;
+    // A zero-byte file is what a failed download or an interrupted export leaves; no
+    // format calls it a mesh. (A well-formed file that declares no vertices is accepted.)
+    if (data.empty())
+        throw FormatError(SourceLocation::whole(name), "empty file");
     Mesh mesh;
     switch (format)
     {
@@ -127,7 +132,9 @@ Mesh read_mesh_data(std::string_view data, Format format, const std::string& nam
     validate_mesh(mesh);
     if (mesh.face_count() == 0 && mesh.vertex_count() > 0)
         r.notes.push_back("no faces: read as a point cloud of " +
-                          std::to_string(mesh.vertex_count()) + " vertices");
+                          count_of(mesh.vertex_count(), "vertex", "vertices"));
+    if (mesh.vertex_count() == 0)
+        r.notes.push_back("no vertices: the file holds an empty mesh");
     return mesh;
 }
 
@@ -167,14 +174,10 @@ void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& o
 
 namespace {
 
-mode_t new_file_mode(const std::string& path)
+//! The process umask, read from /proc: umask(2) can only read it by changing it, which
+//! would race with other threads creating files.
+mode_t current_umask()
 {
-    struct stat st
-    {
-    };
-    if (::stat(path.c_str(), &st) == 0)
-        return st.st_mode & 07777;
-    // The umask is only readable by changing it; /proc avoids that race.
     mode_t mask = 022;
     std::ifstream status("/proc/self/status");
     std::string key;
@@ -184,61 +187,112 @@ mode_t new_file_mode(const std::string& path)
             status >> std::oct >> mask;
             break;
         }
-    return 0666 & ~mask;
+    return mask;
+}
+
+//! The directory part of `path` with its trailing slash ("a/b" -> "a/"), "" for a bare name.
+std::string directory_of(const std::string& path)
+{
+    const auto slash = path.find_last_of('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
+}
+
+[[noreturn]] void throw_write_error(const std::string& name, const std::string& step, int err)
+{
+    throw WriteError(name + ": " + step + ": " + std::strerror(err));
 }
 
 } // namespace
 
 void write_file_atomically(const std::string& path, std::string_view data)
 {
-    const auto fail = [&](const std::string& what, int err) {
-        throw WriteError("'" + path + "': " + what + ": " + std::strerror(err));
-    };
+    // Follow symbolic links (at most 40, like the kernel) to the file to replace: the link
+    // stays a link and the temporary file is created beside the real file. A dangling
+    // link names the file to create, relative to the link's own directory.
+    std::string target = path;
     struct stat st
     {
     };
-    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
-        throw WriteError("'" + path + "': is a directory");
-    std::string tmp = path + ".tmp-XXXXXX";
-    const int fd = ::mkstemp(tmp.data());
-    if (fd < 0)
-        fail("cannot create a temporary file beside it", errno);
-    auto abandon = [&](const std::string& what) {
-        const int err = errno;
-        ::close(fd);
-        ::unlink(tmp.c_str());
-        fail(what, err);
-    };
-    const char* p = data.data();
-    size_t left = data.size();
-    while (left > 0)
+    bool exists = false;
+    for (int hops = 0;; ++hops)
     {
-        const ssize_t n = ::write(fd, p, left);
-        if (n < 0)
+        if (::lstat(target.c_str(), &st) != 0)
         {
-            if (errno == EINTR)
-                continue;
-            abandon("write failed");
+            if (errno != ENOENT)
+                throw_write_error("'" + path + "'", "cannot examine it", errno);
+            break;
         }
-        p += n;
-        left -= static_cast<size_t>(n);
+        exists = !S_ISLNK(st.st_mode);
+        if (exists)
+            break;
+        if (hops == 40)
+            throw_write_error("'" + path + "'", "cannot follow the symbolic link", ELOOP);
+        char link[PATH_MAX];
+        const ssize_t n = ::readlink(target.c_str(), link, sizeof link);
+        if (n < 0 || n == static_cast<ssize_t>(sizeof link)) // a full buffer may be cut short
+            throw_write_error("'" + path + "'", "cannot follow the symbolic link",
+                              n < 0 ? errno : ENAMETOOLONG);
+        const std::string next(link, static_cast<size_t>(n));
+        target = next.starts_with('/') ? next : directory_of(target) + next;
     }
-    if (::fchmod(fd, new_file_mode(path)) != 0)
-        abandon("cannot set permissions");
+    const std::string name = "'" + path + "'" + (target == path ? "" : " (-> '" + target + "')");
+
+    // Only a regular file the caller could open for writing is replaced (rename would also
+    // replace a read-only file, a device or a FIFO: that would surprise the user).
+    if (exists && S_ISDIR(st.st_mode))
+        throw WriteError(name + ": is a directory");
+    if (exists && !S_ISREG(st.st_mode))
+        throw WriteError(name + ": is not a regular file (only regular files are replaced)");
+    if (exists && ::faccessat(AT_FDCWD, target.c_str(), W_OK, AT_EACCESS) != 0)
+        throw_write_error(name, "refusing to replace a file you cannot write", errno);
+    const mode_t mode = exists ? st.st_mode & 07777 : 0666 & ~current_umask();
+
+    // The temporary file: in the same directory (so the rename is atomic), O_EXCL, O_CLOEXEC.
+    std::string tmp = target + ".tmp-XXXXXX";
+    const int fd = ::mkostemp(tmp.data(), O_CLOEXEC);
+    if (fd < 0)
+        throw_write_error(name, "cannot create a temporary file beside it", errno);
+    bool fd_open = true;
+    // On failure the temporary is closed and removed (best effort: it is being discarded,
+    // so these results change nothing) and the target is never touched.
+    const auto abandon = [&](const std::string& step, int err) {
+        if (fd_open)
+            ::close(fd);
+        ::unlink(tmp.c_str());
+        throw_write_error(name, step, err);
+    };
+    if (::fchmod(fd, mode) != 0)
+        abandon("cannot set permissions", errno);
+    for (size_t done = 0; done < data.size();)
+    {
+        const ssize_t n = ::write(fd, data.data() + done, data.size() - done);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0) // 0 bytes for a non-empty request: an error, never a reason to spin
+            abandon("write failed", n < 0 ? errno : EIO);
+        done += static_cast<size_t>(n); // a short write goes on with the rest
+    }
+    // Never retried: after a failed fsync the kernel may have dropped the dirty pages, and
+    // a second fsync could report success for data that is lost.
     if (::fsync(fd) != 0)
-        abandon("cannot flush to disk");
+        abandon("cannot flush to disk", errno);
+    fd_open = false; // Linux releases the descriptor even when close fails
     if (::close(fd) != 0)
-    {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail("close failed", err);
-    }
-    if (::rename(tmp.c_str(), path.c_str()) != 0)
-    {
-        const int err = errno;
-        ::unlink(tmp.c_str());
-        fail("cannot replace the file", err);
-    }
+        abandon("close failed", errno);
+    if (::rename(tmp.c_str(), target.c_str()) != 0)
+        abandon("cannot replace the file", errno);
+
+    // Make the rename durable. The new content is in place from here on.
+    const std::string dir = directory_of(target).empty() ? "." : directory_of(target);
+    const int dir_fd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (dir_fd < 0)
+        throw_write_error(name, "new content is in place, but its directory cannot be opened",
+                          errno);
+    const int sync_error = ::fsync(dir_fd) != 0 ? errno : 0;
+    const int close_error = ::close(dir_fd) != 0 ? errno : 0;
+    if (sync_error != 0 || close_error != 0)
+        throw_write_error(name, "new content is in place, but flushing its directory failed",
+                          sync_error != 0 ? sync_error : close_error);
 }
 
 } // namespace meshfair::io

@@ -67,16 +67,40 @@ Mesh read_mesh_data(std::string_view data, Format format, const std::string& nam
 std::string write_mesh_data(const Mesh& mesh, Format format, const WriteOptions& options = {});
 
 //! \brief Writes a mesh file atomically (see write_file_atomically).
-//! \throw WriteError when the file cannot be written; an existing file is left intact.
+//! \throw WriteError when the file cannot be written; an existing file is left intact
+//! (unless the message says the new content is in place).
 void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
 
 //! \brief Reads a whole file into memory.
 //! \throw InvalidInputError when it cannot be opened or read.
 std::string read_file(const std::string& path);
 
-//! \brief Writes `data` to a temporary file beside `path`, flushes it to disk and
-//! renames it over `path`, so `path` holds either its old content or all of the new.
-//! \throw WriteError on any failed step; the temporary file is removed.
+//! \brief Replaces the file at `path` by `data` so that, at every instant and after a
+//! crash or a kill, `path` holds either its old content or all of the new.
+//!
+//! Protocol: create `<target>.tmp-XXXXXX` beside the target (O_CREAT|O_EXCL, close-on-
+//! exec) with the target's permission bits (a new file: 0666 & ~umask), write all of
+//! `data` (EINTR retried, short writes continued, a write of 0 bytes is an error),
+//! fsync, close, rename it over the target, then fsync the directory.
+//!
+//! Policies:
+//! - Symbolic links are followed (up to 40 hops, like the kernel), also a dangling
+//!   one, whose relative content is read against the link's own directory: the link
+//!   stays a link, the file it points to gets the new content and the temporary file
+//!   lives beside that file. Hard links are not kept: the target becomes a new inode.
+//! - Only a regular file is replaced: a directory, a device, a FIFO or a socket is
+//!   refused, and so is a file the caller could not open for writing (checked with
+//!   access(W_OK) on the effective ids, as `>` in a shell would fail; root may replace a
+//!   read-only file). The replacement keeps the mode; owner, group, ACLs and extended
+//!   attributes become those of a new file of the caller.
+//!
+//! Precondition: `data` is the complete content, serialized before calling.
+//! \throw WriteError on any failed step, with a message "'path': step: reason" (the
+//! reason is strerror(errno)). The temporary file is removed and the target untouched,
+//! except when only the final directory fsync fails: then the new content is already
+//! in place and the message says so. A failed fsync is never retried. When the process
+//! is killed (SIGKILL, or SIGXFSZ over `ulimit -f` when that signal is not ignored), the
+//! target is still old or new, but a stale `.tmp-` file may be left beside it.
 void write_file_atomically(const std::string& path, std::string_view data);
 
 } // namespace meshfair::io

@@ -189,10 +189,10 @@ OffHeader parse_header(OffLines& lines, std::string_view data)
                     count_of(h.faces, "face", "faces") + " but only " +
                     count_of(bytes, "byte follows", "bytes follow") +
                     " (a vertex line takes at least 6 bytes, a face line 8)");
-    if (h.vertices > kMaxElements)
+    if (h.vertices > kMaxVertices)
         reader.fail_at(vertex_token, "vertex count " + std::to_string(h.vertices) +
                                          " is more than MeshFair supports (" +
-                                         std::to_string(kMaxElements) + ")");
+                                         std::to_string(kMaxVertices) + ")");
     if (h.faces > kMaxElements)
         reader.fail_at(face_token, "face count " + std::to_string(h.faces) +
                                        " is more than MeshFair supports (" +
@@ -253,7 +253,6 @@ void read_vertices(OffLines& lines, const OffHeader& h, Mesh& mesh, Ignored& ext
 void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& report)
 {
     const LineReader& reader = lines.reader();
-    const std::string& name = reader.file();
     mesh.face_offsets.reserve(static_cast<size_t>(h.faces + 1));
     mesh.face_vertices.reserve(static_cast<size_t>(3 * h.faces));
     NoteCounter collapsed;
@@ -295,7 +294,7 @@ void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& rep
             for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
                 parse_double(reader, t, "face colour value");
         }
-        const auto where = SourceLocation::text(name, reader.line_number());
+        const auto where = reader.here();
         const FaceCheck check = normalize_face(face);
         if (!check.ok)
             throw FormatError(where, check.problem);

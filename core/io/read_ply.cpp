@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <unordered_set>
 #include <vector>
 
 #include "core/errors.h"
@@ -74,6 +75,7 @@ struct Property
     Type count_type = Type::UInt8;
     std::string count_type_name;
     std::int64_t line = 0;   // header line declaring it
+    std::int64_t column = 0; // and the column of its 'property' keyword
     int axis = -1;           // 0, 1, 2 for the vertex coordinates x, y, z
     bool is_indices = false; // the face's vertex index list
     std::string what;        // names one value in messages: "x coordinate", "'red' value"
@@ -86,7 +88,9 @@ struct Element
     Kind kind = Kind::Other;
     std::int64_t count = 0;
     std::vector<Property> properties;
-    std::int64_t line = 0; // header line declaring it
+    std::unordered_set<std::string> property_names; // for the duplicate check
+    std::int64_t line = 0;                          // header line declaring it
+    std::int64_t column = 0;                        // and the column of its 'element' keyword
     std::int64_t count_column = 0;
 };
 
@@ -158,10 +162,14 @@ void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
     e.count = parse_integer(reader, count, "element count");
     if (e.count < 0)
         reader.fail_at(count, "element count " + std::to_string(e.count) + " is negative");
-    for (const Element& other : h.elements)
-        if (e.kind != Kind::Other && other.name == e.name)
-            reader.fail_at(name, "second '" + e.name + "' element (a PLY mesh has at most one)");
+    // Only the vertex and face elements must be unique: one scan each, at most twice.
+    if (e.kind != Kind::Other)
+        for (const Element& other : h.elements)
+            if (other.name == e.name)
+                reader.fail_at(name,
+                               "second '" + e.name + "' element (a PLY mesh has at most one)");
     e.line = reader.line_number();
+    e.column = reader.here().column;
     e.count_column = reader.column_of(count);
     h.elements.push_back(std::move(e));
 }
@@ -170,6 +178,7 @@ void parse_property(const LineReader& reader, Tokenizer& tokens, Element& e)
 {
     Property p;
     p.line = reader.line_number();
+    p.column = reader.here().column;
     std::string_view first = tokens.next();
     std::string_view name;
     if (first == "list")
@@ -196,9 +205,9 @@ void parse_property(const LineReader& reader, Tokenizer& tokens, Element& e)
     p.type = parse_type(reader, first);
     p.type_name = std::string(first);
     p.name = std::string(name);
-    for (const Property& other : e.properties)
-        if (other.name == p.name)
-            reader.fail_at(name, "element '" + e.name + "' already has a property " + quoted(name));
+    // A set, not a scan: headers with many thousands of properties stay linear.
+    if (!e.property_names.insert(p.name).second)
+        reader.fail_at(name, "element '" + e.name + "' already has a property " + quoted(name));
     p.what = "'" + p.name + "' value";
     p.count_what = "'" + p.name + "' list count";
     e.properties.push_back(std::move(p));
@@ -263,9 +272,12 @@ Header parse_header(LineReader& reader, std::string_view data)
     reader.fail("no end_header (the file ends inside the header)");
 }
 
-[[noreturn]] void fail_line(const std::string& file, std::int64_t line, const std::string& message)
+// Fails at the header line of `declared` (an Element or a Property).
+template <typename Declared>
+[[noreturn]] void fail_line(const std::string& file, const Declared& declared,
+                            const std::string& message)
 {
-    throw FormatError(SourceLocation::text(file, line), message);
+    throw FormatError(SourceLocation::text(file, declared.line, declared.column), message);
 }
 
 // Gives each property of the vertex and face elements its role, refusing elements
@@ -287,9 +299,9 @@ void assign_roles(Header& h, const std::string& file)
                 const std::string name(1, "xyz"[axis]);
                 Property* p = find(name);
                 if (!p)
-                    fail_line(file, e.line, "vertex element has no property '" + name + "'");
+                    fail_line(file, e, "vertex element has no property '" + name + "'");
                 if (p->is_list)
-                    fail_line(file, p->line,
+                    fail_line(file, *p,
                               "vertex property '" + p->name + "' is a list, not a coordinate");
                 p->axis = axis;
                 p->what = p->name + " coordinate";
@@ -300,17 +312,17 @@ void assign_roles(Header& h, const std::string& file)
             Property* p = find("vertex_indices");
             Property* alias = find("vertex_index");
             if (p && alias)
-                fail_line(file, alias->line,
+                fail_line(file, *alias,
                           "face element has both 'vertex_indices' and 'vertex_index'");
             p = p ? p : alias;
             if (!p)
-                fail_line(file, e.line,
+                fail_line(file, e,
                           "face element has no list property 'vertex_indices' (or "
                           "'vertex_index')");
             if (!p->is_list)
-                fail_line(file, p->line, "face property '" + p->name + "' is not a list");
+                fail_line(file, *p, "face property '" + p->name + "' is not a list");
             if (!info(p->type).is_integer)
-                fail_line(file, p->line,
+                fail_line(file, *p,
                           "face property '" + p->name + "' has item type '" + p->type_name +
                               "' (vertex indices must be integers)");
             p->is_indices = true;
@@ -343,10 +355,11 @@ void check_counts(const Header& h, const std::string& file, size_t available)
             throw FormatError(where, "header declares " + std::to_string(e.count) + " " +
                                          rows_of(e) + " but only " + std::to_string(available) +
                                          " bytes follow");
-        if (e.count > kMaxElements)
+        const std::int64_t limit = e.kind == Kind::Vertex ? kMaxVertices : kMaxElements;
+        if (e.count > limit)
             throw FormatError(where, "element '" + e.name + "' has " + std::to_string(e.count) +
                                          " rows (MeshFair supports at most " +
-                                         std::to_string(kMaxElements) + ")");
+                                         std::to_string(limit) + ")");
     }
 }
 
@@ -415,8 +428,8 @@ public:
             number(p);
     }
 
-    // Only blank lines may follow the last row.
-    void finish()
+    // Only blank lines may follow the last row. Returns the bytes ignored (none).
+    size_t finish()
     {
         while (reader_.next())
         {
@@ -424,6 +437,7 @@ public:
             if (!tokens.at_end())
                 reader_.fail_at(tokens.next(), "unexpected data after the last element");
         }
+        return 0;
     }
 
     SourceLocation where() const { return reader_.here(reader_.column_of(last_)); }
@@ -538,14 +552,21 @@ public:
         bytes_.skip(info(p.type).size);
     }
 
-    // Counts that lie leave bytes behind; a correct file ends with its last row.
-    void finish()
+    // Counts that lie leave rows behind, so data after the last row is refused. NUL and
+    // line-end bytes are not rows but padding some exporters append: they are ignored,
+    // and their number returned for a note.
+    size_t finish()
     {
-        if (bytes_.at_end())
-            return;
-        bytes_.at("", -1, "");
-        bytes_.fail("unexpected data after the last element (" +
-                    count_of(bytes_.remaining(), "byte", "bytes") + ")");
+        const std::string_view rest = bytes_.rest();
+        for (const char c : rest)
+            if (c != '\0' && c != '\n' && c != '\r' && c != ' ')
+            {
+                bytes_.at("", -1, "");
+                bytes_.fail("unexpected data after the last element (" +
+                            count_of(static_cast<std::int64_t>(rest.size()), "byte", "bytes") +
+                            ")");
+            }
+        return rest.size();
     }
 
     SourceLocation where() const { return located(start_); }
@@ -584,6 +605,7 @@ struct Body
     Mesh mesh;
     NoteCounter collapsed;
     std::vector<Index> face;
+    size_t padding = 0; // NUL or line-end bytes after the last row of a binary file
 };
 
 template <typename Rows>
@@ -591,8 +613,8 @@ void read_face(Rows& rows, const Property& p, std::int64_t row, Body& body)
 {
     const std::int64_t n = rows.count(p);
     if (n < 3)
-        rows.fail("face " + std::to_string(row) + " has " + std::to_string(n) +
-                  " vertices (a face needs at least 3)");
+        rows.fail("face " + std::to_string(row) + " has " + count_of(n, "vertex", "vertices") +
+                  " (a face needs at least 3)");
     body.face.clear();
     for (std::int64_t k = 0; k < n; ++k)
     {
@@ -656,26 +678,54 @@ void read_rows(Rows& rows, const Header& h, Body& body)
                 body.mesh.add_vertex(xyz[0], xyz[1], xyz[2]);
         }
     }
-    rows.finish();
+    body.padding = rows.finish();
 }
+
+// Names for a note: the first few, then how many more, so a note stays one line
+// whatever the header declares.
+class NameList
+{
+public:
+    void add(const std::string& item)
+    {
+        if (count_++ < kShown)
+            text_ += (text_.empty() ? "" : ", ") + item;
+    }
+    std::int64_t count() const { return count_; }
+    std::string text() const
+    {
+        return count_ > kShown ? text_ + " and " + std::to_string(count_ - kShown) + " more"
+                               : text_;
+    }
+
+private:
+    static constexpr std::int64_t kShown = 8;
+    std::int64_t count_ = 0;
+    std::string text_;
+};
 
 void add_notes(const Header& h, ReadReport& report)
 {
+    NameList elements;
     for (const Element& e : h.elements)
     {
         if (e.kind == Kind::Other)
         {
-            report.notes.push_back("skipped element '" + e.name + "' (" +
-                                   count_of(e.count, "row", "rows") + ")");
+            elements.add("'" + e.name + "' (" + count_of(e.count, "row", "rows") + ")");
             continue;
         }
-        std::string skipped;
+        NameList skipped;
         for (const Property& p : e.properties)
             if (p.axis < 0 && !p.is_indices)
-                skipped += (skipped.empty() ? "'" : ", '") + p.name + "'";
-        if (!skipped.empty())
-            report.notes.push_back("skipped " + e.name + " properties " + skipped);
+                skipped.add("'" + p.name + "'");
+        if (skipped.count() > 0)
+            report.notes.push_back("skipped " + e.name + " properties " + skipped.text());
     }
+    if (elements.count() == 1)
+        report.notes.push_back("skipped element " + elements.text());
+    else if (elements.count() > 1)
+        report.notes.push_back("skipped " + std::to_string(elements.count()) +
+                               " elements: " + elements.text());
 }
 
 } // namespace
@@ -707,6 +757,11 @@ Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report
     }
     add_notes(h, report);
     report_collapsed(body.collapsed, report.notes);
+    if (body.padding > 0)
+        report.notes.push_back(
+            "ignored " +
+            count_of(static_cast<std::int64_t>(body.padding), "padding byte", "padding bytes") +
+            " (NUL or line ends) after the last element");
     return std::move(body.mesh);
 }
 

@@ -73,9 +73,7 @@ private:
 
 void report_welding(const Welder& welder, const Mesh& mesh, ReadReport& report)
 {
-    if (mesh.face_count() == 0)
-        report.notes.push_back("no facets: the STL file holds an empty mesh");
-    else
+    if (mesh.face_count() > 0) // an empty mesh is noted by read_mesh_data
         report.notes.push_back("welded " + std::to_string(welder.corners()) + " corners into " +
                                count_of(mesh.vertex_count(), "vertex", "vertices") +
                                " by exact position");
@@ -122,7 +120,7 @@ Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t c
                  ReadReport& report)
 {
     report.encoding = Encoding::BinaryLittleEndian;
-    if (3 * std::int64_t{count} > kMaxElements)
+    if (3 * std::int64_t{count} > kMaxVertices) // welded vertices <= corners
     {
         ByteReader bytes(data, name, 80);
         bytes.at("header", -1, "triangle count");
@@ -264,7 +262,8 @@ private:
         }
         if (!equals_ignoring_case(t, "facet"))
             reader_.fail_at(t, "expected 'facet' or 'endsolid', found " + quoted(t));
-        const std::int64_t facet = mesh_.face_count(), line = reader_.line_number();
+        const std::int64_t facet = mesh_.face_count(), line = reader_.line_number(),
+                           column = reader_.column_of(t);
         expect("normal", facet);
         for (int c = 0; c < 3; ++c)
             skip_normal_value(reader_, in_facet(facet));
@@ -279,7 +278,7 @@ private:
             const double x = parse_double(reader_, in_facet(facet), "x coordinate");
             const double y = parse_double(reader_, in_facet(facet), "y coordinate");
             const double z = parse_double(reader_, in_facet(facet), "z coordinate");
-            if (mesh_.face_vertices.size() + face_.size() >= static_cast<size_t>(kMaxElements))
+            if (mesh_.face_vertices.size() + face_.size() >= static_cast<size_t>(kMaxVertices))
                 reader_.fail("more facet corners than MeshFair supports");
             face_.push_back(welder_.add(x, y, z));
         }
@@ -288,7 +287,7 @@ private:
                          count_of(static_cast<std::int64_t>(face_.size()), "vertex", "vertices") +
                          " (a facet needs at least 3)");
         expect("endfacet", facet);
-        const auto where = SourceLocation::text(reader_.file(), line);
+        const auto where = SourceLocation::text(reader_.file(), line, column);
         const FaceCheck check = normalize_face(face_);
         if (!check.ok)
             throw FormatError(where, "facet " + std::to_string(facet) + ": " + check.problem +

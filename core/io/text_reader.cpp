@@ -18,7 +18,10 @@ LineReader::LineReader(std::string_view data, std::string file)
 bool LineReader::next()
 {
     if (pos_ >= data_.size())
+    {
+        ended_ = true;
         return false;
+    }
     ++line_number_;
     const char* begin = data_.data() + pos_;
     const size_t n = data_.size() - pos_;
@@ -46,6 +49,16 @@ SourceLocation LineReader::here(std::int64_t column) const
     loc.file = file_;
     loc.line = line_number_;
     loc.column = column;
+    if (column == 0 && line_number_ > 0)
+    {
+        // Every text location has a column: past the end of the last line when the
+        // data ran out, else where the line's statement starts.
+        size_t first = 0;
+        while (!ended_ && first < line_.size() && is_blank(line_[first]))
+            ++first;
+        loc.column =
+            static_cast<std::int64_t>(ended_ || first == line_.size() ? line_.size() : first) + 1;
+    }
     return loc;
 }
 

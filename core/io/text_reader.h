@@ -29,7 +29,9 @@ public:
     size_t remaining_bytes() const { return data_.size() - pos_; }
     const std::string& file() const { return file_; }
 
-    //! The current line (and a column inside it, 1-based; 0 = whole line).
+    //! The current line and a column inside it (1-based). Column 0 picks a default: the
+    //! line's first non-blank character, or just past the last line once next() has
+    //! returned false (the data ended there).
     SourceLocation here(std::int64_t column = 0) const;
     //! Column (1-based) of `token`, which must be a view into line().
     std::int64_t column_of(std::string_view token) const;
@@ -42,6 +44,7 @@ private:
     size_t pos_ = 0;
     std::string_view line_;
     std::int64_t line_number_ = 0;
+    bool ended_ = false;
 };
 
 //! \brief Splits a line into whitespace-separated tokens (space, tab, VT, FF).

@@ -3,6 +3,7 @@
 #include "core/mesh/mesh.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <string>
 
@@ -41,12 +42,46 @@ Index repeated_vertex(std::span<const Index> face)
     return it == sorted.end() ? kInvalidIndex : *it;
 }
 
+namespace {
+
+// FNV-1a over the little-endian bytes of one 64-bit word.
+constexpr std::uint64_t kFnvOffset = 14695981039346656037ull;
+constexpr std::uint64_t kFnvPrime = 1099511628211ull;
+
+void mix(std::uint64_t& h, std::uint64_t word)
+{
+    for (int byte = 0; byte < 8; ++byte)
+    {
+        h ^= (word >> (8 * byte)) & 0xffu;
+        h *= kFnvPrime;
+    }
+}
+
+} // namespace
+
+std::uint64_t content_hash(const Mesh& mesh)
+{
+    std::uint64_t h = kFnvOffset;
+    mix(h, static_cast<std::uint64_t>(mesh.vertex_count()));
+    for (const Scalar x : mesh.positions)
+        mix(h, std::bit_cast<std::uint64_t>(x));
+    mix(h, static_cast<std::uint64_t>(mesh.face_count()));
+    for (const Index o : mesh.face_offsets)
+        mix(h, static_cast<std::uint64_t>(o));
+    for (const Index v : mesh.face_vertices)
+        mix(h, static_cast<std::uint64_t>(v));
+    return h;
+}
+
 void validate_mesh(const Mesh& mesh)
 {
     if (mesh.positions.size() % 3 != 0)
         throw InvalidInputError("validate_mesh: positions hold " +
                                 std::to_string(mesh.positions.size()) +
                                 " values, not a multiple of 3");
+    if (mesh.positions.size() / 3 > static_cast<size_t>(kMaxVertices))
+        throw InvalidInputError("validate_mesh: more than " + std::to_string(kMaxVertices) +
+                                " vertices");
     for (size_t k = 0; k < mesh.positions.size(); ++k)
         if (!std::isfinite(mesh.positions[k]))
             throw InvalidInputError("validate_mesh: vertex " + std::to_string(k / 3) +

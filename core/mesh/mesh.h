@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -53,6 +54,13 @@ struct Mesh
 //! indices in [0, #V), faces of >= 3 vertices without repetition, consistent offsets.
 //! \throw InvalidInputError naming the first offending vertex or face.
 void validate_mesh(const Mesh& mesh);
+
+//! \brief FNV-1a (64 bit) of the mesh's content: the vertex count, every coordinate's
+//! IEEE-754 bit pattern, the face offsets and the corners, in order. Two meshes have the
+//! same hash when they are equal (operator==), bit for bit; the adversarial test suite
+//! records it for every file MeshFair accepts, so a change in what a reader produces
+//! cannot go unnoticed. Not a cryptographic digest.
+std::uint64_t content_hash(const Mesh& mesh);
 
 //! \brief The first vertex repeated in `face`, or kInvalidIndex if all are distinct.
 //! Linear expected time; faces are usually tiny so small ones use a quadratic scan.

@@ -45,6 +45,20 @@ void expect_object(const Json& j, const std::string& key,
     }
 }
 
+// A value for an error message: scalars as written, containers by kind only, so a
+// message never grows with (nor recurses into) whatever the file nests there.
+std::string describe(const Json& j)
+{
+    if (j.is_array())
+        return "an array";
+    if (j.is_object())
+        return "an object";
+    std::string text = j.dump();
+    if (text.size() > 40)
+        text = text.substr(0, 40) + "...";
+    return text;
+}
+
 Scalar number(const Json& j, const std::string& key)
 {
     if (!j.is_number())
@@ -59,7 +73,7 @@ Scalar weight(const Json& j, const std::string& key)
 {
     const Scalar v = number(j, key);
     if (v < 0)
-        throw RecipeError(key, "must be >= 0 (got " + j.dump() + ")");
+        throw RecipeError(key, "must be >= 0 (got " + describe(j) + ")");
     return v;
 }
 
@@ -67,16 +81,17 @@ std::int64_t integer(const Json& j, const std::string& key)
 {
     if (j.is_number_integer())
         return j.get<std::int64_t>();
-    if (j.is_number_unsigned())
-        throw RecipeError(key, "is out of range (got " + j.dump() + ")");
-    throw RecipeError(key, "must be an integer (got " + j.dump() + ")");
+    // Integers past uint64 arrive as doubles.
+    if (j.is_number_unsigned() || (j.is_number_float() && std::abs(j.get<double>()) >= 9.2e18))
+        throw RecipeError(key, "is out of range (got " + describe(j) + ")");
+    throw RecipeError(key, "must be an integer (got " + describe(j) + ")");
 }
 
 int count(const Json& j, const std::string& key)
 {
     const std::int64_t v = integer(j, key);
     if (v < 0 || v > std::numeric_limits<int>::max())
-        throw RecipeError(key, "must be an integer in [0, 2147483647] (got " + j.dump() + ")");
+        throw RecipeError(key, "must be an integer in [0, 2147483647] (got " + describe(j) + ")");
     return static_cast<int>(v);
 }
 
@@ -133,7 +148,7 @@ Scalar step_length(const Json& j, const std::string& key)
 {
     const Scalar v = number(j, key);
     if (!(v > 0))
-        throw RecipeError(key, "must be > 0 (got " + j.dump() + ")");
+        throw RecipeError(key, "must be > 0 (got " + describe(j) + ")");
     return v;
 }
 
@@ -333,13 +348,26 @@ Recipe parse_recipe(std::string_view json_text, const std::string& name)
     }
     catch (const Json::parse_error& e)
     {
-        throw InvalidInputError("'" + name + "': not valid JSON: byte " + std::to_string(e.byte) +
-                                ": " + e.what());
+        // what() is "[json.exception.parse_error.101] parse error at line L, column C: why".
+        const std::string what = e.what();
+        const auto at = what.find(" at line ");
+        const auto why = what.find(": ", at == std::string::npos ? 0 : at);
+        if (at == std::string::npos || why == std::string::npos)
+            throw InvalidInputError("'" + name + "': not valid JSON: " + what);
+        std::string place = what.substr(at + 9, why - at - 9); // "L, column C"
+        const auto comma = place.find(", column ");
+        if (comma != std::string::npos)
+            place = place.substr(0, comma) + ":" + place.substr(comma + 9);
+        throw InvalidInputError("'" + name + "':" + place +
+                                ": not valid JSON: " + what.substr(why + 2));
     }
     catch (const Json::exception& e)
     {
-        // e.g. a number too large for a double ("number overflow parsing '1e400'").
-        throw InvalidInputError("'" + name + "': not valid JSON: " + e.what());
+        // e.g. a number too large for a double: "number overflow parsing '1e400'".
+        const std::string what = e.what();
+        const auto close = what.find("] ");
+        throw InvalidInputError("'" + name + "': not valid JSON: " +
+                                (close == std::string::npos ? what : what.substr(close + 2)));
     }
     try
     {

@@ -210,4 +210,55 @@ TEST_SUITE("Cli")
         fs::create_directories(dir / "taken.obj");
         CHECK(cli("smooth " + bunny() + " -o " + quote((dir / "taken.obj").string())).code == 3);
     }
+    TEST_CASE("the CLI opens no file but those on its command line (strace)")
+    {
+        // An OBJ naming a material library beside it, and a recipe: only the mesh, the
+        // recipe, the outputs and their temporaries may be opened, never the library.
+        const fs::path dir = test::temp_dir();
+        const fs::path mesh = dir / "scan.obj", mtl = dir / "secret.mtl", recipe = dir / "r.json",
+                       out = dir / "out.obj", log = dir / "trace";
+        test::write_bytes(mesh,
+                          "mtllib secret.mtl\nusemtl skin\nv 0 0 0\nv 1 0 0\nv 0 1 "
+                          "0\nv 1 1 1\nf 1 2 3\nf 2 4 3\n");
+        test::write_bytes(mtl, "newmtl skin\nmap_Kd /etc/passwd\n");
+        test::write_bytes(recipe, "{\"iterations\": 2}\n");
+        // LeakSanitizer cannot run under ptrace: the sanitizer build turns it off here.
+        const std::string traced =
+            "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" strace -f -qq -e "
+            "trace=open,openat,openat2,creat -o " +
+            quote(log.string()) + " " + quote(MESHFAIR_CLI) + " ";
+        const std::string args = "smooth " + quote(mesh.string()) + " --recipe " +
+                                 quote(recipe.string()) + " -o " + quote(out.string()) +
+                                 " --report " + quote((dir / "report.json").string()) + " -q";
+        const int status = std::system((traced + args + " 2>/dev/null").c_str());
+        INFO("strace must be installed (.ci/setup.sh test installs it)");
+        REQUIRE(WIFEXITED(status));
+        REQUIRE(WEXITSTATUS(status) == 0);
+        std::vector<std::string> opened;
+        for (std::string rest = io::read_file(log.string()); !rest.empty();)
+        {
+            const std::string line = rest.substr(0, rest.find('\n'));
+            rest = rest.size() > line.size() ? rest.substr(line.size() + 1) : "";
+            const auto a = line.find('"'), b = line.find('"', a + 1);
+            if (a != std::string::npos && b != std::string::npos)
+                opened.push_back(line.substr(a + 1, b - a - 1));
+        }
+        REQUIRE(!opened.empty());
+        std::vector<std::string> unexpected;
+        for (const std::string& path : opened)
+        {
+            const bool system = path.starts_with("/etc/ld.so") || path.starts_with("/lib") ||
+                                path.starts_with("/usr/lib") || path.starts_with("/proc/self/");
+            const bool named = path == mesh.string() || path == recipe.string() ||
+                               path.starts_with(out.string() + ".tmp-") ||
+                               path.starts_with((dir / "report.json").string() + ".tmp-") ||
+                               path == dir.string() || path == dir.string() + "/"; // fsync
+            if (!system && !named)
+                unexpected.push_back(path);
+        }
+        std::string listed;
+        for (const std::string& path : unexpected)
+            listed += " " + path;
+        CHECK_MESSAGE(unexpected.empty(), "opened:" << listed);
+    }
 }

@@ -102,29 +102,32 @@ TEST_SUITE("ReadObj")
               "t.obj:4:7: vertex index '99999999999999999999' is out of range");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3x\n") ==
               "t.obj:4:7: vertex index '3x' is not an integer");
-        CHECK(error_of("v 0 0 0\nv 1 0\n") == "t.obj:2: vertex has no z coordinate");
+        CHECK(error_of("v 0 0 0\nv 1 0\n") == "t.obj:2:1: vertex has no z coordinate");
         CHECK(error_of("v 0 0 0\nv a b c\n") == "t.obj:2:3: x coordinate 'a' is not a number");
         CHECK(error_of("v 0 nan 0\n") == "t.obj:1:5: y coordinate 'nan' is not finite");
         CHECK(error_of("v 0 0 inf\n") == "t.obj:1:7: z coordinate 'inf' is not finite");
         CHECK(error_of("v 1e400 0 0\n") ==
               "t.obj:1:3: x coordinate '1e400' is out of the range of a double");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nf 1 2\n") ==
-              "t.obj:3: face has 2 vertices (a face needs at least 3)");
+              "t.obj:3:1: face has 2 vertices (a face needs at least 3)");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 2\n") ==
-              "t.obj:4: face has 2 distinct vertices (a face needs at least 3)");
+              "t.obj:4:1: face has 2 distinct vertices (a face needs at least 3)");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 1 1 0\nv 2 2 2\nf 1 2 1 3\n") ==
-              "t.obj:5: face uses vertex 0 at two corners that are not adjacent");
+              "t.obj:5:1: face uses vertex 0 at two corners that are not adjacent");
         CHECK(error_of(std::string("v 0 0 0\nv 1 \0 0\n", 17)) ==
               "t.obj:2:5: NUL byte in a text file");
         CHECK(error_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 /2 3\n") ==
               "t.obj:4:5: face corner '/2' has no vertex index");
     }
 
-    TEST_CASE("an empty file is an empty mesh")
+    TEST_CASE("a zero-byte file is refused; a file without vertices is an empty mesh")
     {
-        const Mesh m = parse("");
+        CHECK(error_of("") == "t.obj: empty file");
+        io::ReadReport report;
+        const Mesh m = parse("# exported nothing\n", &report);
         CHECK(m.vertex_count() == 0);
         CHECK(m.face_count() == 0);
+        CHECK(report.notes == std::vector<std::string>{"no vertices: the file holds an empty mesh"});
     }
 
     TEST_CASE("the bundled bunny loads with the documented counts")

@@ -157,16 +157,16 @@ TEST_SUITE("ReadOff")
             parse("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2 255 0 0 0.5\n", &report);
         CHECK(m == square());
         CHECK(report.notes == std::vector<std::string>{"ignored the colours of 1 face (first "
-                                                       "at t.off:9)"});
+                                                       "at t.off:9:1)"});
         CHECK(notes_of("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3 7\n3 1 4 2 1 1 1\n") ==
-              std::vector<std::string>{"ignored the colours of 2 faces (first at t.off:8)"});
+              std::vector<std::string>{"ignored the colours of 2 faces (first at t.off:8:1)"});
     }
 
     TEST_CASE("undeclared values after a vertex are ignored with a note")
     {
         CHECK(notes_of("OFF\n3 0 0\n0 0 0\n1 0 0 9 9 9\n0 1 0 9\n") ==
               std::vector<std::string>{
-                  "ignored undeclared extra values on 2 vertex lines (first at t.off:4)"});
+                  "ignored undeclared extra values on 2 vertex lines (first at t.off:4:1)"});
         // A colour may have an alpha value.
         CHECK(notes_of("COFF\n1 0 0\n0 0 0 1 1 1 1\n").size() == 1);
     }
@@ -178,7 +178,7 @@ TEST_SUITE("ReadOff")
         CHECK(m == square());
         CHECK(report.notes ==
               std::vector<std::string>{"collapsed 2 consecutive repeated vertex indices in 2 "
-                                       "faces (first at t.off:8)"});
+                                       "faces (first at t.off:8:1)"});
     }
 
     TEST_CASE("zero counts give an empty mesh and vertices without faces a point cloud")
@@ -211,8 +211,8 @@ TEST_SUITE("ReadOff")
         CHECK(error_of("OFF BINARY\n") ==
               "t.off:1:5: binary OFF ('OFF BINARY') is not supported; convert it to ASCII OFF");
         CHECK(error_of("OFF\n") ==
-              "t.off:1: the file ends before the counts 'nv nf ne' that follow the header");
-        CHECK(error_of("OFF\n# none\n5\n") == "t.off:3: missing face count");
+              "t.off:1:4: the file ends before the counts 'nv nf ne' that follow the header");
+        CHECK(error_of("OFF\n# none\n5\n") == "t.off:3:1: missing face count");
         CHECK(error_of("OFF\n5 x 0\n") == "t.off:2:3: face count 'x' is not an integer");
         CHECK(error_of("OFF\n5.0 2 0\n") == "t.off:2:1: vertex count '5.0' is not an integer");
         CHECK(error_of("OFF\n-1 2 0\n") == "t.off:2:1: vertex count -1 is negative");
@@ -226,18 +226,18 @@ TEST_SUITE("ReadOff")
     {
         const auto start = std::chrono::steady_clock::now();
         CHECK(error_of("OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-              "t.off:2: header declares 1000000000000 vertices and 1 face but only 26 bytes "
+              "t.off:2:1: header declares 1000000000000 vertices and 1 face but only 26 bytes "
               "follow (a vertex line takes at least 6 bytes, a face line 8)");
         CHECK(error_of("OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
-              "t.off:2: header declares 3 vertices and 2000000000 faces but only 26 bytes "
+              "t.off:2:1: header declares 3 vertices and 2000000000 faces but only 26 bytes "
               "follow (a vertex line takes at least 6 bytes, a face line 8)");
         CHECK(error_of("OFF\n9223372036854775807 9223372036854775807\n") ==
-              "t.off:2: header declares 9223372036854775807 vertices and 9223372036854775807 "
+              "t.off:2:1: header declares 9223372036854775807 vertices and 9223372036854775807 "
               "faces but only 0 bytes follow (a vertex line takes at least 6 bytes, a face "
               "line 8)");
         // One byte short of the smallest possible body; the last line has no newline.
         CHECK(error_of("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1") ==
-              "t.off:2: header declares 3 vertices and 1 face but only 23 bytes follow (a "
+              "t.off:2:1: header declares 3 vertices and 1 face but only 23 bytes follow (a "
               "vertex line takes at least 6 bytes, a face line 8)");
         CHECK(parse("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2").face_count() == 1);
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
@@ -246,12 +246,12 @@ TEST_SUITE("ReadOff")
     TEST_CASE("counts that promise more than the file holds name where it ends")
     {
         CHECK(error_of("OFF\n8 0 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# end\n1 1 1 1 1 1 1\n"
-                       "1 1\n") == "t.off:10: vertex has no z coordinate");
+                       "1 1\n") == "t.off:10:1: vertex has no z coordinate");
         CHECK(error_of("OFF\n8 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# 3 more lines\n"
                        "# to make room\n# for the counts\n") ==
-              "t.off:10: expected 8 vertices, the file ends after 5");
+              "t.off:10:17: expected 8 vertices, the file ends after 5");
         CHECK(error_of("OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n# short\n# file\n") ==
-              "t.off:9: expected 4 faces, the file ends after 2");
+              "t.off:9:7: expected 4 faces, the file ends after 2");
     }
 
     TEST_CASE("data after the last face is refused")
@@ -281,11 +281,11 @@ TEST_SUITE("ReadOff")
               "t.off:4:1: x coordinate 'abc' is not a number");
         CHECK(error_of(head + "1 0 0 red\n" + tail) ==
               "t.off:4:7: vertex value 'red' is not a number");
-        CHECK(error_of(head + "1 0\n" + tail) == "t.off:4: vertex has no z coordinate");
+        CHECK(error_of(head + "1 0\n" + tail) == "t.off:4:1: vertex has no z coordinate");
         CHECK(error_of("NOFF\n1 0 0\n0 0 0 0 1\n") ==
-              "t.off:3: vertex has 5 values but NOFF needs at least 6 (x y z nx ny nz)");
+              "t.off:3:1: vertex has 5 values but NOFF needs at least 6 (x y z nx ny nz)");
         CHECK(error_of("STCOFF\n1 0 0\n0 0 0 1 1 1 0\n") ==
-              "t.off:3: vertex has 7 values but STCOFF needs at least 8 (x y z r g b s t)");
+              "t.off:3:1: vertex has 7 values but STCOFF needs at least 8 (x y z r g b s t)");
         CHECK(error_of(std::string("OFF\n1 0 0\n0 \0 0\n", 16)) ==
               "t.off:3:3: NUL byte in a text file");
     }
@@ -305,9 +305,9 @@ TEST_SUITE("ReadOff")
         CHECK(error_of(head + "3.0 0 1 2\n" + tail) ==
               "t.off:8:1: face vertex count '3.0' is not an integer");
         CHECK(error_of(head + "4 0 1 2\n" + tail) ==
-              "t.off:8: face declares 4 vertices but lists 3");
+              "t.off:8:1: face declares 4 vertices but lists 3");
         CHECK(error_of(head + "1000000000000 0 1 2\n" + tail) ==
-              "t.off:8: face declares 1000000000000 vertices but lists 3");
+              "t.off:8:1: face declares 1000000000000 vertices but lists 3");
         CHECK(error_of(head + "3 0 1 5\n" + tail) ==
               "t.off:8:7: vertex index 5 is out of range (the file has 5 vertices, numbered "
               "from 0)");
@@ -318,9 +318,9 @@ TEST_SUITE("ReadOff")
         CHECK(error_of(head + "3 0 1 2 red\n" + tail) ==
               "t.off:8:9: face colour value 'red' is not a number");
         CHECK(error_of(head + "3 0 1 1\n" + tail) ==
-              "t.off:8: face has 2 distinct vertices (a face needs at least 3)");
+              "t.off:8:1: face has 2 distinct vertices (a face needs at least 3)");
         CHECK(error_of(head + "4 0 1 0 2\n" + tail) ==
-              "t.off:8: face uses vertex 0 at two corners that are not adjacent");
+              "t.off:8:1: face uses vertex 0 at two corners that are not adjacent");
     }
 
     TEST_CASE("a file that ends in the middle of a line is read like one that does not")

@@ -295,10 +295,9 @@ TEST_SUITE("ReadPly")
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
             CHECK(parse(ply(encoding, declarations, rows), &report) == two_triangles());
-            CHECK(report.notes == std::vector<std::string>{"skipped element 'material' (2 rows)",
-                                                           "skipped element 'edge' (2 rows)",
-                                                           "skipped element 'nothing' (5 rows)",
-                                                           "skipped element 'tristrips' (1 row)"});
+            CHECK(report.notes ==
+                  std::vector<std::string>{"skipped 4 elements: 'material' (2 rows), 'edge' (2 "
+                                           "rows), 'nothing' (5 rows), 'tristrips' (1 row)"});
         }
     }
 
@@ -401,7 +400,7 @@ TEST_SUITE("ReadPly")
         const std::string note = "collapsed 2 consecutive repeated vertex indices in 2 faces ";
         io::ReadReport report;
         CHECK(parse(ply(Encoding::Ascii, kTwoTriangles, rows), &report) == two_triangles());
-        CHECK(report.notes == std::vector<std::string>{note + "(first at t.ply:14)"});
+        CHECK(report.notes == std::vector<std::string>{note + "(first at t.ply:14:1)"});
         const std::string data = ply(Encoding::BinaryBigEndian, kTwoTriangles, rows);
         CHECK(parse(data, &report) == two_triangles());
         CHECK(report.notes == std::vector<std::string>{note + "(first at t.ply: byte " +
@@ -436,9 +435,9 @@ TEST_SUITE("ReadPly")
         const std::string f = a + vertex_decl(0) + "element face 0\n";
         const std::string hint =
             " (expected ascii, binary_little_endian or binary_big_endian, version 1.0)";
-        CHECK(error_of("") == "t.ply: not a PLY file (the file is empty)");
+        CHECK(error_of("") == "t.ply: empty file");
         CHECK(error_of("PLY\n" + a.substr(4)) ==
-              "t.ply:1: not a PLY file (the first line must be 'ply')");
+              "t.ply:1:1: not a PLY file (the first line must be 'ply')");
         CHECK(error_of("ply\nformat binary 1.0\n") ==
               "t.ply:2:8: unknown PLY format 'binary 1.0'" + hint);
         CHECK(error_of("ply\nformat ascii 2.0 \n") ==
@@ -446,51 +445,51 @@ TEST_SUITE("ReadPly")
         CHECK(error_of(a + "format ascii 1.0\n") == "t.ply:3:1: second format line");
         CHECK(error_of("ply\nelement vertex 0\n") == "t.ply:2:1: element before the format line");
         CHECK(error_of("ply\ncomment\nend_header\n") ==
-              "t.ply:3: no format line before end_header");
+              "t.ply:3:1: no format line before end_header");
         CHECK(error_of(v + "property float x\n") ==
-              "t.ply:4: no end_header (the file ends inside the header)");
+              "t.ply:4:17: no end_header (the file ends inside the header)");
         CHECK(error_of("ply\nformat binary_little_endian 1.0\n" + vertex_decl(1) +
                        std::string("\x01\x00\x00\x00", 4)) ==
               "t.ply:7:2: NUL byte in a text file (inside the PLY header; is end_header missing?)");
         CHECK(error_of(a + "end_header extra\n") == "t.ply:3:12: unexpected text after end_header");
         CHECK(error_of(a + "element vertex\n") ==
-              "t.ply:3: an element line must be 'element NAME COUNT'");
+              "t.ply:3:1: an element line must be 'element NAME COUNT'");
         CHECK(error_of(a + "element vertex -1\n") == "t.ply:3:16: element count -1 is negative");
         CHECK(error_of(a + "element vertex 2.5\n") ==
               "t.ply:3:16: element count '2.5' is not an integer");
         CHECK(error_of(a + "property float x\n") == "t.ply:3:1: property before the first element");
         CHECK(error_of(v + "property int64 x\n") == "t.ply:4:10: unknown property type 'int64'");
         CHECK(error_of(v + "property float\n") ==
-              "t.ply:4: a property line must be 'property TYPE NAME'");
+              "t.ply:4:1: a property line must be 'property TYPE NAME'");
         CHECK(error_of(v + "property list uchar int\n") ==
-              "t.ply:4: a list property line must be 'property list COUNT_TYPE ITEM_TYPE NAME'");
+              "t.ply:4:1: a list property line must be 'property list COUNT_TYPE ITEM_TYPE NAME'");
         CHECK(error_of(v + "property list float int vertex_indices\n") ==
               "t.ply:4:15: list count type 'float' is not an integer type");
         CHECK(error_of(v + "property float x\nproperty double x\n") ==
               "t.ply:5:17: element 'vertex' already has a property 'x'");
         CHECK(error_of(v + "property float x\nproperty float z\nend_header\n") ==
-              "t.ply:3: vertex element has no property 'y'");
+              "t.ply:3:1: vertex element has no property 'y'");
         CHECK(error_of(v + "property float y\nproperty float z\nend_header\n") ==
-              "t.ply:3: vertex element has no property 'x'");
+              "t.ply:3:1: vertex element has no property 'x'");
         CHECK(error_of(v + "property float x\nproperty float y\nend_header\n") ==
-              "t.ply:3: vertex element has no property 'z'");
+              "t.ply:3:1: vertex element has no property 'z'");
         CHECK(error_of(v + "property float x\nproperty float y\nproperty list uchar float "
                            "z\nend_header\n") ==
-              "t.ply:6: vertex property 'z' is a list, not a coordinate");
+              "t.ply:6:1: vertex property 'z' is a list, not a coordinate");
         CHECK(error_of(a + vertex_decl(0) + "element vertex 0\n") ==
               "t.ply:7:9: second 'vertex' element (a PLY mesh has at most one)");
         CHECK(error_of(a + vertex_decl(0) + face_decl(0) + face_decl(0)) ==
               "t.ply:9:9: second 'face' element (a PLY mesh has at most one)");
         CHECK(error_of(f + "property int vertex_indices\nend_header\n") ==
-              "t.ply:8: face property 'vertex_indices' is not a list");
+              "t.ply:8:1: face property 'vertex_indices' is not a list");
         CHECK(error_of(f + "property list uchar float vertex_indices\nend_header\n") ==
-              "t.ply:8: face property 'vertex_indices' has item type 'float' (vertex indices "
+              "t.ply:8:1: face property 'vertex_indices' has item type 'float' (vertex indices "
               "must be integers)");
         CHECK(error_of(f + "property list uchar int verts\nend_header\n") ==
-              "t.ply:7: face element has no list property 'vertex_indices' (or 'vertex_index')");
+              "t.ply:7:1: face element has no list property 'vertex_indices' (or 'vertex_index')");
         CHECK(error_of(f + "property list uchar int vertex_index\nproperty list uchar int "
                            "vertex_indices\nend_header\n") ==
-              "t.ply:8: face element has both 'vertex_indices' and 'vertex_index'");
+              "t.ply:8:1: face element has both 'vertex_indices' and 'vertex_index'");
         CHECK(error_of(v + "vertex 1 2 3\n") == "t.ply:4:1: unknown header keyword 'vertex'");
     }
 
@@ -529,13 +528,13 @@ TEST_SUITE("ReadPly")
         CHECK(face_error("2 0 1\n") ==
               "t.ply:13:1: face 0 has 2 vertices (a face needs at least 3)");
         CHECK(face_error("3 0 1 1\n") ==
-              "t.ply:13: face has 2 distinct vertices (a face needs at least 3)");
+              "t.ply:13:1: face has 2 distinct vertices (a face needs at least 3)");
         CHECK(face_error("4 0 1 0 2\n") ==
-              "t.ply:13: face uses vertex 0 at two corners that are not adjacent");
+              "t.ply:13:1: face uses vertex 0 at two corners that are not adjacent");
         CHECK(face_error("3 0 1 2\n\n  \n3 0 1 2\n") ==
               "t.ply:16:1: unexpected data after the last element");
         CHECK(error_of(h + "0.000000 0 0\n1.000000 0 0\n") ==
-              "t.ply:11: file ends before vertex 2 (the header declares 3 vertices)");
+              "t.ply:11:13: file ends before vertex 2 (the header declares 3 vertices)");
         // One vertex (line 8) with other types.
         CHECK(error_of(header(Encoding::Ascii, vertex_decl(1)) + "0 1e39 0\n") ==
               "t.ply:8:3: y coordinate '1e39' does not fit in float");
@@ -562,7 +561,10 @@ TEST_SUITE("ReadPly")
         CHECK(binary_triangle_error(Row{{"uchar", 4}, {"int", 0}, {"int", 1}, {"int", 2}}) ==
               at_byte(36, kFace0 + "'vertex_indices' list count 4 needs 16 bytes, more than the "
                                    "12 bytes left"));
-        CHECK(binary_triangle_error(tri(0, 1, 2) + Row{{"uchar", 0}}) ==
+        // NUL and line-end bytes after the last row are padding; anything else is a row
+        // the counts do not declare.
+        CHECK(binary_triangle_error(tri(0, 1, 2) + Row{{"uchar", 0}}) == "accepted");
+        CHECK(binary_triangle_error(tri(0, 1, 2) + Row{{"uchar", 7}}) ==
               at_byte(49, ": unexpected data after the last element (1 byte)"));
         Bytes b;
         for (const float x : {0.0f, 0.0f, 0.0f, 1.0f, std::numeric_limits<float>::quiet_NaN()})

@@ -250,10 +250,10 @@ TEST_SUITE("ReadStl")
         io::ReadReport report;
         CHECK(parse(BinaryStl(0).bytes, &report) == Mesh{});
         CHECK(report.notes ==
-              std::vector<std::string>{"no facets: the STL file holds an empty mesh"});
+              std::vector<std::string>{"no vertices: the file holds an empty mesh"});
         CHECK(parse("solid empty\nendsolid empty\n", &report) == Mesh{});
         CHECK(report.notes ==
-              std::vector<std::string>{"no facets: the STL file holds an empty mesh"});
+              std::vector<std::string>{"no vertices: the file holds an empty mesh"});
     }
 
     TEST_CASE("non-zero attribute bytes are ignored with a note")
@@ -356,12 +356,12 @@ TEST_SUITE("ReadStl")
               "least 3) once equal positions are welded");
         CHECK(error_of("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
                        ascii_facet("vertex 0 0 0\nvertex -0 0 0\nvertex 0 0 0\n") + "endsolid\n") ==
-              "t.stl:9: facet 1: face has 1 distinct vertices (a face needs at least 3) once "
+              "t.stl:9:1: facet 1: face has 1 distinct vertex (a face needs at least 3) once "
               "equal positions are welded");
         CHECK(error_of("solid\n" +
                        ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 0 0\nvertex 0 1 0\n") +
                        "endsolid\n") ==
-              "t.stl:2: facet 0: face uses vertex 0 at two corners that are not adjacent once "
+              "t.stl:2:1: facet 0: face uses vertex 0 at two corners that are not adjacent once "
               "equal positions are welded");
     }
 
@@ -375,16 +375,16 @@ TEST_SUITE("ReadStl")
                              &report);
         CHECK(corners(m, 0) == std::vector<Index>{0, 1, 2});
         CHECK(report.notes.front() ==
-              "collapsed 1 consecutive repeated vertex indices in 1 faces (first at t.stl:2)");
+              "collapsed 1 consecutive repeated vertex indices in 1 faces (first at t.stl:2:1)");
     }
 
     TEST_CASE("malformed ASCII STL names the line, the column and what was expected")
     {
         const std::string facet = ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n");
-        CHECK(error_of("solid x\n" + facet) == "t.stl:8: file ends inside solid (no endsolid)");
-        CHECK(error_of("solid x\n") == "t.stl:1: file ends inside solid (no endsolid)");
+        CHECK(error_of("solid x\n" + facet) == "t.stl:8:9: file ends inside solid (no endsolid)");
+        CHECK(error_of("solid x\n") == "t.stl:1:8: file ends inside solid (no endsolid)");
         CHECK(error_of("solid x\nfacet normal 0 0 1\n outer loop\nvertex 0 0 0\n") ==
-              "t.stl:4: file ends inside facet 0 (no endfacet)");
+              "t.stl:4:13: file ends inside facet 0 (no endfacet)");
         CHECK(error_of("solid x\nfacet normal 0 0 1\nvertex 0 0 0\n") ==
               "t.stl:3:1: expected 'outer', found 'vertex'");
         CHECK(error_of("solid x\nfacet 0 0 1\n") == "t.stl:2:7: expected 'normal', found '0'");
@@ -394,7 +394,7 @@ TEST_SUITE("ReadStl")
               "t.stl:5:1: expected 'vertex' or 'endloop', found 'endfacet'");
         CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                        "endloop\nendfacet\nendsolid x\n") ==
-              "t.stl:6: facet 0 has 2 vertices (a facet needs at least 3)");
+              "t.stl:6:1: facet 0 has 2 vertices (a facet needs at least 3)");
         CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                        "vertex 0 1 0\nendloop\nendloop\n") ==
               "t.stl:8:1: expected 'endfacet', found 'endloop'");

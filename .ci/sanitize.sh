@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The whole ctest suite in a release build with AddressSanitizer, UndefinedBehavior-
+# Sanitizer (any report is fatal) and libstdc++ assertions, built with clang.
+# Needs: clang, libclang-rt-14-dev (installed by .ci/setup.sh test).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+build=build-asan
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+    -DMESHFAIR_SANITIZE=ON -DMESHFAIR_WERROR=ON >/dev/null
+cmake --build "$build" -j"$(nproc)"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+(cd "$build" && ctest --output-on-failure -j"$(nproc)")
+echo "Sanitizer build: every test passed under ASan + UBSan + _GLIBCXX_ASSERTIONS."
