@@ -91,6 +91,29 @@ void require_strace()
                     "tests need it");
 }
 
+// One traced save of mesh B over a target holding mesh A's output: what both
+// strace-driven tests start from.
+struct TracedSave
+{
+    Scratch s;
+    Meshes m = make_meshes(s);
+    fs::path dir = s / "target";
+    fs::path target = dir / "mesh.obj";
+    const std::string& old = m.out_a;
+    const std::string& next = m.out_b;
+    std::vector<std::string> args = save_args(m.in_b, target);
+    std::vector<Syscall> calls;
+
+    TracedSave()
+    {
+        require_strace();
+        fs::create_directories(dir);
+        write_bytes(target, old);
+        calls = trace_syscalls(args, s.logs());
+        REQUIRE(read_bytes(target) == next);
+    }
+};
+
 } // namespace
 
 TEST_SUITE("Save")
@@ -224,19 +247,14 @@ TEST_SUITE("Save")
 
     TEST_CASE("SIGKILL at every system call of a save (strace): the target is always old or new")
     {
-        require_strace();
-        Scratch s;
-        const Meshes m = make_meshes(s);
-        const fs::path dir = s / "target";
-        fs::create_directories(dir);
-        const fs::path target = dir / "mesh.obj";
-        const std::string& old = m.out_a;
-        const std::string& next = m.out_b;
-        const auto args = save_args(m.in_b, target);
-
-        write_bytes(target, old);
-        const std::vector<Syscall> calls = trace_syscalls(args, s.logs());
-        REQUIRE(read_bytes(target) == next);
+        TracedSave t;
+        Scratch& s = t.s;
+        const fs::path& dir = t.dir;
+        const fs::path& target = t.target;
+        const std::string& old = t.old;
+        const std::string& next = t.next;
+        const auto& args = t.args;
+        const std::vector<Syscall>& calls = t.calls;
         REQUIRE(calls.size() > 20);
 
         int left_old = 0, left_new = 0, stale = 0, bad = 0, missed = 0;
@@ -284,18 +302,14 @@ TEST_SUITE("Save")
 
     TEST_CASE("ENOSPC and EIO at write, fsync, close, rename: exit 3, old file, no temporary")
     {
-        require_strace();
-        Scratch s;
-        const Meshes m = make_meshes(s);
-        const fs::path dir = s / "target";
-        fs::create_directories(dir);
-        const fs::path target = dir / "mesh.obj";
-        const std::string& old = m.out_a;
-        const std::string& next = m.out_b;
-        const auto args = save_args(m.in_b, target);
-        write_bytes(target, old);
-        const std::vector<Syscall> calls = trace_syscalls(args, s.logs());
-        REQUIRE(read_bytes(target) == next);
+        TracedSave t;
+        Scratch& s = t.s;
+        const fs::path& dir = t.dir;
+        const fs::path& target = t.target;
+        const std::string& old = t.old;
+        const std::string& next = t.next;
+        const auto& args = t.args;
+        const std::vector<Syscall>& calls = t.calls;
 
         // Find the save in the trace: the temporary's descriptor and what is done with it.
         // Names match by prefix: "rename" is renameat or renameat2 on some architectures.
