@@ -24,6 +24,12 @@ inline constexpr std::int64_t kMaxElements = 2147483647;
 //! Index, so `positions[3 * i + a]` never overflows however it is computed.
 inline constexpr std::int64_t kMaxVertices = kMaxElements / 3;
 
+//! Largest coordinate magnitude the solver accepts (positions, targets, directions):
+//! energies sum squared distances and normals multiply coordinates, which must not
+//! overflow a double (1.8e308) even summed over 2^31 terms. Files may hold larger
+//! finite values; smoothing refuses them with a message.
+inline constexpr Scalar kMaxCoordinate = 1e100;
+
 using Vec3 = std::array<Scalar, 3>;
 
 } // namespace meshfair

@@ -159,6 +159,10 @@ int run_smooth(const SmoothOptions& o)
     {
         throw RecipeError(e.key(), e.message(), o.recipe);
     }
+    catch (const InvalidInputError& e)
+    {
+        throw InvalidInputError("'" + o.mesh + "': " + e.what()); // name the mesh at fault
+    }
     Session& session = *built;
     session.apply_hard_targets(mesh.positions);
     const double setup_seconds = seconds_since(t_setup);

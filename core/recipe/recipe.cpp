@@ -3,6 +3,7 @@
 #include "core/recipe/recipe.h"
 
 #include <cmath>
+#include <cstdio>
 
 #include "core/errors.h"
 
@@ -45,8 +46,8 @@ void check_finite(const std::vector<Vec3>& points, const std::string& key)
 {
     for (size_t k = 0; k < points.size(); ++k)
         for (int a = 0; a < 3; ++a)
-            if (!std::isfinite(points[k][a]))
-                throw RecipeError(item(key, k), "must be finite");
+            if (!(std::abs(points[k][a]) <= kMaxCoordinate)) // also false for NaN
+                throw RecipeError(item(key, k), "must be finite and within +-1e100");
 }
 
 void check_directions(const std::vector<Vec3>& normals, const std::string& key)
@@ -71,6 +72,16 @@ void check_weight(Scalar w, const std::string& key)
 void check_recipe(const Recipe& r, const Mesh& mesh)
 {
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
+    for (size_t k = 0; k < mesh.positions.size(); ++k)
+        if (!(std::abs(mesh.positions[k]) <= kMaxCoordinate))
+        {
+            char value[32];
+            std::snprintf(value, sizeof value, "%g", mesh.positions[k]);
+            throw InvalidInputError("vertex " + std::to_string(k / 3) + " has the coordinate " +
+                                    value +
+                                    ", beyond the +-1e100 that smoothing supports (squared "
+                                    "distances would overflow): scale the mesh down");
+        }
     std::vector<char> seen;
     if (r.iterations < 0)
         throw RecipeError("iterations", "must be >= 0");

@@ -119,8 +119,10 @@ struct Recipe
 
 //! \brief Checks a recipe against a mesh: indices in range and not repeated, target and
 //! normal counts matching their sets, hard and soft vertex sets disjoint, hard and soft
-//! normal face sets disjoint, weights finite and >= 0, sections that need another one.
-//! \throw RecipeError naming the offending key, e.g. "soft.vertices[3]".
+//! normal face sets disjoint, weights finite and >= 0, sections that need another one,
+//! every coordinate of the mesh and of the targets within +-kMaxCoordinate.
+//! \throw RecipeError naming the offending key, e.g. "soft.vertices[3]"; InvalidInputError
+//! naming the vertex when a mesh coordinate is out of range.
 void check_recipe(const Recipe& recipe, const Mesh& mesh);
 
 } // namespace meshfair

@@ -92,6 +92,8 @@ put("off/index_20_digits.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 999999999
 put("off/coordinate_1e400.off", "OFF\n3 1 0\n0 0 0\n1e400 0 0\n0 1 0\n3 0 1 2\n")
 put("off/coordinate_nan.off", "OFF\n3 1 0\n0 0 0\n1 NaN 0\n0 1 0\n3 0 1 2\n")
 put("off/coordinate_inf.off", "OFF\n3 1 0\n0 0 0\n1 0 inf\n0 1 0\n3 0 1 2\n")
+# finite, so accepted; smoothing refuses it (squared distances would overflow)
+put("off/coordinate_1e300.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 1e300\n3 0 1 2\n")
 put("off/coordinate_abc.off", "OFF\n3 1 0\n0 0 0\n1 abc 0\n0 1 0\n3 0 1 2\n")
 put("off/coff_colour_columns.off",
     "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n")

@@ -145,4 +145,32 @@ TEST_SUITE("Recipe")
               "'r.json':1:18: not valid JSON: syntax error while parsing object key - unexpected "
               "'}'; expected string literal");
     }
+
+    TEST_CASE("coordinates beyond 1e100 are refused before smoothing, where they would overflow")
+    {
+        Mesh mesh = test::tetrahedron();
+        mesh.positions[5] = 1e300;
+        try
+        {
+            check_recipe(Recipe{}, mesh);
+            FAIL("accepted");
+        }
+        catch (const RecipeError&)
+        {
+            FAIL("a mesh coordinate is not a recipe key");
+        }
+        catch (const InvalidInputError& e)
+        {
+            CHECK(std::string(e.what()) ==
+                  "vertex 1 has the coordinate 1e+300, beyond the +-1e100 that smoothing "
+                  "supports (squared distances would overflow): scale the mesh down");
+        }
+        mesh.positions[5] = -1e100; // the bound itself is accepted
+        CHECK_NOTHROW(check_recipe(Recipe{}, mesh));
+        Recipe r;
+        r.hard = HardVertices{{0}, {Vec3{0, 0, 2e100}}};
+        CHECK_THROWS_WITH_AS(check_recipe(r, mesh),
+                             "recipe: hard.targets[0]: must be finite and within +-1e100",
+                             RecipeError);
+    }
 }
