@@ -19,7 +19,10 @@ cd "$root"
 
 packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
     doctest-dev libeigen3-dev)
-[ "$mode" = test ] && packages+=(clang-format)
+# Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
+# (the sanitizer build and libFuzzer), strace (fault injection in the save tests and the
+# files-opened check).
+[ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev strace)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -64,7 +67,14 @@ if [ "$mode" = run ]; then
     exit 0
 fi
 
+# 1. Unit, adversarial and save tests in the release build.
 (cd "$build" && ctest --output-on-failure -j"$(nproc)")
 echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror
-echo "All tests passed and every source file is formatted."
+# 2. The same tests built with clang, ASan + UBSan and libstdc++ assertions.
+./.ci/sanitize.sh
+# 3. clang-tidy (bugprone-*) on core/, with the clang build's compile commands.
+./.ci/tidy.sh
+# 4. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each.
+./.ci/fuzz.sh
+echo "All tests passed (release, sanitizers, fuzzing), core/ is lint-clean and every source file is formatted."

@@ -1,0 +1,160 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# Long fuzzing campaigns over the targets of tests/fuzz, and their coverage.
+#
+#   tests/fuzz/campaign.sh [--target T]... [--runs N | --seconds S] [--jobs J] [--no-build]
+#   tests/fuzz/campaign.sh --coverage [--target T]...
+#
+# Campaign: for each target (default: all, in turn) libFuzzer runs in fork mode with J
+# parallel jobs (default 1) for N executions or S seconds (default 600), continuing past
+# findings (-ignore_crashes/-ignore_timeouts/-ignore_ooms), into the persistent corpus
+# build-fuzz/campaign/<target>/ (seeded as .ci/fuzz.sh does). Reproducers go to
+# build-fuzz/campaign/artifacts/<target>/; each run appends a line
+# "target<TAB>executions<TAB>seconds<TAB>findings" to build-fuzz/campaign/campaign.tsv.
+#
+# --coverage: builds the targets with clang's source-based coverage and plain drivers in
+# build-cov/, replays every corpus there is (campaign, .ci/fuzz.sh's scratch corpus,
+# seeds) through them and prints line and branch coverage of core/io/ per file with
+# llvm-cov report. The merged profile is build-cov/coverage.profdata.
+set -euo pipefail
+
+# shellcheck source-path=SCRIPTDIR source=common.sh
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+cd "$fuzz_root"
+
+usage() {
+    sed -n '4,5s/^#   //p' "${BASH_SOURCE[0]}" >&2
+    exit 2
+}
+
+targets=()
+runs=""
+seconds=600
+jobs=1
+coverage=0
+build=1
+while [ $# -gt 0 ]; do
+    case $1 in
+        --target) targets+=("${2:?}") && shift ;;
+        --runs) runs=${2:?} && shift ;;
+        --seconds) seconds=${2:?} && shift ;;
+        --jobs) jobs=${2:?} && shift ;;
+        --coverage) coverage=1 ;;
+        --no-build) build=0 ;;
+        -h | --help) usage ;;
+        *)
+            echo "campaign: unknown argument $1" >&2
+            usage
+            ;;
+    esac
+    shift
+done
+[ ${#targets[@]} -gt 0 ] || targets=("${FUZZ_TARGETS[@]}")
+for t in "${targets[@]}"; do
+    case " ${FUZZ_TARGETS[*]} " in
+        *" $t "*) ;;
+        *)
+            echo "campaign: unknown target $t (known: ${FUZZ_TARGETS[*]})" >&2
+            exit 2
+            ;;
+    esac
+done
+
+campaign="$fuzz_build/campaign"
+
+# The inputs of every corpus of a target, for the coverage replay.
+corpus_files() {
+    local d
+    for d in "$campaign/$1" "$fuzz_build/corpus/$1" "$fuzz_build/seeds/$1"; do
+        [ -d "$d" ] && find "$d" -type f
+    done | sort
+}
+
+if [ "$coverage" = 1 ]; then
+    for tool in llvm-profdata-14 llvm-cov-14; do
+        command -v "$tool" >/dev/null || {
+            echo "campaign: $tool not found (apt-get install llvm-14)" >&2
+            exit 1
+        }
+    done
+    if [ "$build" = 1 ]; then
+        echo "== building the coverage drivers in $fuzz_cov_build"
+        fuzz_build_coverage
+        # Seeds need the libFuzzer build's generator; skip them if it is not built.
+        if [ -x "$(fuzz_binary "$fuzz_build" fuzz_seedgen)" ]; then
+            fuzz_generate
+            for t in "${targets[@]}"; do fuzz_seeds "$t" "$fuzz_build/seeds/$t"; done
+        fi
+    fi
+    profiles="$fuzz_cov_build/profiles"
+    rm -rf "$profiles"
+    mkdir -p "$profiles"
+    objects=()
+    for t in "${targets[@]}"; do
+        bin=$(fuzz_binary "$fuzz_cov_build" "$t")
+        mapfile -t files < <(corpus_files "$t")
+        objects+=(-object "$bin")
+        [ ${#files[@]} -gt 0 ] || continue
+        export LLVM_PROFILE_FILE="$profiles/$t-%p.profraw"
+        crashed=$(fuzz_replay "$bin" "$profiles/$t.log" "${files[@]}") ||
+            echo "$t: crashing inputs (replayed around them):" "$crashed"
+        echo "$t: replayed ${#files[@]} inputs"
+    done
+    shopt -s nullglob
+    raw=("$profiles"/*.profraw)
+    [ ${#raw[@]} -gt 0 ] || {
+        echo "campaign: no profile written (no corpus? run a campaign or .ci/fuzz.sh first)" >&2
+        exit 1
+    }
+    llvm-profdata-14 merge -sparse "${raw[@]}" -o "$fuzz_cov_build/coverage.profdata"
+    echo
+    echo "== coverage of core/io/ (lines and branches; all targets' corpora)"
+    # The first -object is the main binary; report takes the others as -object too.
+    llvm-cov-14 report "${objects[1]}" "${objects[@]:2}" \
+        -instr-profile="$fuzz_cov_build/coverage.profdata" \
+        -show-region-summary=false -show-instantiation-summary=false \
+        "$fuzz_root/core/io/"
+    exit 0
+fi
+
+if [ "$build" = 1 ]; then
+    echo "== building the fuzz targets in $fuzz_build"
+    fuzz_build_libfuzzer
+fi
+fuzz_generate
+mkdir -p "$campaign"
+tsv="$campaign/campaign.tsv"
+[ -s "$tsv" ] || printf 'target\texecutions\tseconds\tfindings\n' >"$tsv"
+
+count_findings() {
+    find "$1" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
+        -o -name 'oom-*' \) | wc -l
+}
+
+for t in "${targets[@]}"; do
+    bin=$(fuzz_binary "$fuzz_build" "$t")
+    seeds="$fuzz_build/seeds/$t"
+    corpus="$campaign/$t"
+    artifacts="$campaign/artifacts/$t"
+    log="$campaign/$t.log"
+    mkdir -p "$corpus" "$artifacts"
+    fuzz_seeds "$t" "$seeds"
+    if [ -n "$runs" ]; then limit=(-runs="$runs"); else limit=(-max_total_time="$seconds"); fi
+    before=$(count_findings "$artifacts")
+    start=$(date +%s)
+    echo "== $t: ${limit[*]#-} with $jobs job(s) into $corpus"
+    "$bin" "${FUZZ_OPTIONS[@]}" "${limit[@]}" -fork="$jobs" -ignore_crashes=1 \
+        -ignore_timeouts=1 -ignore_ooms=1 -dict="$(fuzz_dict "$t")" \
+        -artifact_prefix="$artifacts/" "$corpus" "$seeds" >"$log" 2>&1 || true
+    elapsed=$(($(date +%s) - start))
+    # Fork mode's status lines start with "#<total executions>: cov: ...".
+    execs=$(sed -n 's/^#\([0-9]*\): cov:.*/\1/p' "$log" | tail -1)
+    findings=$(($(count_findings "$artifacts") - before))
+    printf '%s\t%s\t%s\t%s\n' "$t" "${execs:-0}" "$elapsed" "$findings" >>"$tsv"
+    printf '%-16s %12s execs %6ss %4s findings  corpus %s files\n' "$t" "${execs:-0}" \
+        "$elapsed" "$findings" "$(find "$corpus" -type f | wc -l)"
+    if [ "$findings" -gt 0 ]; then
+        find "$artifacts" -maxdepth 1 -type f -newermt "@$start" -printf '  reproducer: %p\n'
+    fi
+done
+echo "campaign log: $tsv"
