@@ -189,6 +189,21 @@ int run_smooth(const SmoothOptions& o)
     return 0;
 }
 
+struct ConvertOptions
+{
+    std::string mesh, out, encoding;
+};
+
+int run_convert(const ConvertOptions& o)
+{
+    io::ReadReport read_report;
+    const Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    const io::Format out_format = io::format_from_path(o.out);
+    write_output(mesh, build_topology(mesh), o.out, out_format,
+                 output_options(o.encoding, out_format, read_report));
+    return 0;
+}
+
 struct NoiseOptions
 {
     std::string mesh, out, encoding;
@@ -261,6 +276,15 @@ int main(int argc, char** argv)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
     smooth_cmd->add_flag("-q,--quiet", smooth.quiet, "Print nothing on success");
 
+    ConvertOptions convert;
+    auto* convert_cmd =
+        app.add_subcommand("convert", "Write a mesh in another format or encoding, unchanged");
+    convert_cmd->add_option("MESH", convert.mesh, "Input mesh")->required();
+    convert_cmd->add_option("-o,--output", convert.out, "Output mesh (format from extension)")
+        ->required();
+    convert_cmd->add_option("--encoding", convert.encoding, encoding_help)
+        ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+
     NoiseOptions noise;
     auto* noise_cmd = app.add_subcommand("noise", "Add Gaussian noise to every vertex");
     noise_cmd->add_option("MESH", noise.mesh, "Input mesh")->required();
@@ -290,6 +314,8 @@ int main(int argc, char** argv)
             return run_smooth(smooth);
         if (*noise_cmd)
             return run_noise(noise);
+        if (*convert_cmd)
+            return run_convert(convert);
     }
     catch (const InvalidInputError& e)
     {

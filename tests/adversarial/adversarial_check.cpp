@@ -451,11 +451,14 @@ int main(int argc, char** argv)
         {
             const std::string source = round == 0 ? file : out.string();
             const fs::path target = scratch / ("again" + out.extension().string());
-            const Run copied =
-                run({cli, "smooth", source, "-o", target.string(), "--iterations", "0", "-q"}, dir,
-                    scratch);
+            const Run copied = run({cli, "convert", source, "-o", target.string()}, dir, scratch);
             const Run reread = run({cli, "info", target.string()}, dir, scratch);
             const std::string hash = content_hash(reread.out);
+            if (copied.code != 0)
+            {
+                fail(file, "writing it again failed: " + first_line(copied.err));
+                break;
+            }
             fs::rename(target, out);
             if (copied.code == 0 && reread.code == 0 && hash == written)
                 break;

@@ -210,6 +210,21 @@ TEST_SUITE("Cli")
         fs::create_directories(dir / "taken.obj");
         CHECK(cli("smooth " + bunny() + " -o " + quote((dir / "taken.obj").string())).code == 3);
     }
+    TEST_CASE("convert writes the same mesh in another format, whatever its coordinates")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path in = dir / "far.off", out = dir / "far.ply";
+        test::write_bytes(in, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 1e300\n3 0 1 2\n");
+        const Run r = cli("convert " + quote(in.string()) + " -o " + quote(out.string()));
+        CHECK(r.code == 0);
+        CHECK(io::read_mesh(out.string()) == io::read_mesh(in.string()));
+        // Smoothing the same mesh is refused, naming it: its squares would overflow.
+        const Run s = cli("smooth " + quote(in.string()) + " -o " + quote(out.string()));
+        CHECK(s.code == 2);
+        CHECK(s.err.find("'" + in.string() + "': vertex 2 has the coordinate 1e+300") !=
+              std::string::npos);
+    }
+
     TEST_CASE("the CLI opens no file but those on its command line (strace)")
     {
         // An OBJ naming a material library beside it, and a recipe: only the mesh, the

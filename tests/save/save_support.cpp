@@ -309,10 +309,42 @@ Result Child::wait(std::chrono::milliseconds timeout)
     return r;
 }
 
+namespace {
+
+// A copy of the CLI that uid 65534 may execute: the build tree may sit in a directory
+// only root can enter (CI clones into /root).
+std::string cli_for_nobody()
+{
+    static const std::string copy = [] {
+        const fs::path dir =
+            fs::temp_directory_path() / ("meshfair-save-cli-" + std::to_string(::getpid()));
+        fs::create_directories(dir);
+        fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                 fs::perms::others_read | fs::perms::others_exec);
+        const fs::path cli = dir / "meshfair-cli";
+        fs::copy_file(cli_path(), cli, fs::copy_options::overwrite_existing);
+        fs::permissions(cli, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                                 fs::perms::others_read | fs::perms::others_exec);
+        std::atexit([] {
+            std::error_code ignored;
+            fs::remove_all(
+                fs::temp_directory_path() / ("meshfair-save-cli-" + std::to_string(::getpid())),
+                ignored);
+        });
+        return cli.string();
+    }();
+    return copy;
+}
+
+} // namespace
+
 Result run(const std::vector<std::string>& argv, const fs::path& log_dir, const ChildSetup& setup,
            std::chrono::milliseconds timeout)
 {
-    Child child(argv, setup, log_dir);
+    std::vector<std::string> args = argv;
+    if (setup.as_nobody && !args.empty() && args[0] == cli_path())
+        args[0] = cli_for_nobody();
+    Child child(args, setup, log_dir);
     return child.wait(timeout);
 }
 
@@ -416,8 +448,10 @@ NamespaceResult in_private_mount_namespace(const std::function<int()>& body)
             put("/proc/self/uid_map", "0 " + std::to_string(uid) + " 1");
             put("/proc/self/gid_map", "0 " + std::to_string(gid) + " 1");
         }
-        // Mounts made below must not propagate back to the host's namespace.
-        if (::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0)
+        // Mounts made below must not propagate back to the host's namespace. In a chroot
+        // "/" is no mount point (EINVAL): there the parent may see a body's mounts while
+        // they exist, so every body unmounts what it mounted before it returns.
+        if (::mount(nullptr, "/", nullptr, MS_REC | MS_PRIVATE, nullptr) != 0 && errno != EINVAL)
             fail("making / a private mount");
         ::close(pipe_fds[1]);
         int status = 99;

@@ -437,7 +437,7 @@ TEST_SUITE("Save")
             for (const auto& name : list_dir(mnt))
                 names += name + "\n";
             write_bytes(s / "listing", names);
-            return 0;
+            return ::umount2(mnt.c_str(), MNT_DETACH) == 0 ? 0 : 124;
         });
         REQUIRE_MESSAGE(ns.entered, "cannot enter a private mount namespace ("
                                         << ns.error
