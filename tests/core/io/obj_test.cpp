@@ -127,7 +127,8 @@ TEST_SUITE("ReadObj")
         const Mesh m = parse("# exported nothing\n", &report);
         CHECK(m.vertex_count() == 0);
         CHECK(m.face_count() == 0);
-        CHECK(report.notes == std::vector<std::string>{"no vertices: the file holds an empty mesh"});
+        CHECK(report.notes ==
+              std::vector<std::string>{"no vertices: the file holds an empty mesh"});
     }
 
     TEST_CASE("the bundled bunny loads with the documented counts")
