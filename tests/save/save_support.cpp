@@ -315,21 +315,19 @@ namespace {
 // only root can enter (CI clones into /root).
 std::string cli_for_nobody()
 {
+    static const fs::path dir =
+        fs::temp_directory_path() / ("meshfair-save-cli-" + std::to_string(::getpid()));
     static const std::string copy = [] {
-        const fs::path dir =
-            fs::temp_directory_path() / ("meshfair-save-cli-" + std::to_string(::getpid()));
+        const auto readable = fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
+                              fs::perms::others_read | fs::perms::others_exec;
         fs::create_directories(dir);
-        fs::permissions(dir, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                 fs::perms::others_read | fs::perms::others_exec);
+        fs::permissions(dir, readable);
         const fs::path cli = dir / "meshfair-cli";
         fs::copy_file(cli_path(), cli, fs::copy_options::overwrite_existing);
-        fs::permissions(cli, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                 fs::perms::others_read | fs::perms::others_exec);
+        fs::permissions(cli, readable);
         std::atexit([] {
             std::error_code ignored;
-            fs::remove_all(
-                fs::temp_directory_path() / ("meshfair-save-cli-" + std::to_string(::getpid())),
-                ignored);
+            fs::remove_all(dir, ignored);
         });
         return cli.string();
     }();
