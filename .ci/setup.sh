@@ -17,12 +17,14 @@ esac
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
+# libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else.
 packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
-    doctest-dev libeigen3-dev)
+    doctest-dev libeigen3-dev libopenmesh-dev)
 # Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
-# (the sanitizer build and libFuzzer), strace (fault injection in the save tests and the
-# files-opened check).
-[ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev strace)
+# and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
+# save tests and the files-opened check).
+[ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
+    strace)
 
 missing=()
 for p in "${packages[@]}"; do

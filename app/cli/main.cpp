@@ -182,6 +182,7 @@ int run_smooth(const SmoothOptions& o)
                          {"setup", setup_seconds},
                          {"solve", solve_seconds},
                          {"write", write_seconds}};
+    report["peak_memory_bytes"] = cli::peak_resident_bytes();
     if (!o.report.empty())
         write_text_atomically(o.report, report.dump(2) + "\n");
     if (!o.quiet && o.report != "-")

@@ -3,7 +3,9 @@
 #include "app/cli/report.h"
 
 #include <cstdio>
+#include <fstream>
 #include <map>
+#include <string>
 
 #include "core/geometry/face_geometry.h"
 
@@ -156,6 +158,16 @@ std::string smooth_summary(const Json& report, const std::string& output)
          format_number(t["write"].get<double>()) + "\n";
     s += "wrote " + output + "\n";
     return s;
+}
+
+long long peak_resident_bytes()
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.starts_with("VmHWM:"))
+            return std::stoll(line.substr(6)) * 1024; // "VmHWM:    1234 kB"
+    return -1;
 }
 
 } // namespace meshfair::cli

@@ -2,15 +2,18 @@
 # SPDX-License-Identifier: MIT
 # Long fuzzing campaigns over the targets of tests/fuzz, and their coverage.
 #
-#   tests/fuzz/campaign.sh [--target T]... [--runs N | --seconds S] [--jobs J] [--no-build]
-#   tests/fuzz/campaign.sh --coverage [--target T]...
+#   tests/fuzz/campaign.sh [--target T]... [--runs N | --seconds S] [--jobs J] [--max-len B] [--no-build]
+#   tests/fuzz/campaign.sh --coverage [--target T]...   |   tests/fuzz/campaign.sh --summary
 #
-# Campaign: for each target (default: all, in turn) libFuzzer runs in fork mode with J
-# parallel jobs (default 1) for N executions or S seconds (default 600), continuing past
-# findings (-ignore_crashes/-ignore_timeouts/-ignore_ooms), into the persistent corpus
-# build-fuzz/campaign/<target>/ (seeded as .ci/fuzz.sh does). Reproducers go to
-# build-fuzz/campaign/artifacts/<target>/; each run appends a line
-# "target<TAB>executions<TAB>seconds<TAB>findings" to build-fuzz/campaign/campaign.tsv.
+# Campaign: for each target (default: all, in turn) libFuzzer runs for N executions or S
+# seconds (default 600) into the persistent corpus build-fuzz/campaign/<target>/ (seeded as
+# .ci/fuzz.sh does), with inputs of at most B bytes (default 4096; CI fuzzes up to 64 KiB,
+# the adversarial suite covers the large files). One job (the default) is one libFuzzer
+# process, which stops at its first finding; J > 1 jobs use fork mode, which continues past
+# findings (-ignore_crashes/-ignore_timeouts/-ignore_ooms) but spends about two thirds of
+# its time forking and merging. Reproducers go to build-fuzz/campaign/artifacts/<target>/;
+# each run appends "target<TAB>executions<TAB>seconds<TAB>findings<TAB>max_len" to
+# build-fuzz/campaign/campaign.tsv. --summary prints each target's totals from it.
 #
 # --coverage: builds the targets with clang's source-based coverage and plain drivers in
 # build-cov/, replays every corpus there is (campaign, .ci/fuzz.sh's scratch corpus,
@@ -31,7 +34,9 @@ targets=()
 runs=""
 seconds=600
 jobs=1
+max_len=4096
 coverage=0
+summary=0
 build=1
 while [ $# -gt 0 ]; do
     case $1 in
@@ -39,6 +44,8 @@ while [ $# -gt 0 ]; do
         --runs) runs=${2:?} && shift ;;
         --seconds) seconds=${2:?} && shift ;;
         --jobs) jobs=${2:?} && shift ;;
+        --max-len) max_len=${2:?} && shift ;;
+        --summary) summary=1 ;;
         --coverage) coverage=1 ;;
         --no-build) build=0 ;;
         -h | --help) usage ;;
@@ -61,6 +68,19 @@ for t in "${targets[@]}"; do
 done
 
 campaign="$fuzz_build/campaign"
+tsv="$campaign/campaign.tsv"
+
+if [ "$summary" = 1 ]; then
+    [ -s "$tsv" ] || {
+        echo "campaign: no campaign log $tsv yet" >&2
+        exit 1
+    }
+    printf '%-16s %5s %14s %9s %9s\n' target runs executions hours findings
+    awk -F'\t' 'NR > 1 { runs[$1]++; execs[$1] += $2; secs[$1] += $3; found[$1] += $4 }
+        END { for (t in runs) printf "%-16s %5d %14d %9.2f %9d\n", t, runs[t], execs[t],
+                                     secs[t] / 3600, found[t] }' "$tsv" | sort
+    exit 0
+fi
 
 # The inputs of every corpus of a target, for the coverage replay.
 corpus_files() {
@@ -123,8 +143,7 @@ if [ "$build" = 1 ]; then
 fi
 fuzz_generate
 mkdir -p "$campaign"
-tsv="$campaign/campaign.tsv"
-[ -s "$tsv" ] || printf 'target\texecutions\tseconds\tfindings\n' >"$tsv"
+[ -s "$tsv" ] || printf 'target\texecutions\tseconds\tfindings\tmax_len\n' >"$tsv"
 
 count_findings() {
     find "$1" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
@@ -142,15 +161,22 @@ for t in "${targets[@]}"; do
     if [ -n "$runs" ]; then limit=(-runs="$runs"); else limit=(-max_total_time="$seconds"); fi
     before=$(count_findings "$artifacts")
     start=$(date +%s)
-    echo "== $t: ${limit[*]#-} with $jobs job(s) into $corpus"
-    "$bin" "${FUZZ_OPTIONS[@]}" "${limit[@]}" -fork="$jobs" -ignore_crashes=1 \
-        -ignore_timeouts=1 -ignore_ooms=1 -dict="$(fuzz_dict "$t")" \
-        -artifact_prefix="$artifacts/" "$corpus" "$seeds" >"$log" 2>&1 || true
+    if [ "$jobs" -gt 1 ]; then
+        mode=(-fork="$jobs" -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1)
+    else
+        mode=()
+    fi
+    echo "== $t: ${limit[*]#-}, inputs up to $max_len bytes, $jobs job(s), into $corpus"
+    "$bin" "${FUZZ_REPLAY_OPTIONS[@]}" -max_len="$max_len" "${limit[@]}" "${mode[@]}" \
+        -dict="$(fuzz_dict "$t")" -artifact_prefix="$artifacts/" "$corpus" "$seeds" \
+        >"$log" 2>&1 || true
     elapsed=$(($(date +%s) - start))
-    # Fork mode's status lines start with "#<total executions>: cov: ...".
-    execs=$(sed -n 's/^#\([0-9]*\): cov:.*/\1/p' "$log" | tail -1)
+    # A finished run ends with "Done <executions> runs in <s> second(s)"; otherwise take
+    # the last status line, "#<executions> ..." (fork mode: "#<executions>: cov: ...").
+    execs=$(sed -n 's/^Done \([0-9]*\) runs in .*/\1/p' "$log" | tail -1)
+    [ -n "$execs" ] || execs=$(sed -n 's/^#\([0-9]*\):\{0,1\}[[:space:]].*/\1/p' "$log" | tail -1)
     findings=$(($(count_findings "$artifacts") - before))
-    printf '%s\t%s\t%s\t%s\n' "$t" "${execs:-0}" "$elapsed" "$findings" >>"$tsv"
+    printf '%s\t%s\t%s\t%s\t%s\n' "$t" "${execs:-0}" "$elapsed" "$findings" "$max_len" >>"$tsv"
     printf '%-16s %12s execs %6ss %4s findings  corpus %s files\n' "$t" "${execs:-0}" \
         "$elapsed" "$findings" "$(find "$corpus" -type f | wc -l)"
     if [ "$findings" -gt 0 ]; then

@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+
+namespace meshfair::bench {
+
+//! \brief STREAM's triad a[i] = b[i] + s c[i] over arrays far larger than the caches,
+//! with the threads of the benchmark (OpenMP, static schedule, so each thread touches the
+//! pages it first wrote). Bandwidth is counted the STREAM way: 24 bytes per element
+//! (two reads and one write; the write-allocate read is not counted), so it compares
+//! directly with step byte counts made the same way.
+class TriadBandwidth
+{
+public:
+    //! \param elements per array; 3 arrays of doubles are allocated and first-touched.
+    explicit TriadBandwidth(std::size_t elements);
+    //! One timed triad; returns bytes per second.
+    double measure();
+
+private:
+    std::size_t n_;
+    std::unique_ptr<double[]> a_, b_, c_; // not value-initialized: first touch below
+};
+
+} // namespace meshfair::bench
