@@ -31,6 +31,7 @@
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
+#include "core/solver/parallel.h"
 #include "core/topology/topology.h"
 #include "core/topology/vertex_order.h"
 
@@ -183,11 +184,13 @@ double max_relative_difference(const std::vector<Scalar>& a, const std::vector<S
 //! it (its own high-water mark: a forked child's ru_maxrss would include this process's
 //! memory); negative when it fails.
 double cli_peak_rss(const std::string& cli, const std::string& file, const std::string& recipe,
-                    const std::string& out)
+                    const std::string& out, int threads)
 {
     const std::string report = out + ".report.json";
     std::vector<std::string> args = {cli,  "smooth", file,       "--recipe", recipe,
                                      "-o", out,      "--report", report,     "--quiet"};
+    if (threads > 0)
+        args.insert(args.end(), {"--threads", std::to_string(threads)});
     std::vector<char*> argv;
     for (std::string& a : args)
         argv.push_back(a.data());
@@ -370,7 +373,8 @@ private:
         const std::string recipe_file = stem + "-combined.json";
         const std::string recipe_text = recipe_to_json(combined_recipe(std::nullopt)).dump(2);
         io::write_file_atomically(recipe_file, recipe_text + "\n");
-        const double rss = cli_peak_rss(o_.cli, stem + ".obj", recipe_file, stem + "-smoothed.obj");
+        const double rss =
+            cli_peak_rss(o_.cli, stem + ".obj", recipe_file, stem + "-smoothed.obj", o_.threads);
         if (rss < 0)
         {
             failures_.push_back("meshfair-cli smooth failed on " + stem + ".obj");
@@ -482,7 +486,8 @@ int main(int argc, char** argv)
     app.add_flag("--skip-load", o.skip_load, "do not time the readers");
     CLI11_PARSE(app, argc, argv);
     if (o.threads > 0)
-        omp_set_num_threads(o.threads);
+        omp_set_num_threads(o.threads); // the triad
+    set_thread_count(o.threads);        // MeshFair's solver
     try
     {
         return Bench(std::move(o)).run();

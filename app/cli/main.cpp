@@ -23,6 +23,7 @@
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
+#include "core/solver/parallel.h"
 #include "core/topology/topology.h"
 
 namespace {
@@ -111,11 +112,13 @@ struct SmoothOptions
     std::optional<std::string> lambda;
     std::optional<double> tolerance;
     std::optional<std::string> method;
+    int threads = 0;
     bool quiet = false;
 };
 
 int run_smooth(const SmoothOptions& o)
 {
+    set_thread_count(o.threads);
     const auto t_read = Clock::now();
     io::ReadReport read_report;
     Mesh mesh = io::read_mesh(o.mesh, &read_report);
@@ -276,6 +279,11 @@ int main(int argc, char** argv)
     smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
     smooth_cmd->add_flag("-q,--quiet", smooth.quiet, "Print nothing on success");
+    smooth_cmd
+        ->add_option("--threads", smooth.threads,
+                     "Threads of the solver (default: every core); any count gives the same "
+                     "result, bit for bit")
+        ->check(CLI::Range(1, 1024));
 
     ConvertOptions convert;
     auto* convert_cmd =

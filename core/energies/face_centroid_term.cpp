@@ -3,6 +3,7 @@
 #include "core/energies/face_centroid_term.h"
 
 #include "core/geometry/face_geometry.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair {
 
@@ -32,27 +33,26 @@ void FaceCentroidTerm::set_targets(std::span<const Scalar> targets)
 
 Scalar FaceCentroidTerm::energy(std::span<const Scalar> x) const
 {
-    Scalar sum = 0;
-    for (const Index f : faces_)
-    {
+    const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index k) {
+        const Index f = faces_[k];
         const Vec3 c = face_centroid(*mesh_, x, f);
+        Scalar s = 0;
         for (int a = 0; a < 3; ++a)
         {
             const Scalar d = c[a] - target_[3 * f + a];
-            sum += d * d;
+            s += d * d;
         }
-    }
+        return s;
+    });
     return mu_ * sum;
 }
 
 Scalar FaceCentroidTerm::quadratic(std::span<const Scalar> dx) const
 {
-    Scalar sum = 0;
-    for (const Index f : faces_)
-    {
-        const Vec3 c = face_centroid(*mesh_, dx, f);
-        sum += c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
-    }
+    const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index k) {
+        const Vec3 c = face_centroid(*mesh_, dx, faces_[k]);
+        return c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+    });
     return mu_ * sum;
 }
 
@@ -72,14 +72,16 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
 void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                                std::span<Scalar> rhs)
 {
-    for (const Index f : faces_)
-    {
+    // Per face first (each face writes its own residual), then each vertex gathers.
+    parallel_for(static_cast<Index>(faces_.size()), [&](Index k) {
+        const Index f = faces_[k];
         const Vec3 c = face_centroid(*mesh_, x, f);
         const Scalar w = mu_ / mesh_->face_size(f);
         for (int a = 0; a < 3; ++a)
             residual_[3 * f + a] = w * (target_[3 * f + a] - c[a]);
-    }
-    for (const Index i : vertices)
+    });
+    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
+        const Index i = vertices[k];
         for (const Index c : topology_->corners_of_vertex(i))
         {
             const Index f = topology_->corner_face[c];
@@ -88,6 +90,7 @@ void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index>
             for (int a = 0; a < 3; ++a)
                 rhs[3 * i + a] += residual_[3 * f + a];
         }
+    });
 }
 
 } // namespace meshfair

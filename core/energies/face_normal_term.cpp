@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/face_normal_term.h"
 
+#include "core/solver/parallel.h"
+
 namespace meshfair {
 
 FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology,
@@ -18,19 +20,20 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology,
 
 Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar> normals) const
 {
-    Scalar sum = 0;
-    for (const Index f : faces_)
-    {
+    const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index n) {
+        const Index f = faces_[n];
         const Scalar* u = &normals[3 * f];
         const auto face = mesh_->face(f);
+        Scalar s = 0;
         for (size_t k = 0; k < face.size(); ++k)
         {
             const Scalar* p = &x[3 * face[k]];
             const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
             const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
-            sum += d * d;
+            s += d * d;
         }
-    }
+        return s;
+    });
     return mu_ * sum;
 }
 
@@ -60,8 +63,8 @@ void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const 
 void FaceNormalTerm::add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
                              std::span<const Index> vertices, std::span<Scalar> rhs) const
 {
-    for (const Index i : vertices)
-    {
+    parallel_for(static_cast<Index>(vertices.size()), [&](Index n) {
+        const Index i = vertices[n];
         const Scalar* xi = &x[3 * i];
         for (const Index c : topology_->corners_of_vertex(i))
         {
@@ -79,7 +82,7 @@ void FaceNormalTerm::add_rhs(std::span<const Scalar> x, std::span<const Scalar> 
             for (int k = 0; k < 3; ++k)
                 rhs[3 * i + k] += mu_ * s * u[k];
         }
-    }
+    });
 }
 
 void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const

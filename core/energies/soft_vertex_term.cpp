@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/soft_vertex_term.h"
 
+#include "core/solver/parallel.h"
+
 namespace meshfair {
 
 SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::span<const Index> vertices, Scalar mu,
@@ -25,22 +27,26 @@ void SoftVertexTerm::set_targets(std::span<const Scalar> targets)
 
 Scalar SoftVertexTerm::energy(std::span<const Scalar> x) const
 {
-    Scalar sum = 0;
-    for (const Index i : vertices_)
+    const Scalar sum = deterministic_sum(static_cast<Index>(vertices_.size()), [&](Index k) {
+        const Index i = vertices_[k];
+        Scalar s = 0;
         for (int a = 0; a < 3; ++a)
         {
             const Scalar d = x[3 * i + a] - target_[3 * i + a];
-            sum += d * d;
+            s += d * d;
         }
+        return s;
+    });
     return mu_ * sum;
 }
 
 Scalar SoftVertexTerm::quadratic(std::span<const Scalar> dx) const
 {
-    Scalar sum = 0;
-    for (const Index i : vertices_)
-        for (int a = 0; a < 3; ++a)
-            sum += dx[3 * i + a] * dx[3 * i + a];
+    const Scalar sum = deterministic_sum(static_cast<Index>(vertices_.size()), [&](Index k) {
+        const Index i = vertices_[k];
+        return dx[3 * i] * dx[3 * i] + dx[3 * i + 1] * dx[3 * i + 1] +
+               dx[3 * i + 2] * dx[3 * i + 2];
+    });
     return mu_ * sum;
 }
 
@@ -53,9 +59,11 @@ void SoftVertexTerm::add_diagonal(std::span<Scalar> diagonal) const
 void SoftVertexTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                              std::span<Scalar> rhs) const
 {
-    for (const Index i : vertices)
+    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
+        const Index i = vertices[k];
         for (int a = 0; a < 3; ++a)
             rhs[3 * i + a] += weight_[i] * (target_[3 * i + a] - x[3 * i + a]);
+    });
 }
 
 } // namespace meshfair

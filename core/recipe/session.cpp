@@ -6,6 +6,7 @@
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/solver/parallel.h"
 #include "core/solver/solver.h"
 
 namespace meshfair {
@@ -266,8 +267,8 @@ StepInfo Session::step(std::span<Scalar> x)
     if (joint_ && use_blocks)
         factor_blocks(); // the normals moved in the previous step
 
-    for (const Index i : free_)
-        std::fill_n(&system_.rhs[3 * i], 3, Scalar(0));
+    parallel_for(static_cast<Index>(free_.size()),
+                 [&](Index k) { std::fill_n(&system_.rhs[3 * free_[k]], 3, Scalar(0)); });
     edge_.add_rhs(x, free_, system_.rhs);
     if (soft_)
         soft_->add_rhs(x, free_, system_.rhs);

@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/solver/solver.h"
 
+#include "core/solver/parallel.h"
+
 namespace meshfair {
 
 void jacobi_displacements(const JacobiSystem& system, std::span<const Index> free_vertices,
@@ -9,24 +11,28 @@ void jacobi_displacements(const JacobiSystem& system, std::span<const Index> fre
 {
     if (use_blocks)
     {
-        for (const Index i : free_vertices)
+        parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
+            const Index i = free_vertices[k];
             cholesky3_solve(&system.factor[6 * i], &system.rhs[3 * i], &dx[3 * i]);
+        });
         return;
     }
-    for (const Index i : free_vertices)
-    {
+    parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
+        const Index i = free_vertices[k];
         const Scalar inv = Scalar(1) / system.diagonal[i];
         for (int a = 0; a < 3; ++a)
             dx[3 * i + a] = system.rhs[3 * i + a] * inv;
-    }
+    });
 }
 
 void gradient_displacements(const JacobiSystem& system, std::span<const Index> free_vertices,
                             std::span<Scalar> dx)
 {
-    for (const Index i : free_vertices)
+    parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
+        const Index i = free_vertices[k];
         for (int a = 0; a < 3; ++a)
             dx[3 * i + a] = system.rhs[3 * i + a];
+    });
 }
 
 Scalar optimal_step(Scalar rhs_dot_dx, Scalar quadratic)
@@ -37,19 +43,21 @@ Scalar optimal_step(Scalar rhs_dot_dx, Scalar quadratic)
 Scalar rhs_dot(const JacobiSystem& system, std::span<const Index> free_vertices,
                std::span<const Scalar> dx)
 {
-    Scalar sum = 0;
-    for (const Index i : free_vertices)
-        for (int a = 0; a < 3; ++a)
-            sum += system.rhs[3 * i + a] * dx[3 * i + a];
-    return sum;
+    return deterministic_sum(static_cast<Index>(free_vertices.size()), [&](Index k) {
+        const Index i = free_vertices[k];
+        return system.rhs[3 * i] * dx[3 * i] + system.rhs[3 * i + 1] * dx[3 * i + 1] +
+               system.rhs[3 * i + 2] * dx[3 * i + 2];
+    });
 }
 
 void apply_displacements(std::span<const Index> free_vertices, std::span<const Scalar> dx,
                          Scalar lambda, std::span<Scalar> x)
 {
-    for (const Index i : free_vertices)
+    parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
+        const Index i = free_vertices[k];
         for (int a = 0; a < 3; ++a)
             x[3 * i + a] += lambda * dx[3 * i + a];
+    });
 }
 
 bool converged(Scalar before, Scalar after, Scalar tolerance)

@@ -348,7 +348,10 @@ Result run(const std::vector<std::string>& argv, const fs::path& log_dir, const 
 
 std::vector<std::string> save_args(const fs::path& in, const fs::path& out)
 {
-    return {cli_path(), "smooth", in.string(), "-o", out.string(), "--iterations", "0", "-q"};
+    // One thread: every run must make the same system calls in the same order, and
+    // worker threads interleave theirs (futex, rseq) differently each time.
+    return {cli_path(),     "smooth", in.string(), "-o",        out.string(),
+            "--iterations", "0",      "-q",        "--threads", "1"};
 }
 
 // LeakSanitizer cannot run under ptrace; in the sanitizer build the traced CLI runs

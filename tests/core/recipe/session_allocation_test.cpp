@@ -2,7 +2,9 @@
 // Copyright 2026 the MeshFair authors.
 //
 // Replaces the global allocation functions of the test program with counting ones, so a
-// test can assert that a region of code allocates nothing.
+// test can assert that a region of code allocates nothing: C++'s operator new and, outside
+// the sanitizer build (where AddressSanitizer owns malloc), the C library's malloc family
+// too, which is what the OpenMP runtime and every other library call.
 #include <doctest/doctest.h>
 
 #include <atomic>
@@ -10,6 +12,7 @@
 #include <new>
 
 #include "core/recipe/session.h"
+#include "core/solver/parallel.h"
 #include "tests/helpers.h"
 
 namespace {
@@ -18,9 +21,46 @@ std::atomic<long> g_allocations{0};
 
 } // namespace
 
-void* operator new(std::size_t size)
+#if defined(__SANITIZE_ADDRESS__)
+#define MESHFAIR_COUNT_MALLOC 0
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define MESHFAIR_COUNT_MALLOC 0
+#endif
+#endif
+#ifndef MESHFAIR_COUNT_MALLOC
+#define MESHFAIR_COUNT_MALLOC 1
+#endif
+
+#if MESHFAIR_COUNT_MALLOC
+// glibc's own entry points; defining malloc here interposes it for every shared library.
+extern "C" void* __libc_malloc(std::size_t);
+extern "C" void* __libc_calloc(std::size_t, std::size_t);
+extern "C" void* __libc_realloc(void*, std::size_t);
+
+extern "C" void* malloc(std::size_t size)
 {
     g_allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_malloc(size);
+}
+
+extern "C" void* calloc(std::size_t count, std::size_t size)
+{
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_calloc(count, size);
+}
+
+extern "C" void* realloc(void* p, std::size_t size)
+{
+    g_allocations.fetch_add(1, std::memory_order_relaxed);
+    return __libc_realloc(p, size);
+}
+#endif
+
+void* operator new(std::size_t size)
+{
+    if (!MESHFAIR_COUNT_MALLOC) // else malloc counts it
+        g_allocations.fetch_add(1, std::memory_order_relaxed);
     if (void* p = std::malloc(size == 0 ? 1 : size))
         return p;
     throw std::bad_alloc();
@@ -91,9 +131,47 @@ TEST_SUITE("Session")
                 CHECK(g_allocations.load() == before);
                 CHECK(total > 0);
             }
-        // The counter itself works: a vector allocates.
+        // The counter itself works: a vector allocates, and so does the C library.
         const long before = g_allocations.load();
         std::vector<int> v(10);
         CHECK(g_allocations.load() > before);
+        if (MESHFAIR_COUNT_MALLOC)
+        {
+            const long c_before = g_allocations.load();
+            void* volatile p = std::malloc(100);
+            std::free(p);
+            CHECK(g_allocations.load() > c_before);
+        }
+    }
+
+    TEST_CASE("a multi-threaded step and energy evaluation allocate nothing")
+    {
+        // Large enough for every loop to run on several threads (kParallelThreshold).
+        Mesh m = test::icosphere(6);
+        REQUIRE(m.vertex_count() > 4 * kParallelThreshold);
+        test::perturb(m, 0.003, 9);
+        const Topology t = build_topology(m);
+        Recipe r;
+        r.soft = SoftVertices{{true, {}}, 0.1, {}};
+        r.centroid = CentroidConstraints{{true, {}}, 1.0, {}, CentroidDenominator::Paper};
+        r.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}};
+        for (const bool optimal : {false, true})
+        {
+            CAPTURE(optimal);
+            r.optimal_step = optimal;
+            set_thread_count(2);
+            Mesh x = m;
+            Session session(x, t, r);
+            session.step(x.positions); // warm-up: the OpenMP runtime starts its threads
+            session.energy(x.positions);
+            const long before = g_allocations.load();
+            for (int k = 0; k < 5; ++k)
+            {
+                session.step(x.positions);
+                session.energy(x.positions);
+            }
+            CHECK(g_allocations.load() == before);
+            set_thread_count(0);
+        }
     }
 }

@@ -1,0 +1,152 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/solver/parallel.h"
+
+#include <doctest/doctest.h>
+#include <omp.h>
+
+#include <cstring>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "core/recipe/session.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+
+namespace {
+
+// Restores the default thread count when a test case ends, whatever happens.
+struct ThreadCountGuard
+{
+    ~ThreadCountGuard() { set_thread_count(0); }
+};
+
+bool same_bits(const std::vector<Scalar>& a, const std::vector<Scalar>& b)
+{
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Scalar)) == 0;
+}
+
+struct Run
+{
+    std::vector<Scalar> positions;
+    std::vector<Scalar> energies; // total after each step
+    std::vector<Scalar> lambdas;
+};
+
+Run run_steps(const Mesh& mesh, const Topology& topology, const Recipe& recipe, int threads)
+{
+    set_thread_count(threads);
+    Mesh x = mesh;
+    Session session(x, topology, recipe);
+    session.apply_hard_targets(x.positions);
+    Run r;
+    for (int k = 0; k < 4; ++k)
+    {
+        r.lambdas.push_back(session.step(x.positions).lambda);
+        r.energies.push_back(session.energy(x.positions).total());
+    }
+    r.positions = x.positions;
+    return r;
+}
+
+} // namespace
+
+TEST_SUITE("Parallel")
+{
+    TEST_CASE("parallel_for really uses the threads it is given, and no more")
+    {
+        ThreadCountGuard guard;
+        const Index n = 16 * kParallelThreshold;
+        std::vector<int> who(static_cast<size_t>(n), -1);
+        for (const int threads : {1, 2, 3})
+        {
+            CAPTURE(threads);
+            set_thread_count(threads);
+            CHECK(thread_count() == threads);
+            parallel_for(n, [&](Index k) { who[static_cast<size_t>(k)] = omp_get_thread_num(); });
+            const std::set<int> ids(who.begin(), who.end());
+            CHECK(ids.size() == static_cast<size_t>(threads));
+            // Static chunks: each thread's indices are one contiguous range.
+            for (size_t k = 1; k < who.size(); ++k)
+                CHECK(who[k] >= who[k - 1]);
+        }
+        // Short loops stay on the calling thread.
+        set_thread_count(2);
+        std::vector<int> small(100, -1);
+        parallel_for(100, [&](Index k) { small[static_cast<size_t>(k)] = omp_get_thread_num(); });
+        CHECK(std::set<int>(small.begin(), small.end()) == std::set<int>{0});
+    }
+
+    TEST_CASE("deterministic_sum: the same bits for any thread count, close to the exact sum")
+    {
+        ThreadCountGuard guard;
+        std::mt19937_64 random(5);
+        std::uniform_real_distribution<double> value(-1e3, 1e3);
+        for (const Index n : {0, 1, 4095, 4097, 100'000, 5'000'001})
+        {
+            CAPTURE(n);
+            std::vector<double> data(static_cast<size_t>(n));
+            for (double& d : data)
+                d = value(random) * value(random);
+            long double exact = 0;
+            for (const double d : data)
+                exact += d;
+            std::vector<Scalar> sums;
+            for (const int threads : {1, 2, 3, 4})
+            {
+                set_thread_count(threads);
+                sums.push_back(
+                    deterministic_sum(n, [&](Index k) { return data[static_cast<size_t>(k)]; }));
+            }
+            for (const Scalar s : sums)
+                CHECK(std::memcmp(&s, &sums[0], sizeof s) == 0);
+            CHECK(static_cast<double>(std::abs(sums[0] - exact)) <=
+                  1e-9 * (1 + std::abs(static_cast<double>(exact))));
+        }
+    }
+
+    TEST_CASE("the solver gives the same bits for 1, 2, 3 and 4 threads")
+    {
+        ThreadCountGuard guard;
+        Mesh m = test::icosphere(6); // 40,962 vertices: every loop runs in parallel
+        test::perturb(m, 0.003, 11);
+        const Topology t = build_topology(m);
+        const Index nv = m.vertex_count(), nf = m.face_count();
+        Recipe plain;
+        Recipe combined;
+        combined.soft = SoftVertices{{true, {}}, 0.1, {}};
+        combined.centroid = CentroidConstraints{{true, {}}, 1.0, {}, CentroidDenominator::Paper};
+        combined.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Smoothed, {}};
+        combined.normal_smoothing = NormalSmoothing{2, 0.5, {}, {}};
+        Recipe optimal = combined;
+        optimal.optimal_step = true;
+        Recipe joint = optimal;
+        joint.joint = Joint{1.0};
+        Recipe region = combined;
+        region.region = Region{test::all_indices(nv / 3), {}};
+        region.hard = HardVertices{{0, 1}, {{0, 0, 1.2}, {0.1, 0.2, 0.9}}};
+        Recipe descent = plain;
+        descent.method = Method::GradientDescent;
+        descent.lambda = 0.05;
+        const std::pair<const char*, const Recipe*> recipes[] = {
+            {"plain", &plain}, {"combined", &combined}, {"optimal", &optimal},
+            {"joint", &joint}, {"region", &region},     {"gradient descent", &descent}};
+        REQUIRE(nf > kParallelThreshold);
+        for (const auto& [name, recipe] : recipes)
+        {
+            CAPTURE(name);
+            const Run one = run_steps(m, t, *recipe, 1);
+            CHECK(!same_bits(one.positions, m.positions)); // something moved
+            for (const int threads : {2, 3, 4})
+            {
+                CAPTURE(threads);
+                const Run many = run_steps(m, t, *recipe, threads);
+                CHECK(same_bits(many.positions, one.positions));
+                CHECK(same_bits(many.energies, one.energies));
+                CHECK(same_bits(many.lambdas, one.lambdas));
+            }
+        }
+    }
+}
