@@ -25,6 +25,7 @@
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
 #include "core/topology/topology.h"
+#include "core/topology/vertex_order.h"
 
 namespace {
 
@@ -151,12 +152,10 @@ int run_smooth(const SmoothOptions& o)
         recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
 
     const auto t_setup = Clock::now();
-    const Topology topology = build_topology(mesh);
-    // The session checks the recipe against the mesh; name the recipe file in its errors.
-    std::optional<Session> built;
+    // Check the recipe in the file's numbering, so errors name the file's indices.
     try
     {
-        built.emplace(mesh, topology, recipe);
+        check_recipe(recipe, mesh);
     }
     catch (const RecipeError& e)
     {
@@ -166,12 +165,18 @@ int run_smooth(const SmoothOptions& o)
     {
         throw InvalidInputError("'" + o.mesh + "': " + e.what()); // name the mesh at fault
     }
-    Session& session = *built;
-    session.apply_hard_targets(mesh.positions);
+    // Solve in the locality numbering (neighbours near each other in memory); the output,
+    // the recipe and the report keep the file's numbering.
+    const LocalityOrder order = locality_order(mesh);
+    Mesh work = reorder_mesh(mesh, order);
+    const Topology topology = build_topology(work);
+    Session session(work, topology, renumber_recipe(recipe, order.vertex_index, order.face_index));
+    session.apply_hard_targets(work.positions);
     const double setup_seconds = seconds_since(t_setup);
 
     const auto t_solve = Clock::now();
-    const SmoothResult result = run(session, mesh.positions);
+    const SmoothResult result = run(session, work.positions);
+    positions_to_file_order(work.positions, order, mesh.positions);
     const double solve_seconds = seconds_since(t_solve);
     validate_mesh(mesh); // never write garbage: every coordinate is still finite
 

@@ -192,4 +192,46 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
     }
 }
 
+Recipe renumber_recipe(const Recipe& recipe, std::span<const Index> new_vertex,
+                       std::span<const Index> new_face)
+{
+    const auto map = [](std::vector<Index>& items, std::span<const Index> to) {
+        for (Index& k : items)
+            k = to[static_cast<size_t>(k)];
+    };
+    // With "all", per-element lists follow the elements' own order: permute them.
+    const auto permute = [](std::vector<Vec3>& items, std::span<const Index> to) {
+        std::vector<Vec3> moved(items.size());
+        for (size_t k = 0; k < items.size(); ++k)
+            moved[static_cast<size_t>(to[k])] = items[k];
+        items = std::move(moved);
+    };
+    Recipe r = recipe;
+    if (r.soft && r.soft->vertices.all && !r.soft->targets.empty())
+        permute(r.soft->targets, new_vertex);
+    if (r.centroid && r.centroid->faces.all && !r.centroid->targets.empty())
+        permute(r.centroid->targets, new_face);
+    if (r.normal && r.normal->faces.all && !r.normal->normals.empty())
+        permute(r.normal->normals, new_face);
+    if (r.region)
+    {
+        map(r.region->vertices, new_vertex);
+        map(r.region->faces, new_face);
+    }
+    if (r.hard)
+        map(r.hard->vertices, new_vertex);
+    if (r.soft)
+        map(r.soft->vertices.indices, new_vertex);
+    if (r.centroid)
+        map(r.centroid->faces.indices, new_face);
+    if (r.normal)
+        map(r.normal->faces.indices, new_face);
+    if (r.normal_smoothing)
+    {
+        map(r.normal_smoothing->hard.faces, new_face);
+        map(r.normal_smoothing->soft.faces, new_face);
+    }
+    return r;
+}
+
 } // namespace meshfair

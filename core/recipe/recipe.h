@@ -3,6 +3,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -124,5 +125,12 @@ struct Recipe
 //! \throw RecipeError naming the offending key, e.g. "soft.vertices[3]"; InvalidInputError
 //! naming the vertex when a mesh coordinate is out of range.
 void check_recipe(const Recipe& recipe, const Mesh& mesh);
+
+//! \brief The same recipe for the mesh renumbered so that file vertex i is vertex
+//! new_vertex[i] and file face f is face new_face[f] (see LocalityOrder): every index is
+//! mapped, every list keeps its order, so per-element targets and normals still match.
+//! \pre check_recipe(recipe, mesh) holds for the file's mesh.
+Recipe renumber_recipe(const Recipe& recipe, std::span<const Index> new_vertex,
+                       std::span<const Index> new_face);
 
 } // namespace meshfair

@@ -2,11 +2,46 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/topology/vertex_order.h"
 
+#include <algorithm>
+
 namespace meshfair {
 
-std::vector<Index> breadth_first_order(const Topology& topology)
+namespace {
+
+// The corners at each vertex (CSR, in face order) and the face of each corner: what a
+// breadth-first visit needs to find a vertex's neighbours without a Topology.
+struct VertexCorners
 {
-    const Index n = topology.vertex_count;
+    std::vector<Index> offsets, corners, corner_face;
+};
+
+VertexCorners vertex_corners(const Mesh& mesh)
+{
+    VertexCorners vc;
+    const auto n = static_cast<size_t>(mesh.vertex_count());
+    vc.offsets.assign(n + 1, 0);
+    for (const Index i : mesh.face_vertices)
+        ++vc.offsets[static_cast<size_t>(i) + 1];
+    for (size_t i = 0; i < n; ++i)
+        vc.offsets[i + 1] += vc.offsets[i];
+    vc.corners.resize(mesh.face_vertices.size());
+    vc.corner_face.resize(mesh.face_vertices.size());
+    std::vector<Index> fill(vc.offsets.begin(), vc.offsets.end() - 1);
+    for (Index f = 0; f < mesh.face_count(); ++f)
+        for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
+        {
+            vc.corner_face[c] = f;
+            vc.corners[fill[mesh.face_vertices[c]]++] = c;
+        }
+    return vc;
+}
+
+} // namespace
+
+std::vector<Index> breadth_first_order(const Mesh& mesh)
+{
+    const Index n = mesh.vertex_count();
+    const VertexCorners vc = vertex_corners(mesh);
     std::vector<Index> order;
     order.reserve(static_cast<size_t>(n));
     std::vector<char> seen(static_cast<size_t>(n), 0);
@@ -20,12 +55,21 @@ std::vector<Index> breadth_first_order(const Topology& topology)
         size_t head = order.size();
         order.push_back(root);
         for (; head < order.size(); ++head)
-            for (const Index j : topology.neighbors(order[head]))
-                if (!seen[j])
-                {
-                    seen[j] = 1;
-                    order.push_back(j);
-                }
+        {
+            const Index i = order[head];
+            for (Index k = vc.offsets[i]; k < vc.offsets[i + 1]; ++k)
+            {
+                const Index c = vc.corners[k], f = vc.corner_face[c];
+                const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
+                for (const Index j : {mesh.face_vertices[c == first ? last : c - 1],
+                                      mesh.face_vertices[c == last ? first : c + 1]})
+                    if (!seen[j])
+                    {
+                        seen[j] = 1;
+                        order.push_back(j);
+                    }
+            }
+        }
     }
     return order;
 }
@@ -51,6 +95,59 @@ Mesh renumber_vertices(const Mesh& mesh, std::span<const Index> order)
     for (size_t c = 0; c < mesh.face_vertices.size(); ++c)
         out.face_vertices[c] = new_index[static_cast<size_t>(mesh.face_vertices[c])];
     return out;
+}
+
+LocalityOrder locality_order(const Mesh& mesh)
+{
+    LocalityOrder o;
+    o.vertex_order = breadth_first_order(mesh);
+    o.vertex_index = inverse_permutation(o.vertex_order);
+    // Counting sort of the faces by their first vertex in the new order (stable).
+    const Index nv = mesh.vertex_count(), nf = mesh.face_count();
+    std::vector<Index> key(static_cast<size_t>(nf));
+    std::vector<Index> start(static_cast<size_t>(nv) + 1, 0);
+    for (Index f = 0; f < nf; ++f)
+    {
+        Index first = nv;
+        for (const Index i : mesh.face(f))
+            first = std::min(first, o.vertex_index[i]);
+        key[f] = first;
+        ++start[static_cast<size_t>(first) + 1];
+    }
+    for (Index k = 0; k < nv; ++k)
+        start[k + 1] += start[k];
+    o.face_order.resize(static_cast<size_t>(nf));
+    for (Index f = 0; f < nf; ++f)
+        o.face_order[start[key[f]]++] = f;
+    o.face_index = inverse_permutation(o.face_order);
+    return o;
+}
+
+Mesh reorder_mesh(const Mesh& mesh, const LocalityOrder& order)
+{
+    Mesh out;
+    out.positions.resize(mesh.positions.size());
+    for (size_t k = 0; k < order.vertex_order.size(); ++k)
+        for (size_t a = 0; a < 3; ++a)
+            out.positions[3 * k + a] =
+                mesh.positions[3 * static_cast<size_t>(order.vertex_order[k]) + a];
+    out.face_offsets.reserve(mesh.face_offsets.size());
+    out.face_vertices.reserve(mesh.face_vertices.size());
+    for (const Index f : order.face_order)
+    {
+        for (const Index i : mesh.face(f))
+            out.face_vertices.push_back(order.vertex_index[i]);
+        out.face_offsets.push_back(static_cast<Index>(out.face_vertices.size()));
+    }
+    return out;
+}
+
+void positions_to_file_order(std::span<const Scalar> internal, const LocalityOrder& order,
+                             std::span<Scalar> file)
+{
+    for (size_t k = 0; k < order.vertex_order.size(); ++k)
+        for (size_t a = 0; a < 3; ++a)
+            file[3 * static_cast<size_t>(order.vertex_order[k]) + a] = internal[3 * k + a];
 }
 
 } // namespace meshfair

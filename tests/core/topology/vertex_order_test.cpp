@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/io/io.h"
+#include "core/topology/topology.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;
@@ -36,7 +37,7 @@ std::set<std::pair<Index, Index>> edge_set(const Topology& t, const std::vector<
 void check_order(const Mesh& mesh)
 {
     const Topology t = build_topology(mesh);
-    const std::vector<Index> order = breadth_first_order(t);
+    const std::vector<Index> order = breadth_first_order(mesh);
     REQUIRE(is_permutation_of_range(order, mesh.vertex_count()));
     if (mesh.vertex_count() > 0)
         CHECK(order[0] == 0);
@@ -87,11 +88,11 @@ TEST_CASE("breadth_first_order and renumber_vertices on the synthetic meshes")
 TEST_CASE("breadth_first_order: components are contiguous, each from its lowest vertex")
 {
     const Mesh m = two_components(); // vertices 0-2 and 3-5
-    const std::vector<Index> order = breadth_first_order(build_topology(m));
+    const std::vector<Index> order = breadth_first_order(m);
     REQUIRE(order.size() == 6);
     CHECK(std::set<Index>(order.begin(), order.begin() + 3) == std::set<Index>{0, 1, 2});
     CHECK(order[3] == 3);
-    const std::vector<Index> isolated = breadth_first_order(build_topology(with_isolated_vertex()));
+    const std::vector<Index> isolated = breadth_first_order(with_isolated_vertex());
     CHECK(isolated.back() == 3); // the unused vertex is a component of its own
 }
 
@@ -113,11 +114,42 @@ TEST_CASE("breadth_first_order narrows the neighbour band of a shuffled grid")
         return widest;
     };
     REQUIRE(bandwidth(shuffled) > 1000);
-    const Mesh ordered = renumber_vertices(shuffled, breadth_first_order(build_topology(shuffled)));
+    const Mesh ordered = renumber_vertices(shuffled, breadth_first_order(shuffled));
     CHECK(bandwidth(ordered) < 3 * 41);
 }
 
 TEST_CASE("breadth_first_order and renumbering on the bunny")
 {
     check_order(io::read_mesh((assets_dir() / "bunny.obj").string()));
+}
+
+TEST_CASE("locality_order: permutations, faces sorted by first vertex, exact round trip")
+{
+    for (const Mesh& m : {tetrahedron(), quad_cube(), open_grid(6, 4), nonmanifold_fan(),
+                          two_components(), with_isolated_vertex(), mixed_polygons(),
+                          io::read_mesh((assets_dir() / "bunny.obj").string())})
+    {
+        const LocalityOrder o = locality_order(m);
+        REQUIRE(is_permutation_of_range(o.vertex_order, m.vertex_count()));
+        REQUIRE(is_permutation_of_range(o.face_order, m.face_count()));
+        CHECK(o.vertex_index == inverse_permutation(o.vertex_order));
+        CHECK(o.face_index == inverse_permutation(o.face_order));
+        const Mesh w = reorder_mesh(m, o);
+        validate_mesh(w);
+        Index previous_key = 0;
+        for (Index g = 0; g < w.face_count(); ++g)
+        {
+            const auto face = w.face(g);
+            const auto file_face = m.face(o.face_order[g]);
+            REQUIRE(face.size() == file_face.size());
+            for (size_t c = 0; c < face.size(); ++c)
+                CHECK(face[c] == o.vertex_index[file_face[c]]); // same corners, same order
+            const Index key = *std::min_element(face.begin(), face.end());
+            CHECK(key >= previous_key);
+            previous_key = key;
+        }
+        std::vector<Scalar> back(m.positions.size(), -1);
+        positions_to_file_order(w.positions, o, back);
+        CHECK(back == m.positions);
+    }
 }
