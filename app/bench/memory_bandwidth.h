@@ -17,10 +17,13 @@ class TriadBandwidth
 public:
     //! \param elements per array; 3 arrays of doubles are allocated and first-touched.
     explicit TriadBandwidth(std::size_t elements);
-    //! One timed triad; returns bytes per second.
-    double measure();
+    //! The best of `trials` timed triads (STREAM's rule: on a shared machine the best
+    //! run is the one least disturbed), in bytes per second.
+    double measure(int trials = 5);
 
 private:
+    double triad();
+
     std::size_t n_;
     std::unique_ptr<double[]> a_, b_, c_; // not value-initialized: first touch below
 };

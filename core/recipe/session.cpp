@@ -202,7 +202,22 @@ void Session::precompute()
         system_.factor.assign(6 * static_cast<size_t>(nv), 0);
         factor_blocks();
     }
-    dx_.assign(3 * static_cast<size_t>(nv), 0);
+    // The fused step needs no right-hand side nor displacement arrays, only an output.
+    // Kept positions stay (a new recipe on the same mesh).
+    if (fused())
+    {
+        system_.rhs = {};
+        dx_ = {};
+        if (x_.empty())
+            next_.assign(3 * static_cast<size_t>(nv), 0);
+        else
+            next_ = x_;
+    }
+    else
+    {
+        dx_.assign(3 * static_cast<size_t>(nv), 0);
+        next_ = {};
+    }
 }
 
 void Session::factor_blocks()
@@ -257,12 +272,58 @@ const std::vector<Index>& Session::centroid_faces() const
     return centroid_ ? centroid_->faces() : none;
 }
 
-StepInfo Session::step(std::span<Scalar> x)
+void Session::check_size(std::span<const Scalar> x, const char* what) const
 {
     if (x.size() != 3 * static_cast<size_t>(mesh_->vertex_count()))
-        throw SolverError("Session::step: positions hold " + std::to_string(x.size()) +
-                          " values, the mesh needs " +
+        throw SolverError(std::string("Session::") + what + ": positions hold " +
+                          std::to_string(x.size()) + " values, the mesh needs " +
                           std::to_string(3 * static_cast<size_t>(mesh_->vertex_count())));
+}
+
+bool Session::fused() const
+{
+    return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !centroid_ && !normal_;
+}
+
+void Session::set_positions(std::span<const Scalar> x)
+{
+    check_size(x, "set_positions");
+    has_positions_ = true;
+    x_.assign(x.begin(), x.end());
+    if (fused())
+        next_.assign(x.begin(), x.end()); // the vertices a step never writes agree
+}
+
+StepInfo Session::step()
+{
+    if (!has_positions_)
+        throw SolverError("Session::step: no positions (call set_positions first)");
+    if (!fused())
+        return general_step(x_);
+    fused_isotropic_step(
+        *topology_, system_.diagonal, soft_ ? soft_->weights() : std::span<const Scalar>(),
+        soft_ ? soft_->targets() : std::span<const Scalar>(), free_, recipe_.lambda, x_, next_);
+    std::swap(x_, next_);
+    return StepInfo{recipe_.lambda};
+}
+
+StepInfo Session::step(std::span<Scalar> x)
+{
+    check_size(x, "step");
+    if (!fused())
+        return general_step(x);
+    fused_isotropic_step(
+        *topology_, system_.diagonal, soft_ ? soft_->weights() : std::span<const Scalar>(),
+        soft_ ? soft_->targets() : std::span<const Scalar>(), free_, recipe_.lambda, x, next_);
+    parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
+        const Index i = free_[k];
+        std::copy_n(&next_[3 * i], 3, &x[3 * i]);
+    });
+    return StepInfo{recipe_.lambda};
+}
+
+StepInfo Session::general_step(std::span<Scalar> x)
+{
     const bool use_blocks = !system_.block.empty();
     if (joint_ && use_blocks)
         factor_blocks(); // the normals moved in the previous step
@@ -325,14 +386,15 @@ SmoothResult run(Session& session, std::span<Scalar> x,
                  const std::function<void(int, const TermEnergies&)>& on_step)
 {
     SmoothResult result;
-    result.energies.push_back(session.energy(x));
+    session.set_positions(x);
+    result.energies.push_back(session.energy());
     if (on_step)
         on_step(0, result.energies.back());
     const Recipe& recipe = session.recipe();
     for (int k = 0; k < recipe.iterations; ++k)
     {
-        result.lambdas.push_back(session.step(x).lambda);
-        result.energies.push_back(session.energy(x));
+        result.lambdas.push_back(session.step().lambda);
+        result.energies.push_back(session.energy());
         ++result.iterations;
         if (on_step)
             on_step(result.iterations, result.energies.back());
@@ -342,6 +404,8 @@ SmoothResult run(Session& session, std::span<Scalar> x,
             break;
         }
     }
+    const std::span<const Scalar> kept = session.positions();
+    std::copy(kept.begin(), kept.end(), x.begin());
     return result;
 }
 

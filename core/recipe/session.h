@@ -82,6 +82,18 @@ public:
 
     TermEnergies energy(std::span<const Scalar> x) const;
 
+    //! \brief Positions kept by the session, for callers that step many times (run(),
+    //! the editor): step() then works on them without copying, alternating two buffers
+    //! when the step is fused (see fused_isotropic_step). Allocates; step() does not.
+    //! \throw SolverError when x does not hold 3 #V values.
+    void set_positions(std::span<const Scalar> x);
+    //! The kept positions (empty before set_positions).
+    std::span<const Scalar> positions() const { return x_; }
+    //! One step on the kept positions; the same values as step(x).
+    StepInfo step();
+    //! The energy of the kept positions.
+    TermEnergies energy() const { return energy(x_); }
+
     std::span<const Index> free_vertices() const { return free_; }
     const std::vector<Index>& soft_vertices() const;
     const std::vector<Index>& centroid_faces() const;
@@ -95,6 +107,11 @@ public:
 private:
     void precompute();
     void factor_blocks();
+    //! True when the step is E_L (+ E_S) with a fixed lambda: fused_isotropic_step.
+    bool fused() const;
+    //! The general step, in place on x.
+    StepInfo general_step(std::span<Scalar> x);
+    void check_size(std::span<const Scalar> x, const char* what) const;
 
     const Mesh* mesh_;
     const Topology* topology_;
@@ -117,6 +134,9 @@ private:
     JacobiSystem system_;
     std::vector<Scalar> dx_;        //!< 3 #V, zero on non-free vertices
     std::vector<Scalar> scratch_u_; //!< 3 #F
+    std::vector<Scalar> x_;         //!< kept positions (set_positions)
+    std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
+    bool has_positions_ = false;    //!< set_positions was called (x_ may be empty: #V = 0)
 };
 
 //! The outcome of a whole run.

@@ -155,10 +155,13 @@ TEST_SUITE("Session")
         r.soft = SoftVertices{{true, {}}, 0.1, {}};
         r.centroid = CentroidConstraints{{true, {}}, 1.0, {}, CentroidDenominator::Paper};
         r.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}};
-        for (const bool optimal : {false, true})
+        Recipe plain; // the fused step
+        for (const int variant : {0, 1, 2})
         {
-            CAPTURE(optimal);
-            r.optimal_step = optimal;
+            CAPTURE(variant);
+            r.optimal_step = variant == 1;
+            if (variant == 2)
+                r = plain;
             set_thread_count(2);
             Mesh x = m;
             Session session(x, t, r);
@@ -171,6 +174,16 @@ TEST_SUITE("Session")
                 session.energy(x.positions);
             }
             CHECK(g_allocations.load() == before);
+            // The same with the session's kept positions (what run() and the editor use).
+            session.set_positions(x.positions);
+            session.step();
+            const long kept_before = g_allocations.load();
+            for (int k = 0; k < 5; ++k)
+            {
+                session.step();
+                session.energy();
+            }
+            CHECK(g_allocations.load() == kept_before);
             set_thread_count(0);
         }
     }
