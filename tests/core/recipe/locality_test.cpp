@@ -115,8 +115,11 @@ TEST_SUITE("Session")
 
         const std::pair<const char*, const Recipe*> recipes[] = {
             {"lists", &lists}, {"all", &all}, {"smoothed", &smoothed}};
-        for (const auto& [name, recipe] : recipes)
+        for (const auto& entry : recipes)
         {
+            // (Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.)
+            const char* name = entry.first;
+            const Recipe* recipe = entry.second;
             CAPTURE(name);
             const std::vector<Scalar> file = smooth_in_file_order(m, *recipe);
             const std::vector<Scalar> local = smooth_in_locality_order(m, *recipe);

@@ -138,8 +138,11 @@ TEST_SUITE("Parallel")
             {"plain", &plain}, {"combined", &combined}, {"optimal", &optimal},
             {"joint", &joint}, {"region", &region},     {"gradient descent", &descent}};
         REQUIRE(nf > kParallelThreshold);
-        for (const auto& [name, recipe] : recipes)
+        for (const auto& entry : recipes)
         {
+            // (Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.)
+            const char* name = entry.first;
+            const Recipe* recipe = entry.second;
             CAPTURE(name);
             const Run one = run_steps(m, t, *recipe, 1);
             CHECK(!same_bits(one.positions, m.positions)); // something moved
