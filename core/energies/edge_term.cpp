@@ -26,22 +26,8 @@ void EdgeTerm::add_diagonal(std::span<Scalar> diagonal) const
 void EdgeTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                        std::span<Scalar> rhs) const
 {
-    // Differences first, then the sum: meshes far from the origin (scans in
-    // millimetres at 10^3) would lose digits to sum_j x_j - n_i x_i.
-    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
-        const Index i = vertices[k];
-        const Scalar x0 = x[3 * i], x1 = x[3 * i + 1], x2 = x[3 * i + 2];
-        Scalar s0 = 0, s1 = 0, s2 = 0;
-        for (const Index j : topology_->neighbors(i))
-        {
-            s0 += x[3 * j] - x0;
-            s1 += x[3 * j + 1] - x1;
-            s2 += x[3 * j + 2] - x2;
-        }
-        rhs[3 * i] += s0;
-        rhs[3 * i + 1] += s1;
-        rhs[3 * i + 2] += s2;
-    });
+    parallel_for(static_cast<Index>(vertices.size()),
+                 [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
 } // namespace meshfair

@@ -32,6 +32,26 @@ public:
     //! rhs_i += sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
+    //! The same for one vertex: r[0..2] += sum_{j in V(i)} (x_j - x_i). Inline, for the
+    //! fused step, which adds every term's part of r_i in one sweep.
+    void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
+    {
+        // Differences first, then the sum: meshes far from the origin (scans in
+        // millimetres at 10^3) would lose digits to sum_j x_j - n_i x_i.
+        const Scalar x0 = x[3 * i], x1 = x[3 * i + 1], x2 = x[3 * i + 2];
+        const Index* neighbors = topology_->vertex_neighbors.data();
+        Scalar s0 = 0, s1 = 0, s2 = 0;
+        for (Index n = topology_->vertex_offsets[i]; n < topology_->vertex_offsets[i + 1]; ++n)
+        {
+            const Scalar* q = x + 3 * neighbors[n];
+            s0 += q[0] - x0;
+            s1 += q[1] - x1;
+            s2 += q[2] - x2;
+        }
+        r[0] += s0;
+        r[1] += s1;
+        r[2] += s2;
+    }
 
 private:
     const Topology* topology_;

@@ -73,23 +73,19 @@ void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index>
                                std::span<Scalar> rhs)
 {
     // Per face first (each face writes its own residual), then each vertex gathers.
+    update_residuals(x);
+    parallel_for(static_cast<Index>(vertices.size()),
+                 [&](Index k) { add_vertex_rhs(vertices[k], &rhs[3 * vertices[k]]); });
+}
+
+void FaceCentroidTerm::update_residuals(std::span<const Scalar> x)
+{
     parallel_for(static_cast<Index>(faces_.size()), [&](Index k) {
         const Index f = faces_[k];
         const Vec3 c = face_centroid(*mesh_, x, f);
         const Scalar w = mu_ / mesh_->face_size(f);
         for (int a = 0; a < 3; ++a)
             residual_[3 * f + a] = w * (target_[3 * f + a] - c[a]);
-    });
-    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
-        const Index i = vertices[k];
-        for (const Index c : topology_->corners_of_vertex(i))
-        {
-            const Index f = topology_->corner_face[c];
-            if (!constrained_[f])
-                continue;
-            for (int a = 0; a < 3; ++a)
-                rhs[3 * i + a] += residual_[3 * f + a];
-        }
     });
 }
 

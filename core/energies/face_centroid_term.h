@@ -44,6 +44,20 @@ public:
     void add_diagonal(std::span<Scalar> diagonal) const;
     //! Not const: caches each constrained face's residual mu/n_f (x0_f - x_f) first.
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices, std::span<Scalar> rhs);
+    //! The two halves of add_rhs, for the fused step: a pass over the constrained faces
+    //! caching their residuals, then each vertex gathering those of its faces.
+    void update_residuals(std::span<const Scalar> x);
+    void add_vertex_rhs(Index i, Scalar* r) const
+    {
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            for (int a = 0; a < 3; ++a)
+                r[a] += residual_[3 * f + a];
+        }
+    }
 
 private:
     const Mesh* mesh_;

@@ -63,25 +63,8 @@ void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const 
 void FaceNormalTerm::add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
                              std::span<const Index> vertices, std::span<Scalar> rhs) const
 {
-    parallel_for(static_cast<Index>(vertices.size()), [&](Index n) {
-        const Index i = vertices[n];
-        const Scalar* xi = &x[3 * i];
-        for (const Index c : topology_->corners_of_vertex(i))
-        {
-            const Index f = topology_->corner_face[c];
-            if (!constrained_[f])
-                continue;
-            const auto [prev, next] = corner_neighbors(*mesh_, *topology_, c);
-            const Scalar* u = &normals[3 * f];
-            const Scalar* a = &x[3 * prev];
-            const Scalar* b = &x[3 * next];
-            // u u^T ((x_prev - x_i) + (x_next - x_i))
-            const Scalar s = u[0] * ((a[0] - xi[0]) + (b[0] - xi[0])) +
-                             u[1] * ((a[1] - xi[1]) + (b[1] - xi[1])) +
-                             u[2] * ((a[2] - xi[2]) + (b[2] - xi[2]));
-            for (int k = 0; k < 3; ++k)
-                rhs[3 * i + k] += mu_ * s * u[k];
-        }
+    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
+        add_vertex_rhs(vertices[k], x.data(), normals.data(), &rhs[3 * vertices[k]]);
     });
 }
 

@@ -43,6 +43,27 @@ public:
                    std::span<Scalar> block) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
                  std::span<const Index> vertices, std::span<Scalar> rhs) const;
+    //! One vertex's part, for the fused step: r += mu sum_{f in F_N(i)} u_f u_f^T
+    //! ((x_prev - x_i) + (x_next - x_i)), with prev and next i's neighbours in face f.
+    void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const
+    {
+        const Scalar* xi = &x[3 * i];
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            const auto [prev, next] = corner_neighbors(*mesh_, *topology_, c);
+            const Scalar* u = &normals[3 * f];
+            const Scalar* a = &x[3 * prev];
+            const Scalar* b = &x[3 * next];
+            const Scalar s = u[0] * ((a[0] - xi[0]) + (b[0] - xi[0])) +
+                             u[1] * ((a[1] - xi[1]) + (b[1] - xi[1])) +
+                             u[2] * ((a[2] - xi[2]) + (b[2] - xi[2]));
+            for (int k = 0; k < 3; ++k)
+                r[k] += mu_ * s * u[k];
+        }
+    }
     //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
     //! f's part of E_N is mu u_f^T M_f u_f (used by the joint update of u).
     void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;

@@ -59,11 +59,8 @@ void SoftVertexTerm::add_diagonal(std::span<Scalar> diagonal) const
 void SoftVertexTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                              std::span<Scalar> rhs) const
 {
-    parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
-        const Index i = vertices[k];
-        for (int a = 0; a < 3; ++a)
-            rhs[3 * i + a] += weight_[i] * (target_[3 * i + a] - x[3 * i + a]);
-    });
+    parallel_for(static_cast<Index>(vertices.size()),
+                 [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
 } // namespace meshfair

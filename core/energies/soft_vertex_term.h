@@ -37,6 +37,12 @@ public:
     void add_diagonal(std::span<Scalar> diagonal) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
+    //! One vertex's part: r[a] += w_i (t_i - x_i)[a] (w_i = 0 off the constrained set).
+    void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
+    {
+        for (int a = 0; a < 3; ++a)
+            r[a] += weight_[i] * (target_[3 * i + a] - x[3 * i + a]);
+    }
 
 private:
     Scalar mu_;

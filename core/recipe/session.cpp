@@ -282,7 +282,39 @@ void Session::check_size(std::span<const Scalar> x, const char* what) const
 
 bool Session::fused() const
 {
-    return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !centroid_ && !normal_;
+    return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !joint_;
+}
+
+void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
+{
+    if (centroid_)
+        centroid_->update_residuals(x);
+    const bool blocks = !system_.block.empty();
+    const Scalar lambda = recipe_.lambda;
+    const Scalar* xp = x.data();
+    Scalar* yp = y.data();
+    parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
+        const Index i = free_[k];
+        Scalar r[3] = {0, 0, 0};
+        edge_.add_vertex_rhs(i, xp, r);
+        if (soft_)
+            soft_->add_vertex_rhs(i, xp, r);
+        if (centroid_)
+            centroid_->add_vertex_rhs(i, r);
+        if (normal_)
+            normal_->add_vertex_rhs(i, xp, normals_.data(), r);
+        Scalar dx[3];
+        if (blocks)
+            cholesky3_solve(&system_.factor[6 * i], r, dx);
+        else
+        {
+            const Scalar inv = Scalar(1) / system_.diagonal[i];
+            for (int a = 0; a < 3; ++a)
+                dx[a] = r[a] * inv;
+        }
+        for (int a = 0; a < 3; ++a)
+            yp[3 * i + a] = xp[3 * i + a] + lambda * dx[a];
+    });
 }
 
 void Session::set_positions(std::span<const Scalar> x)
@@ -300,9 +332,7 @@ StepInfo Session::step()
         throw SolverError("Session::step: no positions (call set_positions first)");
     if (!fused())
         return general_step(x_);
-    fused_isotropic_step(
-        *topology_, system_.diagonal, soft_ ? soft_->weights() : std::span<const Scalar>(),
-        soft_ ? soft_->targets() : std::span<const Scalar>(), free_, recipe_.lambda, x_, next_);
+    fused_step(x_, next_);
     std::swap(x_, next_);
     return StepInfo{recipe_.lambda};
 }
@@ -310,20 +340,16 @@ StepInfo Session::step()
 StepInfo Session::step(std::span<Scalar> x)
 {
     check_size(x, "step");
-    if (!fused())
-        return general_step(x);
-    fused_isotropic_step(
-        *topology_, system_.diagonal, soft_ ? soft_->weights() : std::span<const Scalar>(),
-        soft_ ? soft_->targets() : std::span<const Scalar>(), free_, recipe_.lambda, x, next_);
-    parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
-        const Index i = free_[k];
-        std::copy_n(&next_[3 * i], 3, &x[3 * i]);
-    });
-    return StepInfo{recipe_.lambda};
+    return general_step(x);
 }
 
 StepInfo Session::general_step(std::span<Scalar> x)
 {
+    if (dx_.size() != 3 * static_cast<size_t>(mesh_->vertex_count()))
+    { // the first general step of a fused session
+        system_.rhs.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
+        dx_.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
+    }
     const bool use_blocks = !system_.block.empty();
     if (joint_ && use_blocks)
         factor_blocks(); // the normals moved in the previous step

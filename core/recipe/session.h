@@ -84,12 +84,12 @@ public:
 
     //! \brief Positions kept by the session, for callers that step many times (run(),
     //! the editor): step() then works on them without copying, alternating two buffers
-    //! when the step is fused (see fused_isotropic_step). Allocates; step() does not.
+    //! when the step can be fused (see fused_step). Allocates; step() does not.
     //! \throw SolverError when x does not hold 3 #V values.
     void set_positions(std::span<const Scalar> x);
     //! The kept positions (empty before set_positions).
     std::span<const Scalar> positions() const { return x_; }
-    //! One step on the kept positions; the same values as step(x).
+    //! One step on the kept positions; the same bits as step(x) (tested).
     StepInfo step();
     //! The energy of the kept positions.
     TermEnergies energy() const { return energy(x_); }
@@ -107,9 +107,19 @@ public:
 private:
     void precompute();
     void factor_blocks();
-    //! True when the step is E_L (+ E_S) with a fixed lambda: fused_isotropic_step.
+    //! True when step() can be fused: the Jacobi method with a fixed lambda and fixed
+    //! normals (no line search, no joint mode).
     bool fused() const;
-    //! The general step, in place on x.
+    //! \brief The fused step: one pass over the constrained faces (centroid residuals),
+    //! then one sweep over the free vertices in which each vertex adds every term's part
+    //! of r_i (the terms' add_vertex_rhs, in the order general_step adds them), solves its
+    //! 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
+    //! general_step without its right-hand-side and displacement arrays: what lets a
+    //! step run near memory speed. x and y must not overlap; y is written at free
+    //! vertices only.
+    void fused_step(std::span<const Scalar> x, std::span<Scalar> y);
+    //! The general step (separate right-hand side, displacement, line search, joint
+    //! update), in place on x.
     StepInfo general_step(std::span<Scalar> x);
     void check_size(std::span<const Scalar> x, const char* what) const;
 

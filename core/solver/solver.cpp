@@ -60,45 +60,6 @@ void apply_displacements(std::span<const Index> free_vertices, std::span<const S
     });
 }
 
-void fused_isotropic_step(const Topology& topology, std::span<const Scalar> diagonal,
-                          std::span<const Scalar> soft_weights,
-                          std::span<const Scalar> soft_targets,
-                          std::span<const Index> free_vertices, Scalar lambda,
-                          std::span<const Scalar> x, std::span<Scalar> y)
-{
-    const Index* offsets = topology.vertex_offsets.data();
-    const Index* neighbors = topology.vertex_neighbors.data();
-    const Scalar* xp = x.data();
-    Scalar* yp = y.data();
-    const bool soft = !soft_weights.empty();
-    parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
-        const Index i = free_vertices[k];
-        const Scalar x0 = xp[3 * i], x1 = xp[3 * i + 1], x2 = xp[3 * i + 2];
-        // As EdgeTerm::add_rhs: differences first, then the sum, added to a zeroed
-        // right-hand side (0 + s, not s: the same bits, signed zeros included).
-        Scalar s0 = 0, s1 = 0, s2 = 0;
-        for (Index n = offsets[i]; n < offsets[i + 1]; ++n)
-        {
-            const Scalar* q = xp + 3 * neighbors[n];
-            s0 += q[0] - x0;
-            s1 += q[1] - x1;
-            s2 += q[2] - x2;
-        }
-        Scalar r0 = Scalar(0) + s0, r1 = Scalar(0) + s1, r2 = Scalar(0) + s2;
-        if (soft)
-        {
-            const Scalar w = soft_weights[i];
-            r0 += w * (soft_targets[3 * i] - x0);
-            r1 += w * (soft_targets[3 * i + 1] - x1);
-            r2 += w * (soft_targets[3 * i + 2] - x2);
-        }
-        const Scalar inv = Scalar(1) / diagonal[i];
-        yp[3 * i] = x0 + lambda * (r0 * inv);
-        yp[3 * i + 1] = x1 + lambda * (r1 * inv);
-        yp[3 * i + 2] = x2 + lambda * (r2 * inv);
-    });
-}
-
 bool converged(Scalar before, Scalar after, Scalar tolerance)
 {
     if (!(tolerance > 0))

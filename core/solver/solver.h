@@ -5,7 +5,6 @@
 #include <span>
 
 #include "core/solver/jacobi_system.h"
-#include "core/topology/topology.h"
 
 namespace meshfair {
 
@@ -33,24 +32,6 @@ Scalar rhs_dot(const JacobiSystem& system, std::span<const Index> free_vertices,
 //! x_i += lambda dx_i for every free vertex.
 void apply_displacements(std::span<const Index> free_vertices, std::span<const Scalar> dx,
                          Scalar lambda, std::span<Scalar> x);
-
-//! \brief One generalized Jacobi step of an energy whose per-vertex systems are all
-//! isotropic: the edge term plus, optionally, soft vertex constraints (E_L + E_S), fused
-//! into one sweep over the free vertices:
-//!
-//!     y_i = x_i + lambda (sum_{j in V(i)} (x_j - x_i) + w_i (t_i - x_i)) / d_i
-//!
-//! It computes, operation for operation, what the right-hand side, jacobi_displacements
-//! and apply_displacements compute in turn (so the results are the same bits), without
-//! their intermediate arrays: one read of x and the adjacency, one write of y, which is
-//! what lets the plain Laplacian step run at memory speed. Writes y at free vertices only;
-//! x and y must not overlap. `soft_weights` and `soft_targets` are empty without soft
-//! constraints (else #V and 3 #V values).
-void fused_isotropic_step(const Topology& topology, std::span<const Scalar> diagonal,
-                          std::span<const Scalar> soft_weights,
-                          std::span<const Scalar> soft_targets,
-                          std::span<const Index> free_vertices, Scalar lambda,
-                          std::span<const Scalar> x, std::span<Scalar> y);
 
 //! \brief The stopping rule for tolerance > 0: true when the relative decrease
 //! (before - after) / before falls below `tolerance` (an increase included), or when

@@ -176,12 +176,4 @@ TopologySummary summarize(const Topology& topology)
     return s;
 }
 
-CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topology, Index corner)
-{
-    const Index f = topology.corner_face[corner];
-    const Index begin = mesh.face_offsets[f], n = mesh.face_size(f);
-    const Index k = corner - begin;
-    return {mesh.face_vertices[begin + (k + n - 1) % n], mesh.face_vertices[begin + (k + 1) % n]};
-}
-
 } // namespace meshfair

@@ -105,6 +105,15 @@ struct CornerNeighbors
     Index previous;
     Index next;
 };
-CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topology, Index corner);
+//! Inline: the face-normal term calls it for every corner of every step.
+inline CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topology, Index corner)
+{
+    // Branches, not (k +- 1) % n: two integer divisions per corner were a measurable
+    // part of the face-normal term's step.
+    const Index f = topology.corner_face[corner];
+    const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
+    return {mesh.face_vertices[corner == first ? last : corner - 1],
+            mesh.face_vertices[corner == last ? first : corner + 1]};
+}
 
 } // namespace meshfair
