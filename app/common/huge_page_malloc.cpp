@@ -11,8 +11,8 @@
 // (GLIBC_TUNABLES=glibc.malloc.hugetlb=1) but only when told before the program starts;
 // these definitions interpose malloc, calloc and realloc in the executable, forward to
 // glibc, and advise the 2 MiB-aligned interior of every block of 8 MiB or more.
-// Measured with meshfair-cli on the 1.25M-vertex bunny: read 2.3 s -> 0.8 s, setup
-// 9.9 s -> 4.3 s (docs/performance.md).
+// Measured with meshfair-cli on the 1.25M-vertex bunny: read 2.3 s -> 0.5-0.9 s, setup
+// 9.9 s -> 1.5-2.9 s (docs/performance.md).
 //
 // Not built under AddressSanitizer, which owns malloc.
 #include <sys/mman.h>
@@ -20,18 +20,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#if defined(__SANITIZE_ADDRESS__)
-#define MESHFAIR_HUGE_PAGE_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MESHFAIR_HUGE_PAGE_MALLOC 0
-#endif
-#endif
-#ifndef MESHFAIR_HUGE_PAGE_MALLOC
-#define MESHFAIR_HUGE_PAGE_MALLOC 1
-#endif
+#include "app/common/address_sanitizer.h"
 
-#if MESHFAIR_HUGE_PAGE_MALLOC
+#if !MESHFAIR_ADDRESS_SANITIZER
 
 extern "C" void* __libc_malloc(std::size_t);
 extern "C" void* __libc_calloc(std::size_t, std::size_t);

@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <new>
 
+#include "app/common/address_sanitizer.h"
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
 #include "tests/helpers.h"
@@ -21,16 +22,7 @@ std::atomic<long> g_allocations{0};
 
 } // namespace
 
-#if defined(__SANITIZE_ADDRESS__)
-#define MESHFAIR_COUNT_MALLOC 0
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define MESHFAIR_COUNT_MALLOC 0
-#endif
-#endif
-#ifndef MESHFAIR_COUNT_MALLOC
-#define MESHFAIR_COUNT_MALLOC 1
-#endif
+#define MESHFAIR_COUNT_MALLOC (!MESHFAIR_ADDRESS_SANITIZER)
 
 #if MESHFAIR_COUNT_MALLOC
 // glibc's own entry points; defining malloc here interposes it for every shared library.
