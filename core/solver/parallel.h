@@ -20,6 +20,30 @@ int thread_count();
 //! Loops shorter than this run on the calling thread: waking the others costs more.
 inline constexpr Index kParallelThreshold = 8192;
 
+namespace detail {
+
+// The OpenMP regions live in functions of their own, called only with threads > 1:
+// clang asks the OpenMP runtime for the thread number on entry to any function holding
+// a region (taken or not), which starts the runtime, and LLVM's runtime aborts where
+// /dev/shm is not writable (a chroot, another user). One thread never starts it.
+template <class F>
+[[gnu::noinline]] void parallel_for_threads(Index n, int threads, F& f)
+{
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (Index k = 0; k < n; ++k)
+        f(k);
+}
+
+template <class F>
+[[gnu::noinline]] void parallel_blocks(std::int64_t blocks, int threads, F& sum_block)
+{
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::int64_t b = 0; b < blocks; ++b)
+        sum_block(b);
+}
+
+} // namespace detail
+
 //! \brief f(k) for every k in [0, n), split into contiguous static chunks over the
 //! threads. Each call must write only what belongs to its k (a vertex gathers its own
 //! sums; nothing scatters), which makes the results independent of the thread count.
@@ -27,9 +51,11 @@ template <class F>
 void parallel_for(Index n, F&& f)
 {
     const int threads = n >= kParallelThreshold ? thread_count() : 1;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (Index k = 0; k < n; ++k)
-        f(k);
+    if (threads > 1)
+        detail::parallel_for_threads(n, threads, f);
+    else
+        for (Index k = 0; k < n; ++k)
+            f(k);
 }
 
 //! \brief The sum of f(k) over [0, n), bit for bit the same for any thread count: the
@@ -43,16 +69,19 @@ Scalar deterministic_sum(Index n, F&& f)
     const std::int64_t block = std::max<std::int64_t>(4096, (size + kMaxBlocks - 1) / kMaxBlocks);
     const std::int64_t blocks = (size + block - 1) / block;
     std::array<Scalar, kMaxBlocks> partial;
-    const int threads = blocks > 1 ? thread_count() : 1;
-#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1)
-    for (std::int64_t b = 0; b < blocks; ++b)
-    {
+    const auto sum_block = [&](std::int64_t b) {
         Scalar s = 0;
         const std::int64_t end = std::min(size, (b + 1) * block);
         for (std::int64_t k = b * block; k < end; ++k)
             s += f(static_cast<Index>(k));
         partial[static_cast<size_t>(b)] = s;
-    }
+    };
+    const int threads = blocks > 1 ? thread_count() : 1;
+    if (threads > 1)
+        detail::parallel_blocks(blocks, threads, sum_block);
+    else
+        for (std::int64_t b = 0; b < blocks; ++b)
+            sum_block(b);
     Scalar sum = 0;
     for (std::int64_t b = 0; b < blocks; ++b)
         sum += partial[static_cast<size_t>(b)];
