@@ -3,6 +3,8 @@
 //
 // meshfair-cli: the core library for scripts. Exit codes: 0 ok, 2 bad usage or input,
 // 3 could not write an output, 1 internal error.
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -11,10 +13,13 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <map>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/cli/report.h"
 #include "core/errors.h"
@@ -117,16 +122,67 @@ struct SmoothOptions
     bool quiet = false;
 };
 
+//! Reads `mesh_path`, smooths it with `recipe` (checked first, in the file's numbering;
+//! `recipe_name` names the recipe file in errors) in the locality numbering, writes
+//! `out_path` atomically and returns the report. Throws what the readers, the recipe
+//! check and the writer throw.
+nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_path,
+                          const Recipe& recipe, const std::string& recipe_name,
+                          const std::string& encoding)
+{
+    const io::Format out_format = io::format_from_path(out_path); // refuse before working
+    const auto t_read = Clock::now();
+    io::ReadReport read_report;
+    Mesh mesh = io::read_mesh(mesh_path, &read_report);
+    const double read_seconds = seconds_since(t_read);
+
+    const auto t_setup = Clock::now();
+    // Check the recipe in the file's numbering, so errors name the file's indices.
+    try
+    {
+        check_recipe(recipe, mesh);
+    }
+    catch (const RecipeError& e)
+    {
+        throw RecipeError(e.key(), e.message(), recipe_name);
+    }
+    catch (const InvalidInputError& e)
+    {
+        throw InvalidInputError("'" + mesh_path + "': " + e.what()); // name the mesh at fault
+    }
+    // Solve in the locality numbering (neighbours near each other in memory); the output,
+    // the recipe and the report keep the file's numbering.
+    const LocalityOrder order = locality_order(mesh);
+    Mesh work = reorder_mesh(mesh, order);
+    const Topology topology = build_topology(work);
+    Session session(work, topology, renumber_recipe(recipe, order.vertex_index, order.face_index));
+    session.apply_hard_targets(work.positions);
+    const double setup_seconds = seconds_since(t_setup);
+
+    const auto t_solve = Clock::now();
+    const SmoothResult result = run(session, work.positions);
+    positions_to_file_order(work.positions, order, mesh.positions);
+    const double solve_seconds = seconds_since(t_solve);
+    validate_mesh(mesh); // never write garbage: every coordinate is still finite
+
+    const auto t_write = Clock::now();
+    write_output(mesh, topology, out_path, out_format,
+                 output_options(encoding, out_format, read_report));
+    const double write_seconds = seconds_since(t_write);
+
+    nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
+    report["seconds"] = {{"read", read_seconds},
+                         {"setup", setup_seconds},
+                         {"solve", solve_seconds},
+                         {"write", write_seconds}};
+    report["peak_memory_bytes"] = cli::peak_resident_bytes();
+    return report;
+}
+
 int run_smooth(const SmoothOptions& o)
 {
     set_thread_count(o.threads);
-    const auto t_read = Clock::now();
-    io::ReadReport read_report;
-    Mesh mesh = io::read_mesh(o.mesh, &read_report);
     Recipe recipe = o.recipe.empty() ? Recipe{} : read_recipe(o.recipe);
-    const io::Format out_format = io::format_from_path(o.out); // refuse before working
-    const double read_seconds = seconds_since(t_read);
-
     if (o.iterations)
         recipe.iterations = *o.iterations;
     if (o.lambda)
@@ -151,51 +207,129 @@ int run_smooth(const SmoothOptions& o)
     if (o.method)
         recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
 
-    const auto t_setup = Clock::now();
-    // Check the recipe in the file's numbering, so errors name the file's indices.
-    try
-    {
-        check_recipe(recipe, mesh);
-    }
-    catch (const RecipeError& e)
-    {
-        throw RecipeError(e.key(), e.message(), o.recipe);
-    }
-    catch (const InvalidInputError& e)
-    {
-        throw InvalidInputError("'" + o.mesh + "': " + e.what()); // name the mesh at fault
-    }
-    // Solve in the locality numbering (neighbours near each other in memory); the output,
-    // the recipe and the report keep the file's numbering.
-    const LocalityOrder order = locality_order(mesh);
-    Mesh work = reorder_mesh(mesh, order);
-    const Topology topology = build_topology(work);
-    Session session(work, topology, renumber_recipe(recipe, order.vertex_index, order.face_index));
-    session.apply_hard_targets(work.positions);
-    const double setup_seconds = seconds_since(t_setup);
-
-    const auto t_solve = Clock::now();
-    const SmoothResult result = run(session, work.positions);
-    positions_to_file_order(work.positions, order, mesh.positions);
-    const double solve_seconds = seconds_since(t_solve);
-    validate_mesh(mesh); // never write garbage: every coordinate is still finite
-
-    const auto t_write = Clock::now();
-    write_output(mesh, topology, o.out, out_format,
-                 output_options(o.encoding, out_format, read_report));
-    const double write_seconds = seconds_since(t_write);
-
-    nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
-    report["seconds"] = {{"read", read_seconds},
-                         {"setup", setup_seconds},
-                         {"solve", solve_seconds},
-                         {"write", write_seconds}};
-    report["peak_memory_bytes"] = cli::peak_resident_bytes();
+    const nlohmann::json report = smooth_one(o.mesh, o.out, recipe, o.recipe, o.encoding);
     if (!o.report.empty())
         write_text_atomically(o.report, report.dump(2) + "\n");
     if (!o.quiet && o.report != "-")
         std::cout << cli::smooth_summary(report, o.out);
     return 0;
+}
+
+struct BatchOptions
+{
+    std::vector<std::string> meshes;
+    std::string recipe, out_dir, encoding, format;
+    int jobs = 0;
+};
+
+//! Outcome of one file of a batch, in increasing severity (the exit code is the worst).
+enum class BatchStatus
+{
+    Ok,
+    Rejected,    //!< exit 2: the file (or the recipe for it) was refused
+    WriteFailed, //!< exit 3
+    Internal     //!< exit 1
+};
+
+int exit_code(BatchStatus status)
+{
+    switch (status)
+    {
+        case BatchStatus::Ok:
+            return 0;
+        case BatchStatus::Rejected:
+            return kExitInput;
+        case BatchStatus::WriteFailed:
+            return kExitWrite;
+        case BatchStatus::Internal:
+            return kExitInternal;
+    }
+    return kExitInternal;
+}
+
+//! `batch`: the same smoothing as `smooth` on many files, several at once (one OpenMP
+//! thread per file, each file's solver on one thread), one JSON line per file on stdout
+//! as it finishes, progress on stderr. A file that fails is reported and skipped; the
+//! others go on. Exit code: 0 when every file was smoothed, else that of the worst
+//! failure (internal 1 > write 3 > rejected input 2).
+int run_batch(const BatchOptions& o)
+{
+    const Recipe recipe = read_recipe(o.recipe); // a bad recipe stops everything at once
+    // Output names: the input's file name in --out-dir (with --format's extension).
+    std::vector<std::string> outputs;
+    std::map<std::string, std::string> taken;
+    for (const std::string& mesh : o.meshes)
+    {
+        std::filesystem::path name = std::filesystem::path(mesh).filename();
+        if (!o.format.empty())
+            name.replace_extension("." + o.format);
+        const std::string out = (std::filesystem::path(o.out_dir) / name).string();
+        if (const auto [it, inserted] = taken.emplace(out, mesh); !inserted)
+            throw InvalidInputError("'" + it->second + "' and '" + mesh +
+                                    "' would both be written to '" + out + "'");
+        io::format_from_path(out); // an unknown extension is refused before any work
+        outputs.push_back(out);
+    }
+    std::error_code error;
+    std::filesystem::create_directories(o.out_dir, error);
+    if (error)
+        throw WriteError("'" + o.out_dir + "': " + error.message());
+
+    const int files = static_cast<int>(o.meshes.size());
+    const int jobs = std::max(1, std::min(o.jobs > 0 ? o.jobs : thread_count(), files));
+    set_thread_count(1); // parallel over files; each file's solver on its own thread
+    const bool terminal = ::isatty(STDERR_FILENO) != 0;
+    int done = 0, failed = 0;
+    BatchStatus worst = BatchStatus::Ok;
+    std::mutex output;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(jobs)
+    for (int k = 0; k < files; ++k)
+    {
+        const std::string& mesh = o.meshes[static_cast<size_t>(k)];
+        nlohmann::json line = {{"index", k}, {"file", mesh}};
+        BatchStatus status = BatchStatus::Ok;
+        try
+        {
+            line["report"] =
+                smooth_one(mesh, outputs[static_cast<size_t>(k)], recipe, o.recipe, o.encoding);
+            line["output"] = outputs[static_cast<size_t>(k)];
+        }
+        catch (const InvalidInputError& e)
+        {
+            status = BatchStatus::Rejected;
+            line["error"] = e.what();
+        }
+        catch (const WriteError& e)
+        {
+            status = BatchStatus::WriteFailed;
+            line["error"] = std::string("cannot write ") + e.what();
+        }
+        catch (const std::exception& e)
+        {
+            status = BatchStatus::Internal;
+            line["error"] = std::string("internal error: ") + e.what();
+        }
+        static constexpr const char* kStatus[] = {"ok", "rejected", "write_failed",
+                                                  "internal_error"};
+        line["status"] = kStatus[static_cast<int>(status)];
+        const std::lock_guard lock(output);
+        ++done;
+        if (status != BatchStatus::Ok)
+            ++failed;
+        worst = std::max(worst, status);
+        std::cout << line.dump() << "\n" << std::flush;
+        const std::string progress = "[" + std::to_string(done) + "/" + std::to_string(files) +
+                                     "] " + std::to_string(failed) + " failed";
+        if (terminal) // one line, rewritten in place
+            std::cerr << "\r" << progress << "  " << std::filesystem::path(mesh).filename().string()
+                      << "\033[K" << (done == files ? "\n" : "") << std::flush;
+        else
+            std::cerr << "meshfair-cli: batch " << progress << "; "
+                      << line["status"].get<std::string>() << ": " << mesh << "\n";
+    }
+    if (failed > 0)
+        std::cerr << "meshfair-cli: batch: " << failed << " of " << files << " files failed\n";
+    return exit_code(worst);
 }
 
 struct ConvertOptions
@@ -310,6 +444,23 @@ int main(int argc, char** argv)
     noise_cmd->add_option("--encoding", noise.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
 
+    BatchOptions batch;
+    auto* batch_cmd = app.add_subcommand(
+        "batch", "Smooth many meshes with one recipe, several at once; one JSON line per file");
+    batch_cmd->add_option("MESH", batch.meshes, "Input meshes")->required();
+    batch_cmd->add_option("--recipe", batch.recipe, "Recipe JSON (docs/recipe.md)")->required();
+    batch_cmd
+        ->add_option("--out-dir", batch.out_dir, "Directory of the outputs (created if missing)")
+        ->required();
+    batch_cmd
+        ->add_option("--format", batch.format,
+                     "Output format (default: each input's): obj, off, ply or stl")
+        ->check(CLI::IsMember({"obj", "off", "ply", "stl"}));
+    batch_cmd->add_option("--encoding", batch.encoding, encoding_help)
+        ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+    batch_cmd->add_option("--jobs", batch.jobs, "Files smoothed at once (default: every core)")
+        ->check(CLI::Range(1, 1024));
+
     try
     {
         app.parse(argc, argv);
@@ -330,6 +481,8 @@ int main(int argc, char** argv)
             return run_noise(noise);
         if (*convert_cmd)
             return run_convert(convert);
+        if (*batch_cmd)
+            return run_batch(batch);
     }
     catch (const InvalidInputError& e)
     {

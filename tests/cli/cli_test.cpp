@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/io/io.h"
 #include "core/recipe/recipe.h"
@@ -223,6 +226,83 @@ TEST_SUITE("Cli")
         CHECK(s.code == 2);
         CHECK(s.err.find("'" + in.string() + "': vertex 2 has the coordinate 1e+300") !=
               std::string::npos);
+    }
+
+    TEST_CASE("batch smooths every good file as smooth does, reports and skips the bad ones")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path in = dir / "in", out = dir / "batch-out";
+        fs::create_directories(in);
+        const std::string recipe = (test::assets_dir() / "recipes" / "combined.json").string();
+        fs::copy_file(test::assets_dir() / "bunny.obj", in / "bunny.obj");
+        test::write_bytes(in / "tri.off",
+                          "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0.5\n3 0 1 2\n3 1 3 2\n");
+        test::write_bytes(in / "bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
+        const std::vector<std::string> names = {"bunny.obj", "bad.obj", "tri.off"};
+        std::string files;
+        for (const std::string& name : names)
+            files += " " + quote((in / name).string());
+        const Run r = cli("batch" + files + " --recipe " + quote(recipe) + " --out-dir " +
+                          quote(out.string()) + " --jobs 2");
+        CHECK(r.code == 2); // one input rejected
+        CHECK(r.err.find("1 of 3 files failed") != std::string::npos);
+        // One JSON line per file, in any order; the index says which.
+        std::vector<std::string> status(3);
+        std::istringstream lines(r.out);
+        int count = 0;
+        for (std::string line; std::getline(lines, line); ++count)
+        {
+            const auto j = nlohmann::json::parse(line);
+            status.at(j["index"].get<size_t>()) = j["status"].get<std::string>();
+            if (j["status"] == "rejected")
+                CHECK(j["error"].get<std::string>().find("bad.obj:4:7: vertex index 4") !=
+                      std::string::npos);
+            else
+                CHECK(j["report"]["iterations"].get<int>() == 20);
+        }
+        CHECK(count == 3);
+        CHECK(status == std::vector<std::string>{"ok", "rejected", "ok"});
+        CHECK_FALSE(fs::exists(out / "bad.obj"));
+        // The same bytes as smooth writes, file by file.
+        for (const std::string name : {"bunny.obj", "tri.off"})
+        {
+            CAPTURE(name);
+            const fs::path single = dir / ("single-" + name);
+            REQUIRE(cli("smooth " + quote((in / name).string()) + " -o " + quote(single.string()) +
+                        " --recipe " + quote(recipe) + " -q")
+                        .code == 0);
+            CHECK(io::read_file((out / name).string()) == io::read_file(single.string()));
+        }
+        // --format changes the outputs' extension; all good files: exit 0.
+        const Run ply = cli("batch " + quote((in / "tri.off").string()) + " --recipe " +
+                            quote(recipe) + " --out-dir " + quote(out.string()) + " --format ply");
+        CHECK(ply.code == 0);
+        CHECK(io::read_mesh((out / "tri.ply").string()).vertex_count() == 4);
+    }
+
+    TEST_CASE("batch refuses before any work: two inputs to one output, a bad recipe")
+    {
+        const fs::path dir = test::temp_dir();
+        fs::create_directories(dir / "a");
+        fs::create_directories(dir / "b");
+        fs::copy_file(test::assets_dir() / "bunny.obj", dir / "a" / "m.obj");
+        fs::copy_file(test::assets_dir() / "bunny.obj", dir / "b" / "m.obj");
+        const std::string recipe = (test::assets_dir() / "recipes" / "combined.json").string();
+        const fs::path out = dir / "out";
+        const Run twice = cli("batch " + quote((dir / "a" / "m.obj").string()) + " " +
+                              quote((dir / "b" / "m.obj").string()) + " --recipe " + quote(recipe) +
+                              " --out-dir " + quote(out.string()));
+        CHECK(twice.code == 2);
+        CHECK(twice.err.find("would both be written to") != std::string::npos);
+        CHECK_FALSE(fs::exists(out));
+        const std::string bad = (dir / "r.json").string();
+        test::write_bytes(bad, R"({"lambda": "fast"})");
+        const Run recipe_error =
+            cli("batch " + quote((dir / "a" / "m.obj").string()) + " --recipe " + quote(bad) +
+                " --out-dir " + quote(out.string()));
+        CHECK(recipe_error.code == 2);
+        CHECK(recipe_error.err.find("lambda") != std::string::npos);
+        CHECK_FALSE(fs::exists(out));
     }
 
     TEST_CASE("the CLI opens no file but those on its command line (strace)")
