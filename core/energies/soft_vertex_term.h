@@ -27,10 +27,6 @@ public:
     void set_targets(std::span<const Scalar> targets);
     Scalar mu() const { return mu_; }
     const std::vector<Index>& vertices() const { return vertices_; }
-    //! Per vertex (#V): mu on the constrained vertices, 0 elsewhere.
-    std::span<const Scalar> weights() const { return weight_; }
-    //! Per vertex (3 #V): the targets of the constrained vertices.
-    std::span<const Scalar> targets() const { return target_; }
 
     Scalar energy(std::span<const Scalar> x) const;
     Scalar quadratic(std::span<const Scalar> dx) const;

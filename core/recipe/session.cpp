@@ -184,7 +184,6 @@ void Session::precompute()
 
     // The Jacobi system: constant diagonal, blocks while the normals stay fixed.
     system_.diagonal.assign(nv, 0);
-    system_.rhs.assign(3 * static_cast<size_t>(nv), 0);
     edge_.add_diagonal(system_.diagonal);
     if (soft_)
         soft_->add_diagonal(system_.diagonal);
@@ -208,6 +207,7 @@ void Session::precompute()
     {
         system_.rhs = {};
         dx_ = {};
+        // (general_step allocates both if step(x) is ever called.)
         if (x_.empty())
             next_.assign(3 * static_cast<size_t>(nv), 0);
         else
@@ -215,6 +215,7 @@ void Session::precompute()
     }
     else
     {
+        system_.rhs.assign(3 * static_cast<size_t>(nv), 0);
         dx_.assign(3 * static_cast<size_t>(nv), 0);
         next_ = {};
     }

@@ -84,17 +84,14 @@ std::vector<Index> inverse_permutation(std::span<const Index> order)
 
 Mesh renumber_vertices(const Mesh& mesh, std::span<const Index> order)
 {
-    const std::vector<Index> new_index = inverse_permutation(order);
-    Mesh out;
-    out.positions.resize(mesh.positions.size());
-    for (size_t k = 0; k < order.size(); ++k)
-        for (size_t a = 0; a < 3; ++a)
-            out.positions[3 * k + a] = mesh.positions[3 * static_cast<size_t>(order[k]) + a];
-    out.face_offsets = mesh.face_offsets;
-    out.face_vertices.resize(mesh.face_vertices.size());
-    for (size_t c = 0; c < mesh.face_vertices.size(); ++c)
-        out.face_vertices[c] = new_index[static_cast<size_t>(mesh.face_vertices[c])];
-    return out;
+    // Faces in their own order: the identity face permutation.
+    LocalityOrder o;
+    o.vertex_order.assign(order.begin(), order.end());
+    o.vertex_index = inverse_permutation(order);
+    o.face_order.resize(static_cast<size_t>(mesh.face_count()));
+    for (Index f = 0; f < mesh.face_count(); ++f)
+        o.face_order[static_cast<size_t>(f)] = f;
+    return reorder_mesh(mesh, o);
 }
 
 LocalityOrder locality_order(const Mesh& mesh)
