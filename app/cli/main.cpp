@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cmath>
@@ -65,15 +66,16 @@ io::WriteOptions output_options(const std::string& requested, io::Format out_for
 
 //! Writes the mesh; says on stderr what the target format cannot hold (STL keeps no
 //! isolated vertices), so nothing is lost silently.
-void write_output(const Mesh& mesh, const Topology& topology, const std::string& path,
-                  io::Format format, const io::WriteOptions& options)
+void write_output(const Mesh& mesh, const std::string& path, io::Format format,
+                  const io::WriteOptions& options)
 {
     io::write_file_atomically(path, io::write_mesh_data(mesh, format, options));
     if (format != io::Format::Stl)
         return;
-    Index isolated = 0; // vertices without neighbours belong to no face
-    for (Index i = 0; i < topology.vertex_count; ++i)
-        isolated += topology.valence(i) == 0 ? 1 : 0;
+    std::vector<char> in_a_face(static_cast<size_t>(mesh.vertex_count()), 0);
+    for (const Index v : mesh.face_vertices)
+        in_a_face[v] = 1;
+    const auto isolated = std::count(in_a_face.begin(), in_a_face.end(), 0);
     if (isolated > 0)
         std::cerr << "meshfair-cli: note: STL cannot store vertices without faces; " << isolated
                   << " of them are not in '" << path << "'\n";
@@ -150,27 +152,32 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
     {
         throw InvalidInputError("'" + mesh_path + "': " + e.what()); // name the mesh at fault
     }
-    // Solve in the locality numbering (neighbours near each other in memory); the output,
-    // the recipe and the report keep the file's numbering.
-    const LocalityOrder order = locality_order(mesh);
-    Mesh work = reorder_mesh(mesh, order);
-    const Topology topology = build_topology(work);
-    Session session(work, topology, renumber_recipe(recipe, order.vertex_index, order.face_index));
-    session.apply_hard_targets(work.positions);
-    const double setup_seconds = seconds_since(t_setup);
+    nlohmann::json report;
+    double setup_seconds = 0, solve_seconds = 0;
+    {
+        // Solve in the locality numbering (neighbours near each other in memory); the
+        // output, the recipe and the report keep the file's numbering. The solver's data
+        // lives in this scope only: it is freed before the output is written.
+        const LocalityOrder order = locality_order(mesh);
+        Mesh work = reorder_mesh(mesh, order);
+        const Topology topology = build_topology(work);
+        Session session(work, topology,
+                        renumber_recipe(recipe, order.vertex_index, order.face_index));
+        session.apply_hard_targets(work.positions);
+        setup_seconds = seconds_since(t_setup);
 
-    const auto t_solve = Clock::now();
-    const SmoothResult result = run(session, work.positions);
-    positions_to_file_order(work.positions, order, mesh.positions);
-    const double solve_seconds = seconds_since(t_solve);
-    validate_mesh(mesh); // never write garbage: every coordinate is still finite
+        const auto t_solve = Clock::now();
+        const SmoothResult result = run(session, work.positions);
+        positions_to_file_order(work.positions, order, mesh.positions);
+        solve_seconds = seconds_since(t_solve);
+        validate_mesh(mesh); // never write garbage: every coordinate is still finite
+        report = cli::smooth_report(mesh, topology, session, result, read_report);
+    }
 
     const auto t_write = Clock::now();
-    write_output(mesh, topology, out_path, out_format,
-                 output_options(encoding, out_format, read_report));
+    write_output(mesh, out_path, out_format, output_options(encoding, out_format, read_report));
     const double write_seconds = seconds_since(t_write);
 
-    nlohmann::json report = cli::smooth_report(mesh, topology, session, result, read_report);
     report["seconds"] = {{"read", read_seconds},
                          {"setup", setup_seconds},
                          {"solve", solve_seconds},
@@ -342,8 +349,7 @@ int run_convert(const ConvertOptions& o)
     io::ReadReport read_report;
     const Mesh mesh = io::read_mesh(o.mesh, &read_report);
     const io::Format out_format = io::format_from_path(o.out);
-    write_output(mesh, build_topology(mesh), o.out, out_format,
-                 output_options(o.encoding, out_format, read_report));
+    write_output(mesh, o.out, out_format, output_options(o.encoding, out_format, read_report));
     return 0;
 }
 
@@ -366,8 +372,7 @@ int run_noise(const NoiseOptions& o)
                                 "': noise needs edges (sigma is in units of the mean edge "
                                 "length) and this mesh has none of positive length");
     add_gaussian_noise(mesh, o.sigma * unit, o.seed);
-    write_output(mesh, topology, o.out, out_format,
-                 output_options(o.encoding, out_format, read_report));
+    write_output(mesh, o.out, out_format, output_options(o.encoding, out_format, read_report));
     return 0;
 }
 

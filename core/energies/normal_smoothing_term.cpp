@@ -25,11 +25,15 @@ NormalSmoothingTerm::NormalSmoothingTerm(const Topology& topology,
     : topology_(&topology),
       hard_faces_(hard_faces.begin(), hard_faces.end()),
       soft_faces_(soft_faces.begin(), soft_faces.end()),
-      hard_(topology.face_count, 0),
-      hard_normal_(hard_normals.begin(), hard_normals.end()),
-      soft_weight_(topology.face_count, 0),
-      soft_target_(3 * static_cast<size_t>(topology.face_count), 0)
+      hard_normal_(hard_normals.begin(), hard_normals.end())
 {
+    if (!hard_faces_.empty())
+        hard_.assign(topology.face_count, 0);
+    if (!soft_faces_.empty())
+    {
+        soft_weight_.assign(topology.face_count, 0);
+        soft_target_.assign(3 * static_cast<size_t>(topology.face_count), 0);
+    }
     for (const Index f : hard_faces_)
         hard_[f] = 1;
     for (size_t k = 0; k < soft_faces_.size(); ++k)
@@ -79,19 +83,21 @@ void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda, std::span<Sca
     {
         Scalar* du = &scratch[3 * f];
         du[0] = du[1] = du[2] = 0;
-        const Scalar denominator = topology_->dual_valence(f) + soft_weight_[f];
-        if (hard_[f] || !(denominator > 0))
+        const Scalar weight = soft_weight(f);
+        const Scalar* target = soft_target(f);
+        const Scalar denominator = topology_->dual_valence(f) + weight;
+        if (is_hard(f) || !(denominator > 0))
             continue;
         const Scalar* uf = &u[3 * f];
         for (const Index g : topology_->face_neighbors_of(f))
             for (int a = 0; a < 3; ++a)
                 du[a] += u[3 * g + a] - uf[a];
         for (int a = 0; a < 3; ++a)
-            du[a] = (du[a] + soft_weight_[f] * (soft_target_[3 * f + a] - uf[a])) / denominator;
+            du[a] = (du[a] + weight * (target[a] - uf[a])) / denominator;
     }
     for (Index f = 0; f < faces; ++f)
     {
-        if (hard_[f])
+        if (is_hard(f))
             continue;
         Scalar next[3];
         for (int a = 0; a < 3; ++a)

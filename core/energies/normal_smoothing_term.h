@@ -29,9 +29,13 @@ public:
                         std::span<const Scalar> hard_normals, std::span<const Index> soft_faces,
                         Scalar soft_mu, std::span<const Scalar> soft_normals);
 
-    bool is_hard(Index f) const { return hard_[f] != 0; }
-    Scalar soft_weight(Index f) const { return soft_weight_[f]; }
-    const Scalar* soft_target(Index f) const { return &soft_target_[3 * f]; }
+    bool is_hard(Index f) const { return !hard_.empty() && hard_[f] != 0; }
+    Scalar soft_weight(Index f) const { return soft_weight_.empty() ? 0 : soft_weight_[f]; }
+    const Scalar* soft_target(Index f) const
+    {
+        static constexpr Scalar kNone[3] = {0, 0, 0};
+        return soft_target_.empty() ? kNone : &soft_target_[3 * f];
+    }
     bool has_soft() const { return !soft_faces_.empty(); }
 
     //! sum over E* of |u_f - u_g|^2.
@@ -46,10 +50,12 @@ public:
 private:
     const Topology* topology_;
     std::vector<Index> hard_faces_, soft_faces_;
-    std::vector<char> hard_;          //!< #F
+    // Per-face arrays exist only when there are hard (soft) faces: a recipe without
+    // normal smoothing pays nothing for it (66 bytes per face otherwise).
+    std::vector<char> hard_;          //!< #F, empty without hard faces
     std::vector<Scalar> hard_normal_; //!< 3 per hard face
-    std::vector<Scalar> soft_weight_; //!< #F
-    std::vector<Scalar> soft_target_; //!< 3 #F
+    std::vector<Scalar> soft_weight_; //!< #F, empty without soft faces
+    std::vector<Scalar> soft_target_; //!< 3 #F, empty without soft faces
 };
 
 //! Scales the 3-vector at v to unit length; leaves it (returns false) when its length is 0.

@@ -144,8 +144,16 @@ void Session::precompute()
     {
         const NormalConstraints& n = *recipe_.normal;
         const std::vector<Index> faces = n.faces.all ? all_indices(nf) : n.faces.indices;
-        const std::vector<Scalar> initial = face_normals(mesh, x0);
-        normals_ = initial;
+        normals_ = face_normals(mesh, x0);
+        const NormalSmoothing ns = recipe_.normal_smoothing.value_or(NormalSmoothing{});
+        // The smoothing constraints' normals default to the initial ones: gathered before
+        // normals_ (the initial normals until here) gets the custom directions.
+        const std::vector<Scalar> hard_normals = ns.hard.normals.empty()
+                                                     ? gather3(normals_, ns.hard.faces)
+                                                     : unit_normals(ns.hard.normals);
+        const std::vector<Scalar> soft_normals = ns.soft.normals.empty()
+                                                     ? gather3(normals_, ns.soft.faces)
+                                                     : unit_normals(ns.soft.normals);
         if (n.source == NormalSource::Custom)
         {
             const std::vector<Scalar> given = unit_normals(n.normals);
@@ -153,18 +161,14 @@ void Session::precompute()
                 std::copy_n(&given[3 * k], 3, &normals_[3 * faces[k]]);
         }
         normal_.emplace(mesh, *topology_, faces, n.mu);
-
-        const NormalSmoothing ns = recipe_.normal_smoothing.value_or(NormalSmoothing{});
-        const std::vector<Scalar> hard_normals = ns.hard.normals.empty()
-                                                     ? gather3(initial, ns.hard.faces)
-                                                     : unit_normals(ns.hard.normals);
-        const std::vector<Scalar> soft_normals = ns.soft.normals.empty()
-                                                     ? gather3(initial, ns.soft.faces)
-                                                     : unit_normals(ns.soft.normals);
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
                            soft_normals);
         smoothing_->apply_hard(normals_);
-        scratch_u_.assign(3 * static_cast<size_t>(nf), 0);
+        // Scratch normals for normal smoothing and the joint update only.
+        if (n.source == NormalSource::Smoothed || recipe_.joint)
+            scratch_u_.assign(3 * static_cast<size_t>(nf), 0);
+        else
+            scratch_u_ = {};
         if (n.source == NormalSource::Smoothed)
         {
             // Normal smoothing first, then integration of the smoothed normals through
@@ -200,6 +204,8 @@ void Session::precompute()
         system_.block.assign(6 * static_cast<size_t>(nv), 0);
         system_.factor.assign(6 * static_cast<size_t>(nv), 0);
         factor_blocks();
+        if (!joint_) // the normals never move: the factors are all a step needs
+            system_.block = {};
     }
     // The fused step needs no right-hand side nor displacement arrays, only an output.
     // Kept positions stay (a new recipe on the same mesh).
@@ -290,7 +296,7 @@ void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
 {
     if (centroid_)
         centroid_->update_residuals(x);
-    const bool blocks = !system_.block.empty();
+    const bool blocks = !system_.factor.empty();
     const Scalar lambda = recipe_.lambda;
     const Scalar* xp = x.data();
     Scalar* yp = y.data();
@@ -351,7 +357,7 @@ StepInfo Session::general_step(std::span<Scalar> x)
         system_.rhs.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
         dx_.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
     }
-    const bool use_blocks = !system_.block.empty();
+    const bool use_blocks = !system_.factor.empty();
     if (joint_ && use_blocks)
         factor_blocks(); // the normals moved in the previous step
 

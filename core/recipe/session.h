@@ -143,7 +143,7 @@ private:
     std::vector<Scalar> smoothing_trace_;
     JacobiSystem system_;
     std::vector<Scalar> dx_;        //!< 3 #V, zero on non-free vertices
-    std::vector<Scalar> scratch_u_; //!< 3 #F
+    std::vector<Scalar> scratch_u_; //!< 3 #F for normal smoothing and joint mode, else empty
     std::vector<Scalar> x_;         //!< kept positions (set_positions)
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
     bool has_positions_ = false;    //!< set_positions was called (x_ may be empty: #V = 0)

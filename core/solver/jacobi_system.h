@@ -22,9 +22,10 @@ namespace meshfair {
 struct JacobiSystem
 {
     std::vector<Scalar> diagonal; //!< #V
-    std::vector<Scalar> block;    //!< 6 #V, empty when no term adds one
-    std::vector<Scalar> factor;   //!< 6 #V Cholesky factors of A_i when block is used
-    std::vector<Scalar> rhs;      //!< 3 #V
+    //! 6 #V; empty when no term adds one, and once factored when the normals never move
+    std::vector<Scalar> block;
+    std::vector<Scalar> factor; //!< 6 #V Cholesky factors of A_i; empty without blocks
+    std::vector<Scalar> rhs;    //!< 3 #V
 };
 
 //! Cholesky factor L (row-major lower triangle l00 l10 l11 l20 l21 l22) of the SPD
