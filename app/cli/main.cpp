@@ -160,7 +160,7 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
         // lives in this scope only: it is freed before the output is written.
         const LocalityOrder order = locality_order(mesh);
         Mesh work = reorder_mesh(mesh, order);
-        const Topology topology = build_topology(work);
+        const Topology topology = build_topology(work, required_topology(recipe));
         Session session(work, topology,
                         renumber_recipe(recipe, order.vertex_index, order.face_index));
         session.apply_hard_targets(work.positions);

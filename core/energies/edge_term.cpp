@@ -8,12 +8,18 @@ namespace meshfair {
 
 Scalar EdgeTerm::energy(std::span<const Scalar> x) const
 {
-    const Index* ev = topology_->edge_vertices.data();
-    return deterministic_sum(topology_->edge_count(), [&](Index e) {
-        const Scalar* p = &x[3 * ev[2 * e]];
-        const Scalar* q = &x[3 * ev[2 * e + 1]];
-        const Scalar d0 = q[0] - p[0], d1 = q[1] - p[1], d2 = q[2] - p[2];
-        return d0 * d0 + d1 * d1 + d2 * d2;
+    // Each edge once, from its lower end: only V(i) is needed, not the edge list.
+    return deterministic_sum(topology_->vertex_count, [&](Index i) {
+        const Scalar* p = &x[3 * i];
+        Scalar sum = 0;
+        for (const Index j : topology_->neighbors(i))
+            if (j > i)
+            {
+                const Scalar* q = &x[3 * j];
+                const Scalar d0 = q[0] - p[0], d1 = q[1] - p[1], d2 = q[2] - p[2];
+                sum += d0 * d0 + d1 * d1 + d2 * d2;
+            }
+        return sum;
     });
 }
 

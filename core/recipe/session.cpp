@@ -61,12 +61,26 @@ void Session::set_recipe(const Recipe& recipe)
     precompute();
 }
 
+TopologyParts required_topology(const Recipe& recipe)
+{
+    TopologyParts parts = TopologyParts::Neighbors;
+    if (recipe.centroid || recipe.normal)
+        parts = parts | TopologyParts::Corners;
+    if (recipe.normal && (recipe.normal->source == NormalSource::Smoothed || recipe.joint))
+        parts = parts | TopologyParts::Dual;
+    return parts;
+}
+
 void Session::precompute()
 {
     check_recipe(recipe_, *mesh_);
     if (topology_->vertex_count != mesh_->vertex_count() ||
         topology_->face_count != mesh_->face_count())
         throw SolverError("Session: the topology was built for another mesh");
+    if (!has_parts(topology_->parts, required_topology(recipe_)))
+        throw SolverError(
+            "Session: the topology lacks parts this recipe needs (build it "
+            "with required_topology(recipe))");
     ++precompute_count_;
     const Mesh& mesh = *mesh_;
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();

@@ -57,7 +57,8 @@ struct StepInfo
 class Session
 {
 public:
-    //! \pre check_recipe(recipe, mesh) holds; topology == build_topology(mesh).
+    //! \pre check_recipe(recipe, mesh) holds; topology is build_topology(mesh, parts) with
+    //! at least required_topology(recipe) (else SolverError).
     //! \throw RecipeError if the recipe does not fit the mesh.
     Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe);
 
@@ -148,6 +149,10 @@ private:
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
     bool has_positions_ = false;    //!< set_positions was called (x_ may be empty: #V = 0)
 };
+
+//! \brief The parts of a Topology a Session with `recipe` reads: V(i) always, the corners
+//! for the face terms, the dual graph for normal smoothing and joint mode.
+TopologyParts required_topology(const Recipe& recipe);
 
 //! The outcome of a whole run.
 struct SmoothResult

@@ -25,21 +25,85 @@ std::vector<Index> offsets_from_counts(const std::vector<Index>& counts)
     return offsets;
 }
 
-} // namespace
-
-Topology build_topology(const Mesh& mesh)
+//! The other ends of the face edges at vertex i, sorted, an end j repeated once per face
+//! of the edge (i, j): the corners of i contribute their next and previous vertices.
+void edge_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<Index>& ends)
 {
-    Topology t;
-    t.vertex_count = mesh.vertex_count();
-    t.face_count = mesh.face_count();
-    const Index corners = mesh.corner_count();
+    ends.clear();
+    for (const Index c : t.corners_of_vertex(i))
+    {
+        const CornerNeighbors n = corner_neighbors(mesh, t, c);
+        ends.push_back(n.next);
+        ends.push_back(n.previous);
+    }
+    std::sort(ends.begin(), ends.end());
+}
 
-    // Primal edges: one get/insert per face corner, as the paper builds the edge array.
+//! Corners of each vertex (in face order) and the face of each corner.
+void build_corners(const Mesh& mesh, Topology& t)
+{
+    const Index corners = mesh.corner_count();
+    t.corner_face.resize(corners);
+    for (Index f = 0; f < t.face_count; ++f)
+        std::fill(t.corner_face.begin() + mesh.face_offsets[f],
+                  t.corner_face.begin() + mesh.face_offsets[f + 1], f);
+    std::vector<Index> count(t.vertex_count, 0);
+    for (Index c = 0; c < corners; ++c)
+        ++count[mesh.face_vertices[c]];
+    t.vertex_corner_offsets = offsets_from_counts(count);
+    t.vertex_corners.resize(corners);
+    std::vector<Index>& fill = count;
+    std::copy(t.vertex_corner_offsets.begin(), t.vertex_corner_offsets.end() - 1, fill.begin());
+    for (Index c = 0; c < corners; ++c)
+        t.vertex_corners[fill[mesh.face_vertices[c]]++] = c;
+}
+
+//! V(i) (increasing) and the edge counts from the corners: an edge (i, j) with n_e
+//! faces appears n_e times among the ends at i (faces have distinct vertices).
+void build_neighbors_and_counts(const Mesh& mesh, Topology& t)
+{
+    std::vector<Index> ends;
+    std::vector<Index> valence(t.vertex_count, 0);
+    for (Index i = 0; i < t.vertex_count; ++i)
+    {
+        edge_ends(mesh, t, i, ends);
+        for (size_t k = 0; k < ends.size();)
+        {
+            size_t run = k + 1;
+            while (run < ends.size() && ends[run] == ends[k])
+                ++run;
+            ++valence[i];
+            if (ends[k] > i) // each edge once, from its lower end
+            {
+                const size_t faces = run - k;
+                Index& kind = faces == 1   ? t.boundary_edge_count
+                              : faces == 2 ? t.regular_edge_count
+                                           : t.singular_edge_count;
+                ++kind;
+            }
+            k = run;
+        }
+    }
+    t.vertex_offsets = offsets_from_counts(valence);
+    valence = {};
+    t.vertex_neighbors.resize(t.vertex_offsets.back());
+    for (Index i = 0; i < t.vertex_count; ++i)
+    {
+        edge_ends(mesh, t, i, ends);
+        const auto last = std::unique(ends.begin(), ends.end());
+        std::copy(ends.begin(), last, t.vertex_neighbors.begin() + t.vertex_offsets[i]);
+    }
+}
+
+//! The primal edges E, corner_edge and F(e): one get/insert per face corner, as the
+//! paper builds the edge array.
+void build_edges(const Mesh& mesh, Topology& t)
+{
+    const Index corners = mesh.corner_count();
     EdgeGraph graph(static_cast<size_t>(corners));
     t.corner_edge.resize(corners);
-    t.corner_face.resize(corners);
     std::vector<Index> face_count_of_edge;
-    face_count_of_edge.reserve(corners);
+    face_count_of_edge.reserve(static_cast<size_t>(t.edge_count()));
     for (Index f = 0; f < t.face_count; ++f)
     {
         const Index begin = mesh.face_offsets[f], n = mesh.face_size(f);
@@ -58,90 +122,87 @@ Topology build_topology(const Mesh& mesh)
                 ++face_count_of_edge[e]; // and grows each time get() finds the edge
             }
             t.corner_edge[begin + k] = e;
-            t.corner_face[begin + k] = f;
         }
     }
     t.edge_vertices = graph.release_pairs();
-    const Index edges = t.edge_count();
 
     // F(e): faces per edge in face order.
     t.edge_face_offsets = offsets_from_counts(face_count_of_edge);
     t.edge_faces.resize(t.edge_face_offsets.back());
-    {
-        std::vector<Index> fill(t.edge_face_offsets.begin(), t.edge_face_offsets.end() - 1);
-        for (Index c = 0; c < corners; ++c)
-            t.edge_faces[fill[t.corner_edge[c]]++] = t.corner_face[c];
-    }
+    std::vector<Index> fill(t.edge_face_offsets.begin(), t.edge_face_offsets.end() - 1);
+    for (Index c = 0; c < corners; ++c)
+        t.edge_faces[fill[t.corner_edge[c]]++] = t.corner_face[c];
+}
+
+//! The dual graph E*: the same get/insert structure over pairs of faces.
+void build_dual(Topology& t)
+{
+    EdgeGraph dual(static_cast<size_t>(t.regular_edge_count));
+    const auto edges = static_cast<Index>(t.edge_vertices.size() / 2);
     for (Index e = 0; e < edges; ++e)
-        switch (t.edge_kind(e))
+        if (t.edge_kind(e) == EdgeKind::Regular)
         {
-            case EdgeKind::Boundary:
-                ++t.boundary_edge_count;
-                break;
-            case EdgeKind::Regular:
-                ++t.regular_edge_count;
-                break;
-            case EdgeKind::Singular:
-                ++t.singular_edge_count;
-                break;
+            const auto faces = t.faces_of_edge(e);
+            dual.insert(faces[0], faces[1]);
         }
-
-    // V(i): neighbours in edge order.
+    t.dual_edge_faces = dual.release_pairs();
+    std::vector<Index> count(t.face_count, 0);
+    for (Index d = 0; d < t.dual_edge_count(); ++d)
     {
-        std::vector<Index> valence(t.vertex_count, 0);
-        for (Index e = 0; e < edges; ++e)
-        {
-            ++valence[t.edge_vertices[2 * e]];
-            ++valence[t.edge_vertices[2 * e + 1]];
-        }
-        t.vertex_offsets = offsets_from_counts(valence);
-        t.vertex_neighbors.resize(t.vertex_offsets.back());
-        std::vector<Index> fill(t.vertex_offsets.begin(), t.vertex_offsets.end() - 1);
-        for (Index e = 0; e < edges; ++e)
-        {
-            const Index i = t.edge_vertices[2 * e], j = t.edge_vertices[2 * e + 1];
-            t.vertex_neighbors[fill[i]++] = j;
-            t.vertex_neighbors[fill[j]++] = i;
-        }
+        ++count[t.dual_edge_faces[2 * d]];
+        ++count[t.dual_edge_faces[2 * d + 1]];
     }
-
-    // Corners of each vertex, in face order.
+    t.face_neighbor_offsets = offsets_from_counts(count);
+    t.face_neighbors.resize(t.face_neighbor_offsets.back());
+    std::vector<Index>& fill = count;
+    std::copy(t.face_neighbor_offsets.begin(), t.face_neighbor_offsets.end() - 1, fill.begin());
+    for (Index d = 0; d < t.dual_edge_count(); ++d)
     {
-        std::vector<Index> count(t.vertex_count, 0);
-        for (Index c = 0; c < corners; ++c)
-            ++count[mesh.face_vertices[c]];
-        t.vertex_corner_offsets = offsets_from_counts(count);
-        t.vertex_corners.resize(corners);
-        std::vector<Index> fill(t.vertex_corner_offsets.begin(), t.vertex_corner_offsets.end() - 1);
-        for (Index c = 0; c < corners; ++c)
-            t.vertex_corners[fill[mesh.face_vertices[c]]++] = c;
+        const Index f = t.dual_edge_faces[2 * d], g = t.dual_edge_faces[2 * d + 1];
+        t.face_neighbors[fill[f]++] = g;
+        t.face_neighbors[fill[g]++] = f;
     }
+}
 
-    // Dual graph E*: the same get/insert structure over pairs of faces.
+template <class T>
+void release(std::vector<T>& v)
+{
+    std::vector<T>().swap(v);
+}
+
+} // namespace
+
+Topology build_topology(const Mesh& mesh, TopologyParts parts)
+{
+    Topology t;
+    t.vertex_count = mesh.vertex_count();
+    t.face_count = mesh.face_count();
+    t.parts = parts;
+    // The corners and V(i) are the base of every other part (and of the edge counts).
+    build_corners(mesh, t);
+    build_neighbors_and_counts(mesh, t);
+    const bool dual = has_parts(parts, TopologyParts::Dual);
+    if (dual || has_parts(parts, TopologyParts::Edges))
+        build_edges(mesh, t);
+    if (dual)
+        build_dual(t);
+    if (!has_parts(parts, TopologyParts::Edges))
     {
-        EdgeGraph dual(static_cast<size_t>(t.regular_edge_count));
-        for (Index e = 0; e < edges; ++e)
-            if (t.edge_kind(e) == EdgeKind::Regular)
-            {
-                const auto faces = t.faces_of_edge(e);
-                dual.insert(faces[0], faces[1]);
-            }
-        t.dual_edge_faces = dual.release_pairs();
-        std::vector<Index> count(t.face_count, 0);
-        for (Index d = 0; d < t.dual_edge_count(); ++d)
-        {
-            ++count[t.dual_edge_faces[2 * d]];
-            ++count[t.dual_edge_faces[2 * d + 1]];
-        }
-        t.face_neighbor_offsets = offsets_from_counts(count);
-        t.face_neighbors.resize(t.face_neighbor_offsets.back());
-        std::vector<Index> fill(t.face_neighbor_offsets.begin(), t.face_neighbor_offsets.end() - 1);
-        for (Index d = 0; d < t.dual_edge_count(); ++d)
-        {
-            const Index f = t.dual_edge_faces[2 * d], g = t.dual_edge_faces[2 * d + 1];
-            t.face_neighbors[fill[f]++] = g;
-            t.face_neighbors[fill[g]++] = f;
-        }
+        release(t.edge_vertices);
+        release(t.corner_edge);
+        release(t.edge_face_offsets);
+        release(t.edge_faces);
+    }
+    if (!has_parts(parts, TopologyParts::Corners))
+    {
+        release(t.vertex_corner_offsets);
+        release(t.vertex_corners);
+        release(t.corner_face);
+    }
+    if (!has_parts(parts, TopologyParts::Neighbors))
+    {
+        release(t.vertex_offsets);
+        release(t.vertex_neighbors);
     }
     return t;
 }
@@ -159,13 +220,13 @@ TopologySummary summarize(const Topology& topology)
         }
         return v;
     };
-    for (Index e = 0; e < topology.edge_count(); ++e)
-    {
-        const Index a = find(topology.edge_vertices[2 * e]);
-        const Index b = find(topology.edge_vertices[2 * e + 1]);
-        if (a != b)
-            parent[std::max(a, b)] = std::min(a, b);
-    }
+    for (Index i = 0; i < topology.vertex_count; ++i)
+        for (const Index j : topology.neighbors(i))
+        {
+            const Index a = find(i), b = find(j);
+            if (a != b)
+                parent[std::max(a, b)] = std::min(a, b);
+        }
     for (Index v = 0; v < topology.vertex_count; ++v)
     {
         if (find(v) == v)

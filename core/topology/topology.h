@@ -17,6 +17,27 @@ enum class EdgeKind
     Singular  //!< n_e >= 3
 };
 
+//! Parts of a Topology that build_topology fills; the others are left empty. The edge
+//! counts (Topology::edge_count, boundary / regular / singular) are always there.
+enum class TopologyParts : unsigned
+{
+    Neighbors = 1, //!< V(i): vertex_offsets, vertex_neighbors
+    Corners = 2,   //!< corners of each vertex and corner_face
+    Edges = 4,     //!< the edge list, corner_edge and F(e)
+    Dual = 8,      //!< E* and N*(f)
+    All = 15
+};
+constexpr TopologyParts operator|(TopologyParts a, TopologyParts b)
+{
+    return static_cast<TopologyParts>(static_cast<unsigned>(a) | static_cast<unsigned>(b));
+}
+//! True when every part of `wanted` is in `parts`.
+constexpr bool has_parts(TopologyParts parts, TopologyParts wanted)
+{
+    return (static_cast<unsigned>(parts) & static_cast<unsigned>(wanted)) ==
+           static_cast<unsigned>(wanted);
+}
+
 //! \brief Connectivity of a polygon mesh: the primal graph G = (V, E) with per-edge
 //! faces F(e), vertex neighbourhoods V(i), and the dual graph E* \cite taubin_2012 ("The
 //! Primal Graph of a Polygon Mesh", "Smoothing Face Normal Vectors").
@@ -29,6 +50,7 @@ struct Topology
 {
     Index vertex_count = 0;
     Index face_count = 0;
+    TopologyParts parts = TopologyParts::All; //!< which of the lists below are filled
 
     //! 2 #E vertex indices, edge e = (edge_vertices[2e], edge_vertices[2e+1]) with i < j.
     std::vector<Index> edge_vertices;
@@ -39,7 +61,8 @@ struct Topology
     std::vector<Index> corner_face;
     //! F(e) in CSR form; n_e = edge_face_offsets[e+1] - edge_face_offsets[e].
     std::vector<Index> edge_face_offsets, edge_faces;
-    //! V(i) in CSR form; n_i = vertex_offsets[i+1] - vertex_offsets[i].
+    //! V(i) in CSR form, each V(i) in increasing order; n_i = vertex_offsets[i+1] -
+    //! vertex_offsets[i].
     std::vector<Index> vertex_offsets, vertex_neighbors;
     //! The corners at vertex i in CSR form (one per incident face).
     std::vector<Index> vertex_corner_offsets, vertex_corners;
@@ -53,7 +76,10 @@ struct Topology
     Index regular_edge_count = 0;
     Index singular_edge_count = 0;
 
-    Index edge_count() const { return static_cast<Index>(edge_vertices.size() / 2); }
+    Index edge_count() const
+    {
+        return boundary_edge_count + regular_edge_count + singular_edge_count;
+    }
     Index dual_edge_count() const { return static_cast<Index>(dual_edge_faces.size() / 2); }
     Index edge_face_count(Index e) const { return edge_face_offsets[e + 1] - edge_face_offsets[e]; }
     EdgeKind edge_kind(Index e) const;
@@ -82,10 +108,13 @@ struct Topology
     }
 };
 
-//! \brief Builds the topology of `mesh` in linear expected time with the paper's
-//! hash-based graph (EdgeGraph::get / insert).
+//! \brief Builds the topology of `mesh`, or only the `parts` asked for (a solver needs
+//! V(i) and, for the face terms, the corners: about a third of the whole, built without
+//! the edge hash). Edges use the paper's hash-based graph (EdgeGraph::get / insert), in
+//! linear expected time; V(i) and the edge counts come from the corners of each vertex.
+//! Every part is the same whichever others are built.
 //! \pre validate_mesh(mesh) holds.
-Topology build_topology(const Mesh& mesh);
+Topology build_topology(const Mesh& mesh, TopologyParts parts = TopologyParts::All);
 
 //! Summary counts beyond the edge classification, for reports.
 struct TopologySummary
@@ -95,7 +124,8 @@ struct TopologySummary
     Index isolated_vertices = 0; //!< vertices with n_i = 0
 };
 
-//! \brief Counts connected components (union-find over the edges) and isolated vertices.
+//! \brief Counts connected components (union-find over V(i)) and isolated vertices.
+//! \pre the topology has TopologyParts::Neighbors.
 TopologySummary summarize(const Topology& topology);
 
 //! \brief Corners before and after corner k in its face: the vertices joined to the

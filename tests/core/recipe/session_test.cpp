@@ -427,6 +427,37 @@ TEST_SUITE("Session")
         }
     }
 
+    TEST_CASE("a topology of the required parts only gives the same bits; fewer are refused")
+    {
+        const Mesh m = noisy(test::icosphere(2));
+        const Topology whole = build_topology(m);
+        std::vector<Case> cases = configurations(m);
+        Recipe joint;
+        joint.iterations = 5;
+        joint.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}};
+        joint.joint = Joint{0.5};
+        cases.push_back({"normal, joint mode", joint});
+        for (const Case& c : cases)
+        {
+            CAPTURE(c.name);
+            const TopologyParts parts = required_topology(c.recipe);
+            const Topology lean = build_topology(m, parts);
+            Mesh a = m, b = m;
+            smooth(a, whole, c.recipe);
+            smooth(b, lean, c.recipe);
+            CHECK(a.positions == b.positions);
+            // Without any one of the required parts the session refuses to start.
+            for (const TopologyParts part :
+                 {TopologyParts::Neighbors, TopologyParts::Corners, TopologyParts::Dual})
+                if (has_parts(parts, part))
+                {
+                    const auto fewer = static_cast<TopologyParts>(static_cast<unsigned>(parts) &
+                                                                  ~static_cast<unsigned>(part));
+                    CHECK_THROWS_AS(Session(m, build_topology(m, fewer), c.recipe), SolverError);
+                }
+        }
+    }
+
     TEST_CASE("moving a pin changes the right-hand side only")
     {
         const Mesh m = noisy(test::icosphere(2));

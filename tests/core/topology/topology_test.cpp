@@ -79,6 +79,57 @@ void check_invariants(const Mesh& m)
             CHECK(std::find(back.begin(), back.end(), f) != back.end());
         }
     CHECK(t.boundary_edge_count + t.regular_edge_count + t.singular_edge_count == t.edge_count());
+    // The counts (taken from the corners) agree with F(e) (taken from the edge hash), and
+    // V(i) is increasing and holds exactly the other ends of the edges at i.
+    Index kinds[3] = {0, 0, 0};
+    for (Index e = 0; e < t.edge_count(); ++e)
+        ++kinds[static_cast<int>(t.edge_kind(e))];
+    CHECK(kinds[0] == t.boundary_edge_count);
+    CHECK(kinds[1] == t.regular_edge_count);
+    CHECK(kinds[2] == t.singular_edge_count);
+    std::vector<std::set<Index>> ends(static_cast<size_t>(t.vertex_count));
+    for (Index e = 0; e < t.edge_count(); ++e)
+    {
+        ends[t.edge_vertices[2 * e]].insert(t.edge_vertices[2 * e + 1]);
+        ends[t.edge_vertices[2 * e + 1]].insert(t.edge_vertices[2 * e]);
+    }
+    for (Index i = 0; i < t.vertex_count; ++i)
+    {
+        const auto v = t.neighbors(i);
+        CHECK(std::is_sorted(v.begin(), v.end()));
+        CHECK(std::set<Index>(v.begin(), v.end()) == ends[i]);
+    }
+}
+
+// Each part of a topology built with `parts` equals the same part of the whole one; the
+// parts not asked for are empty; the counts are always there.
+void check_parts(const Mesh& m, TopologyParts parts)
+{
+    const Topology all = build_topology(m);
+    const Topology t = build_topology(m, parts);
+    CAPTURE(static_cast<unsigned>(parts));
+    CHECK(t.parts == parts);
+    CHECK(t.edge_count() == all.edge_count());
+    CHECK(t.boundary_edge_count == all.boundary_edge_count);
+    CHECK(t.regular_edge_count == all.regular_edge_count);
+    CHECK(t.singular_edge_count == all.singular_edge_count);
+    const auto same_or_empty = [&](TopologyParts part, const std::vector<Index>& got,
+                                   const std::vector<Index>& whole) {
+        if (has_parts(parts, part))
+            CHECK(got == whole);
+        else
+            CHECK(got.empty());
+    };
+    same_or_empty(TopologyParts::Neighbors, t.vertex_offsets, all.vertex_offsets);
+    same_or_empty(TopologyParts::Neighbors, t.vertex_neighbors, all.vertex_neighbors);
+    same_or_empty(TopologyParts::Corners, t.vertex_corner_offsets, all.vertex_corner_offsets);
+    same_or_empty(TopologyParts::Corners, t.vertex_corners, all.vertex_corners);
+    same_or_empty(TopologyParts::Corners, t.corner_face, all.corner_face);
+    same_or_empty(TopologyParts::Edges, t.edge_vertices, all.edge_vertices);
+    same_or_empty(TopologyParts::Edges, t.corner_edge, all.corner_edge);
+    same_or_empty(TopologyParts::Edges, t.edge_faces, all.edge_faces);
+    same_or_empty(TopologyParts::Dual, t.dual_edge_faces, all.dual_edge_faces);
+    same_or_empty(TopologyParts::Dual, t.face_neighbors, all.face_neighbors);
 }
 
 } // namespace
@@ -160,6 +211,16 @@ TEST_SUITE("Topology")
         const Topology t = build_topology(bunny);
         // Closed surface of genus 0: V - E + F = 2.
         CHECK(bunny.vertex_count() - t.edge_count() + bunny.face_count() == 2);
+    }
+
+    TEST_CASE("any set of parts is the same as in the whole topology")
+    {
+        const Mesh bunny = io::read_mesh((test::assets_dir() / "bunny.obj").string());
+        for (const Mesh& m :
+             {test::tetrahedron(), test::quad_cube(), test::open_grid(4, 3),
+              test::nonmanifold_fan(), test::with_isolated_vertex(), test::mixed_polygons(), bunny})
+            for (unsigned bits = 0; bits < 16; ++bits)
+                check_parts(m, static_cast<TopologyParts>(bits));
     }
 
     TEST_CASE("closed fixtures satisfy Euler's formula")
