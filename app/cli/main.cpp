@@ -20,6 +20,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/cli/report.h"
@@ -154,25 +155,29 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
     }
     nlohmann::json report;
     double setup_seconds = 0, solve_seconds = 0;
+    // Solve in the locality numbering (neighbours near each other in memory): the one copy
+    // of the mesh is renumbered in place and back before writing, so the output, the
+    // recipe and the report keep the file's numbering.
+    LocalityOrder order = locality_order(mesh);
+    mesh = reorder_mesh(mesh, order);
     {
-        // Solve in the locality numbering (neighbours near each other in memory); the
-        // output, the recipe and the report keep the file's numbering. The solver's data
-        // lives in this scope only: it is freed before the output is written.
-        const LocalityOrder order = locality_order(mesh);
-        Mesh work = reorder_mesh(mesh, order);
-        const Topology topology = build_topology(work, required_topology(recipe));
-        Session session(work, topology,
+        // The solver's data lives in this scope only: it is freed before the output is
+        // written.
+        const Topology topology = build_topology(mesh, required_topology(recipe));
+        Session session(mesh, topology,
                         renumber_recipe(recipe, order.vertex_index, order.face_index));
-        session.apply_hard_targets(work.positions);
+        session.apply_hard_targets(mesh.positions);
         setup_seconds = seconds_since(t_setup);
 
         const auto t_solve = Clock::now();
-        const SmoothResult result = run(session, work.positions);
-        positions_to_file_order(work.positions, order, mesh.positions);
+        const SmoothResult result = run(session, mesh.positions);
         solve_seconds = seconds_since(t_solve);
         validate_mesh(mesh); // never write garbage: every coordinate is still finite
         report = cli::smooth_report(mesh, topology, session, result, read_report);
     }
+    const auto t_back = Clock::now();
+    mesh = reorder_mesh(mesh, inverse_order(std::move(order)));
+    solve_seconds += seconds_since(t_back);
 
     const auto t_write = Clock::now();
     write_output(mesh, out_path, out_format, output_options(encoding, out_format, read_report));

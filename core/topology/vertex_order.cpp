@@ -139,6 +139,13 @@ Mesh reorder_mesh(const Mesh& mesh, const LocalityOrder& order)
     return out;
 }
 
+LocalityOrder inverse_order(LocalityOrder order)
+{
+    std::swap(order.vertex_order, order.vertex_index);
+    std::swap(order.face_order, order.face_index);
+    return order;
+}
+
 void positions_to_file_order(std::span<const Scalar> internal, const LocalityOrder& order,
                              std::span<Scalar> file)
 {

@@ -42,6 +42,12 @@ LocalityOrder locality_order(const Mesh& mesh);
 //! each face in their order (orientation kept).
 Mesh reorder_mesh(const Mesh& mesh, const LocalityOrder& order);
 
+//! \brief The order that undoes `order`: reorder_mesh(reorder_mesh(m, order),
+//! inverse_order(order)) == m exactly, so a program can renumber its one copy of the mesh
+//! in place for the solver and back for the file. Takes the order by value (move it in:
+//! the four arrays change roles, nothing is copied).
+LocalityOrder inverse_order(LocalityOrder order);
+
 //! \brief Internal positions (3 #V) back into the file's vertex order.
 void positions_to_file_order(std::span<const Scalar> internal, const LocalityOrder& order,
                              std::span<Scalar> file);

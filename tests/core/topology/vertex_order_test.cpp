@@ -151,5 +151,10 @@ TEST_CASE("locality_order: permutations, faces sorted by first vertex, exact rou
         std::vector<Scalar> back(m.positions.size(), -1);
         positions_to_file_order(w.positions, o, back);
         CHECK(back == m.positions);
+        // The inverse order brings the whole mesh back, faces and corners included.
+        const Mesh again = reorder_mesh(w, inverse_order(o));
+        CHECK(again.positions == m.positions);
+        CHECK(again.face_offsets == m.face_offsets);
+        CHECK(again.face_vertices == m.face_vertices);
     }
 }
