@@ -16,8 +16,7 @@ FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
       denominator_(denominator),
       faces_(faces.begin(), faces.end()),
       constrained_(mesh.face_count(), 0),
-      target_(3 * static_cast<size_t>(mesh.face_count()), 0),
-      residual_(3 * static_cast<size_t>(mesh.face_count()), 0)
+      target_(3 * static_cast<size_t>(mesh.face_count()), 0)
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
@@ -70,23 +69,10 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
 }
 
 void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
-                               std::span<Scalar> rhs)
+                               std::span<Scalar> rhs) const
 {
-    // Per face first (each face writes its own residual), then each vertex gathers.
-    update_residuals(x);
     parallel_for(static_cast<Index>(vertices.size()),
-                 [&](Index k) { add_vertex_rhs(vertices[k], &rhs[3 * vertices[k]]); });
-}
-
-void FaceCentroidTerm::update_residuals(std::span<const Scalar> x)
-{
-    parallel_for(static_cast<Index>(faces_.size()), [&](Index k) {
-        const Index f = faces_[k];
-        const Vec3 c = face_centroid(*mesh_, x, f);
-        const Scalar w = mu_ / mesh_->face_size(f);
-        for (int a = 0; a < 3; ++a)
-            residual_[3 * f + a] = w * (target_[3 * f + a] - c[a]);
-    });
+                 [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
 } // namespace meshfair

@@ -7,18 +7,6 @@
 
 namespace meshfair {
 
-Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f)
-{
-    Vec3 c{0, 0, 0};
-    for (Index v : mesh.face(f))
-        for (int a = 0; a < 3; ++a)
-            c[a] += x[3 * v + a];
-    const Scalar inv = Scalar(1) / mesh.face_size(f);
-    for (int a = 0; a < 3; ++a)
-        c[a] *= inv;
-    return c;
-}
-
 Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f)
 {
     const auto face = mesh.face(f);

@@ -11,7 +11,18 @@
 namespace meshfair {
 
 //! \brief Centroid x_f = (1/n_f) sum_{i in f} x_i of face f for positions `x` (3 #V).
-Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f);
+inline Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f)
+{
+    // Inline: the centroid term computes it for every corner of every step.
+    Vec3 c{0, 0, 0};
+    for (Index v : mesh.face(f))
+        for (int a = 0; a < 3; ++a)
+            c[a] += x[3 * v + a];
+    const Scalar inv = Scalar(1) / mesh.face_size(f);
+    for (int a = 0; a < 3; ++a)
+        c[a] *= inv;
+    return c;
+}
 
 //! \brief Unit normal of face f by Newell's method (the normalized sum of the cross
 //! products of consecutive corners), well defined for non-planar polygons; the zero

@@ -308,8 +308,6 @@ bool Session::fused() const
 
 void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
 {
-    if (centroid_)
-        centroid_->update_residuals(x);
     const bool blocks = !system_.factor.empty();
     const Scalar lambda = recipe_.lambda;
     const Scalar* xp = x.data();
@@ -321,7 +319,7 @@ void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
         if (soft_)
             soft_->add_vertex_rhs(i, xp, r);
         if (centroid_)
-            centroid_->add_vertex_rhs(i, r);
+            centroid_->add_vertex_rhs(i, xp, r);
         if (normal_)
             normal_->add_vertex_rhs(i, xp, normals_.data(), r);
         Scalar dx[3];

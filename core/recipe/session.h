@@ -111,10 +111,9 @@ private:
     //! True when step() can be fused: the Jacobi method with a fixed lambda and fixed
     //! normals (no line search, no joint mode).
     bool fused() const;
-    //! \brief The fused step: one pass over the constrained faces (centroid residuals),
-    //! then one sweep over the free vertices in which each vertex adds every term's part
-    //! of r_i (the terms' add_vertex_rhs, in the order general_step adds them), solves its
-    //! 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
+    //! \brief The fused step: one sweep over the free vertices in which each vertex adds
+    //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
+    //! solves its 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
     //! general_step without its right-hand-side and displacement arrays: what lets a
     //! step run near memory speed. x and y must not overlap; y is written at free
     //! vertices only.

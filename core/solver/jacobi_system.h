@@ -28,8 +28,11 @@ struct JacobiSystem
     std::vector<Scalar> rhs;    //!< 3 #V
 };
 
-//! Cholesky factor L (row-major lower triangle l00 l10 l11 l20 l21 l22) of the SPD
-//! matrix (d I + B), B given as xx xy xz yy yz zz. False when not positive definite.
+//! Cholesky factor L of the SPD matrix (d I + B), B given as xx xy xz yy yz zz, stored
+//! as 1/l00 l10 1/l11 l20 l21 1/l22 (row-major lower triangle with the diagonal inverted:
+//! cholesky3_solve then multiplies where it would divide, and a chain of six dependent
+//! divisions per vertex was a large part of the combined step). False when not positive
+//! definite.
 inline bool cholesky3(Scalar d, const Scalar* B, Scalar* L)
 {
     const Scalar a00 = d + B[0], a10 = B[1], a20 = B[2], a11 = d + B[3], a21 = B[4], a22 = d + B[5];
@@ -45,24 +48,24 @@ inline bool cholesky3(Scalar d, const Scalar* B, Scalar* L)
     const Scalar s22 = a22 - l20 * l20 - l21 * l21;
     if (!(s22 > 0))
         return false;
-    L[0] = l00;
+    L[0] = 1 / l00;
     L[1] = l10;
-    L[2] = l11;
+    L[2] = 1 / l11;
     L[3] = l20;
     L[4] = l21;
-    L[5] = std::sqrt(s22);
+    L[5] = 1 / std::sqrt(s22);
     return true;
 }
 
 //! Solves L L^T x = r with a factor from cholesky3.
 inline void cholesky3_solve(const Scalar* L, const Scalar* r, Scalar* x)
 {
-    const Scalar y0 = r[0] / L[0];
-    const Scalar y1 = (r[1] - L[1] * y0) / L[2];
-    const Scalar y2 = (r[2] - L[3] * y0 - L[4] * y1) / L[5];
-    x[2] = y2 / L[5];
-    x[1] = (y1 - L[4] * x[2]) / L[2];
-    x[0] = (y0 - L[1] * x[1] - L[3] * x[2]) / L[0];
+    const Scalar y0 = r[0] * L[0];
+    const Scalar y1 = (r[1] - L[1] * y0) * L[2];
+    const Scalar y2 = (r[2] - L[3] * y0 - L[4] * y1) * L[5];
+    x[2] = y2 * L[5];
+    x[1] = (y1 - L[4] * x[2]) * L[2];
+    x[0] = (y0 - L[1] * x[1] - L[3] * x[2]) * L[0];
 }
 
 } // namespace meshfair
