@@ -2,25 +2,44 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/face_centroid_term.h"
 
+#include <algorithm>
+#include <utility>
+
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
 
 namespace meshfair {
 
 FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
-                                   std::span<const Index> faces, Scalar mu,
-                                   std::span<const Scalar> targets, CentroidDenominator denominator)
+                                   std::vector<Index> faces, Scalar mu,
+                                   CentroidDenominator denominator)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
       denominator_(denominator),
-      faces_(faces.begin(), faces.end()),
+      faces_(std::move(faces)),
       constrained_(mesh.face_count(), 0),
       target_(3 * static_cast<size_t>(mesh.face_count()), 0)
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
+}
+
+FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
+                                   std::vector<Index> faces, Scalar mu,
+                                   std::span<const Scalar> targets, CentroidDenominator denominator)
+    : FaceCentroidTerm(mesh, topology, std::move(faces), mu, denominator)
+{
     set_targets(targets);
+}
+
+void FaceCentroidTerm::set_targets_to_centroids(std::span<const Scalar> x)
+{
+    for (const Index f : faces_)
+    {
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        std::copy(c.begin(), c.end(), &target_[3 * static_cast<size_t>(f)]);
+    }
 }
 
 void FaceCentroidTerm::set_targets(std::span<const Scalar> targets)

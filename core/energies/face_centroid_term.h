@@ -34,10 +34,16 @@ class FaceCentroidTerm
 {
 public:
     //! \pre faces distinct and < #F; targets hold 3 values per listed face.
-    FaceCentroidTerm(const Mesh& mesh, const Topology& topology, std::span<const Index> faces,
+    FaceCentroidTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
                      Scalar mu, std::span<const Scalar> targets, CentroidDenominator denominator);
+    //! The same with every target at the origin until set_targets or
+    //! set_targets_to_centroids.
+    FaceCentroidTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
+                     Scalar mu, CentroidDenominator denominator);
 
     void set_targets(std::span<const Scalar> targets);
+    //! Targets at the listed faces' centroids for positions `x` (3 #V): no gathered copy.
+    void set_targets_to_centroids(std::span<const Scalar> x);
     const std::vector<Index>& faces() const { return faces_; }
 
     Scalar energy(std::span<const Scalar> x) const;

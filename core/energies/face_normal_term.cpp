@@ -2,16 +2,18 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/face_normal_term.h"
 
+#include <utility>
+
 #include "core/solver/parallel.h"
 
 namespace meshfair {
 
-FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology,
-                               std::span<const Index> faces, Scalar mu)
+FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
+                               Scalar mu)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
-      faces_(faces.begin(), faces.end()),
+      faces_(std::move(faces)),
       constrained_(mesh.face_count(), 0)
 {
     for (const Index f : faces_)

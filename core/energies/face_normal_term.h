@@ -26,8 +26,7 @@ class FaceNormalTerm
 {
 public:
     //! \pre faces distinct and < #F.
-    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::span<const Index> faces,
-                   Scalar mu);
+    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces, Scalar mu);
 
     Scalar mu() const { return mu_; }
     const std::vector<Index>& faces() const { return faces_; }

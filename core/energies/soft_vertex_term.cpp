@@ -2,20 +2,34 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/soft_vertex_term.h"
 
+#include <algorithm>
+#include <utility>
+
 #include "core/solver/parallel.h"
 
 namespace meshfair {
 
-SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::span<const Index> vertices, Scalar mu,
-                               std::span<const Scalar> targets)
+SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu)
     : mu_(mu),
-      vertices_(vertices.begin(), vertices.end()),
+      vertices_(std::move(vertices)),
       weight_(vertex_count, 0),
       target_(3 * static_cast<size_t>(vertex_count), 0)
 {
     for (const Index i : vertices_)
         weight_[i] = mu_;
+}
+
+SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
+                               std::span<const Scalar> targets)
+    : SoftVertexTerm(vertex_count, std::move(vertices), mu)
+{
     set_targets(targets);
+}
+
+void SoftVertexTerm::set_targets_at(std::span<const Scalar> x)
+{
+    for (const Index i : vertices_)
+        std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &target_[3 * static_cast<size_t>(i)]);
 }
 
 void SoftVertexTerm::set_targets(std::span<const Scalar> targets)

@@ -21,10 +21,14 @@ class SoftVertexTerm
 {
 public:
     //! \pre vertices distinct and < vertex_count; targets hold 3 values per listed vertex.
-    SoftVertexTerm(Index vertex_count, std::span<const Index> vertices, Scalar mu,
+    SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
                    std::span<const Scalar> targets);
+    //! The same with every target at the origin until set_targets or set_targets_at.
+    SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu);
 
     void set_targets(std::span<const Scalar> targets);
+    //! Targets at positions `x` (3 #V) of the listed vertices: no gathered copy.
+    void set_targets_at(std::span<const Scalar> x);
     Scalar mu() const { return mu_; }
     const std::vector<Index>& vertices() const { return vertices_; }
 

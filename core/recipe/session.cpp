@@ -3,6 +3,7 @@
 #include "core/recipe/session.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
@@ -110,43 +111,42 @@ void Session::precompute()
             fixed[v] = fixed[v] || !inside[v];
     }
 
+    // The terms take their index lists by move and read targets at the initial
+    // positions directly: no gathered copies (a million-vertex mesh would keep their
+    // freed pages resident).
     soft_.reset();
     if (recipe_.soft)
     {
         const SoftVertices& s = *recipe_.soft;
         std::vector<Index> vertices;
-        std::vector<Scalar> targets;
         if (s.vertices.all)
         {
+            vertices.reserve(static_cast<size_t>(nv));
             for (Index v = 0; v < nv; ++v)
                 if (!is_hard[v])
                     vertices.push_back(v);
-            targets = gather3(s.targets.empty() ? x0 : std::span<const Scalar>(flatten(s.targets)),
-                              vertices);
         }
         else
-        {
             vertices = s.vertices.indices;
-            targets = s.targets.empty() ? gather3(x0, vertices) : flatten(s.targets);
-        }
-        soft_.emplace(nv, vertices, s.mu, targets);
+        soft_.emplace(nv, std::move(vertices), s.mu);
+        if (s.targets.empty())
+            soft_->set_targets_at(x0);
+        else if (s.vertices.all) // one target per vertex of the mesh
+            soft_->set_targets_at(flatten(s.targets));
+        else
+            soft_->set_targets(flatten(s.targets));
     }
 
     centroid_.reset();
     if (recipe_.centroid)
     {
         const CentroidConstraints& c = *recipe_.centroid;
-        const std::vector<Index> faces = c.faces.all ? all_indices(nf) : c.faces.indices;
-        std::vector<Scalar> targets;
+        centroid_.emplace(mesh, *topology_, c.faces.all ? all_indices(nf) : c.faces.indices, c.mu,
+                          c.denominator);
         if (c.targets.empty())
-            for (const Index f : faces)
-            {
-                const Vec3 p = face_centroid(mesh, x0, f);
-                targets.insert(targets.end(), p.begin(), p.end());
-            }
+            centroid_->set_targets_to_centroids(x0);
         else
-            targets = flatten(c.targets);
-        centroid_.emplace(mesh, *topology_, faces, c.mu, targets, c.denominator);
+            centroid_->set_targets(flatten(c.targets));
     }
 
     normal_.reset();
@@ -157,7 +157,7 @@ void Session::precompute()
     if (recipe_.normal)
     {
         const NormalConstraints& n = *recipe_.normal;
-        const std::vector<Index> faces = n.faces.all ? all_indices(nf) : n.faces.indices;
+        std::vector<Index> faces = n.faces.all ? all_indices(nf) : n.faces.indices;
         normals_ = face_normals(mesh, x0);
         const NormalSmoothing ns = recipe_.normal_smoothing.value_or(NormalSmoothing{});
         // The smoothing constraints' normals default to the initial ones: gathered before
@@ -174,7 +174,7 @@ void Session::precompute()
             for (size_t k = 0; k < faces.size(); ++k)
                 std::copy_n(&given[3 * k], 3, &normals_[3 * faces[k]]);
         }
-        normal_.emplace(mesh, *topology_, faces, n.mu);
+        normal_.emplace(mesh, *topology_, std::move(faces), n.mu);
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
                            soft_normals);
         smoothing_->apply_hard(normals_);
