@@ -103,7 +103,7 @@ void build_edges(const Mesh& mesh, Topology& t)
     EdgeGraph graph(static_cast<size_t>(corners));
     t.corner_edge.resize(corners);
     std::vector<Index> face_count_of_edge;
-    face_count_of_edge.reserve(static_cast<size_t>(t.edge_count()));
+    face_count_of_edge.reserve(static_cast<size_t>(corners));
     for (Index f = 0; f < t.face_count; ++f)
     {
         const Index begin = mesh.face_offsets[f], n = mesh.face_size(f);
@@ -132,6 +132,36 @@ void build_edges(const Mesh& mesh, Topology& t)
     std::vector<Index> fill(t.edge_face_offsets.begin(), t.edge_face_offsets.end() - 1);
     for (Index c = 0; c < corners; ++c)
         t.edge_faces[fill[t.corner_edge[c]]++] = t.corner_face[c];
+}
+
+//! V(i) (increasing) and the edge counts from the edge list and F(e): cheaper than
+//! build_neighbors_and_counts once the edges exist, and the same result.
+void neighbors_and_counts_from_edges(Topology& t)
+{
+    const auto edges = static_cast<Index>(t.edge_vertices.size() / 2);
+    std::vector<Index> valence(t.vertex_count, 0);
+    for (Index e = 0; e < edges; ++e)
+    {
+        ++valence[t.edge_vertices[2 * e]];
+        ++valence[t.edge_vertices[2 * e + 1]];
+        Index& kind = t.edge_face_count(e) == 1   ? t.boundary_edge_count
+                      : t.edge_face_count(e) == 2 ? t.regular_edge_count
+                                                  : t.singular_edge_count;
+        ++kind;
+    }
+    t.vertex_offsets = offsets_from_counts(valence);
+    t.vertex_neighbors.resize(t.vertex_offsets.back());
+    std::vector<Index>& fill = valence;
+    std::copy(t.vertex_offsets.begin(), t.vertex_offsets.end() - 1, fill.begin());
+    for (Index e = 0; e < edges; ++e)
+    {
+        const Index i = t.edge_vertices[2 * e], j = t.edge_vertices[2 * e + 1];
+        t.vertex_neighbors[fill[i]++] = j;
+        t.vertex_neighbors[fill[j]++] = i;
+    }
+    for (Index i = 0; i < t.vertex_count; ++i)
+        std::sort(t.vertex_neighbors.begin() + t.vertex_offsets[i],
+                  t.vertex_neighbors.begin() + t.vertex_offsets[i + 1]);
 }
 
 //! The dual graph E*: the same get/insert structure over pairs of faces.
@@ -178,12 +208,17 @@ Topology build_topology(const Mesh& mesh, TopologyParts parts)
     t.vertex_count = mesh.vertex_count();
     t.face_count = mesh.face_count();
     t.parts = parts;
-    // The corners and V(i) are the base of every other part (and of the edge counts).
+    // The corners are the base of every other part. V(i) and the edge counts come from
+    // the edges when they are built anyway, else from the corners (no edge hash).
     build_corners(mesh, t);
-    build_neighbors_and_counts(mesh, t);
     const bool dual = has_parts(parts, TopologyParts::Dual);
     if (dual || has_parts(parts, TopologyParts::Edges))
+    {
         build_edges(mesh, t);
+        neighbors_and_counts_from_edges(t);
+    }
+    else
+        build_neighbors_and_counts(mesh, t);
     if (dual)
         build_dual(t);
     if (!has_parts(parts, TopologyParts::Edges))

@@ -111,8 +111,8 @@ struct Topology
 //! \brief Builds the topology of `mesh`, or only the `parts` asked for (a solver needs
 //! V(i) and, for the face terms, the corners: about a third of the whole, built without
 //! the edge hash). Edges use the paper's hash-based graph (EdgeGraph::get / insert), in
-//! linear expected time; V(i) and the edge counts come from the corners of each vertex.
-//! Every part is the same whichever others are built.
+//! linear expected time; without them, V(i) and the edge counts come from the corners of
+//! each vertex. Every part is the same whichever others are built.
 //! \pre validate_mesh(mesh) holds.
 Topology build_topology(const Mesh& mesh, TopologyParts parts = TopologyParts::All);
 
