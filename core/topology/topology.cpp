@@ -25,6 +25,14 @@ std::vector<Index> offsets_from_counts(const std::vector<Index>& counts)
     return offsets;
 }
 
+//! Counts one edge with n_e = `faces` as boundary, regular or singular.
+void count_edge(Topology& t, size_t faces)
+{
+    ++(faces == 1   ? t.boundary_edge_count
+       : faces == 2 ? t.regular_edge_count
+                    : t.singular_edge_count);
+}
+
 //! The other ends of the face edges at vertex i, sorted, an end j repeated once per face
 //! of the edge (i, j): the corners of i contribute their next and previous vertices.
 void edge_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<Index>& ends)
@@ -75,11 +83,7 @@ void build_neighbors_and_counts(const Mesh& mesh, Topology& t)
             ++valence[i];
             if (ends[k] > i) // each edge once, from its lower end
             {
-                const size_t faces = run - k;
-                Index& kind = faces == 1   ? t.boundary_edge_count
-                              : faces == 2 ? t.regular_edge_count
-                                           : t.singular_edge_count;
-                ++kind;
+                count_edge(t, run - k);
             }
             k = run;
         }
@@ -144,10 +148,7 @@ void neighbors_and_counts_from_edges(Topology& t)
     {
         ++valence[t.edge_vertices[2 * e]];
         ++valence[t.edge_vertices[2 * e + 1]];
-        Index& kind = t.edge_face_count(e) == 1   ? t.boundary_edge_count
-                      : t.edge_face_count(e) == 2 ? t.regular_edge_count
-                                                  : t.singular_edge_count;
-        ++kind;
+        count_edge(t, static_cast<size_t>(t.edge_face_count(e)));
     }
     t.vertex_offsets = offsets_from_counts(valence);
     t.vertex_neighbors.resize(t.vertex_offsets.back());
