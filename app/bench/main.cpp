@@ -356,11 +356,13 @@ private:
 
     double time_steps(Session& session, const std::vector<Scalar>& start)
     {
+        // As run() and meshfair-cli smooth step: on the session's kept positions.
         x_ = start;
         session.apply_hard_targets(x_);
+        session.set_positions(x_);
         const auto t = Clock::now();
         for (int s = 0; s < o_.steps; ++s)
-            session.step(x_);
+            session.step();
         return seconds_since(t) / o_.steps;
     }
 

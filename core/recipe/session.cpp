@@ -3,6 +3,7 @@
 #include "core/recipe/session.h"
 
 #include <algorithm>
+#include <array>
 #include <utility>
 
 #include "core/errors.h"
@@ -306,34 +307,59 @@ bool Session::fused() const
     return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !joint_;
 }
 
+template <bool Soft, bool Centroid, bool Normal>
+void Session::fused_sweep(const Scalar* x, Scalar* y) const
+{
+    // Copies, captured by value: the loop then keeps them in registers.
+    const Scalar lambda = recipe_.lambda;
+    const Index* free = free_.data();
+    const Scalar* normals = normals_.data();
+    const Scalar* factor = system_.factor.data();
+    const Scalar* diagonal = system_.diagonal.data();
+    parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
+        for (Index k = begin; k < end; ++k)
+        {
+            const Index i = free[k];
+            Scalar r[3] = {0, 0, 0};
+            edge_.add_vertex_rhs(i, x, r);
+            if constexpr (Soft)
+                soft_->add_vertex_rhs(i, x, r);
+            if constexpr (Centroid)
+                centroid_->add_vertex_rhs(i, x, r);
+            if constexpr (Normal)
+                normal_->add_vertex_rhs(i, x, normals, r);
+            Scalar dx[3];
+            if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
+                cholesky3_solve(&factor[6 * i], r, dx);
+            else
+            {
+                const Scalar inv = Scalar(1) / diagonal[i];
+                for (int a = 0; a < 3; ++a)
+                    dx[a] = r[a] * inv;
+            }
+            for (int a = 0; a < 3; ++a)
+                y[3 * i + a] = x[3 * i + a] + lambda * dx[a];
+        }
+    });
+}
+
+namespace {
+
+using FusedSweep = void (Session::*)(const Scalar*, Scalar*) const;
+
+} // namespace
+
 void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
 {
-    const bool blocks = !system_.factor.empty();
-    const Scalar lambda = recipe_.lambda;
-    const Scalar* xp = x.data();
-    Scalar* yp = y.data();
-    parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
-        const Index i = free_[k];
-        Scalar r[3] = {0, 0, 0};
-        edge_.add_vertex_rhs(i, xp, r);
-        if (soft_)
-            soft_->add_vertex_rhs(i, xp, r);
-        if (centroid_)
-            centroid_->add_vertex_rhs(i, xp, r);
-        if (normal_)
-            normal_->add_vertex_rhs(i, xp, normals_.data(), r);
-        Scalar dx[3];
-        if (blocks)
-            cholesky3_solve(&system_.factor[6 * i], r, dx);
-        else
-        {
-            const Scalar inv = Scalar(1) / system_.diagonal[i];
-            for (int a = 0; a < 3; ++a)
-                dx[a] = r[a] * inv;
-        }
-        for (int a = 0; a < 3; ++a)
-            yp[3 * i + a] = xp[3 * i + a] + lambda * dx[a];
-    });
+    // One instance per combination of terms: bit 0 soft, bit 1 centroid, bit 2 normal.
+    static constexpr std::array<FusedSweep, 8> sweeps = []<size_t... I>(std::index_sequence<I...>)
+    {
+        return std::array<FusedSweep, 8>{
+            &Session::fused_sweep<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0>...};
+    }
+    (std::make_index_sequence<8>{});
+    const size_t which = (soft_ ? 1 : 0) | (centroid_ ? 2 : 0) | (normal_ ? 4 : 0);
+    (this->*sweeps[which])(x.data(), y.data());
 }
 
 void Session::set_positions(std::span<const Scalar> x)

@@ -118,6 +118,11 @@ private:
     //! step run near memory speed. x and y must not overlap; y is written at free
     //! vertices only.
     void fused_step(std::span<const Scalar> x, std::span<Scalar> y);
+    //! fused_step for one combination of active terms, so that the sweep tests nothing
+    //! per vertex: the plain Laplacian step is a bare gather loop. (The Jacobi method
+    //! solves 3x3 blocks exactly when the normal term is on.)
+    template <bool Soft, bool Centroid, bool Normal>
+    void fused_sweep(const Scalar* x, Scalar* y) const;
     //! The general step (separate right-hand side, displacement, line search, joint
     //! update), in place on x.
     StepInfo general_step(std::span<Scalar> x);

@@ -35,6 +35,15 @@ template <class F>
 }
 
 template <class F>
+[[gnu::noinline]] void parallel_ranges_threads(Index n, int threads, F& f)
+{
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (int t = 0; t < threads; ++t)
+        f(static_cast<Index>(std::int64_t{n} * t / threads),
+          static_cast<Index>(std::int64_t{n} * (t + 1) / threads));
+}
+
+template <class F>
 [[gnu::noinline]] void parallel_blocks(std::int64_t blocks, int threads, F& sum_block)
 {
 #pragma omp parallel for schedule(static) num_threads(threads)
@@ -56,6 +65,20 @@ void parallel_for(Index n, F&& f)
     else
         for (Index k = 0; k < n; ++k)
             f(k);
+}
+
+//! \brief f(begin, end) once per thread, on contiguous ranges that together cover [0, n):
+//! parallel_for for loops whose body is one sweep, so that what does not change from one
+//! element to the next is loaded once per range, not once per element. The same rule: each
+//! element's results belong to it alone.
+template <class F>
+void parallel_ranges(Index n, F&& f)
+{
+    const int threads = n >= kParallelThreshold ? thread_count() : 1;
+    if (threads > 1)
+        detail::parallel_ranges_threads(n, threads, f);
+    else
+        f(Index{0}, n);
 }
 
 //! \brief The sum of f(k) over [0, n), bit for bit the same for any thread count: the

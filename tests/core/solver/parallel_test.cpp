@@ -162,16 +162,35 @@ TEST_SUITE("Solver")
         Mesh m = test::icosphere(3);
         test::perturb(m, 0.02, 6);
         const Topology t = build_topology(m);
-        Recipe plain;
-        Recipe soft = plain;
-        soft.soft = SoftVertices{{false, {1, 2, 3}}, 0.5, {}};
-        soft.region = Region{test::all_indices(m.vertex_count() / 2), {}};
-        Recipe centroid = plain; // the general (unfused) path
-        centroid.centroid =
-            CentroidConstraints{{false, {0, 5}}, 1.0, {}, CentroidDenominator::Paper};
-        for (const Recipe* recipe : {&plain, &soft, &centroid})
+        // step() runs one fused sweep per combination of terms (bit 0 soft, 1 centroid,
+        // 2 normal); step(x) the general path. Every combination, with a region and hard
+        // targets in some.
+        std::vector<Recipe> recipes;
+        for (int terms = 0; terms < 8; ++terms)
+            for (const bool region : {false, true})
+            {
+                Recipe r;
+                if (terms & 1)
+                    r.soft = SoftVertices{{false, {1, 2, 3}}, 0.5, {}};
+                if (terms & 2)
+                    r.centroid = CentroidConstraints{
+                        {false, {0, 5, 9}}, 1.0, {}, CentroidDenominator::Paper};
+                if (terms & 4)
+                    r.normal = NormalConstraints{{true, {}}, 0.7, NormalSource::Initial, {}};
+                if (region)
+                {
+                    r.region = Region{test::all_indices(m.vertex_count() / 2), {}};
+                    r.hard = HardVertices{{7, 8}, {Vec3{0, 0, 0}, Vec3{0.1, 0.2, 0.3}}};
+                }
+                recipes.push_back(r);
+            }
+        for (const Recipe& recipe : recipes)
         {
-            Session a(m, t, *recipe), b(m, t, *recipe);
+            CAPTURE(recipe.soft.has_value());
+            CAPTURE(recipe.centroid.has_value());
+            CAPTURE(recipe.normal.has_value());
+            CAPTURE(recipe.region.has_value());
+            Session a(m, t, recipe), b(m, t, recipe);
             std::vector<Scalar> x = m.positions;
             a.apply_hard_targets(x);
             b.set_positions(x);
@@ -183,7 +202,8 @@ TEST_SUITE("Solver")
                 CHECK(same_bits(std::vector<Scalar>(kept.begin(), kept.end()), x));
                 CHECK(a.energy(x).total() == b.energy().total());
             }
-            Recipe five = *recipe;
+            CHECK(!same_bits(x, m.positions)); // something moved
+            Recipe five = recipe;
             five.iterations = 5;
             Session c(m, t, five);
             std::vector<Scalar> y = m.positions;
@@ -191,6 +211,7 @@ TEST_SUITE("Solver")
             run(c, y);
             CHECK(same_bits(y, x));
         }
+        const Recipe plain;
         Session s(m, t, plain);
         CHECK_THROWS_AS(s.step(), SolverError);
         CHECK_THROWS_AS(s.set_positions(std::vector<Scalar>(5)), SolverError);
