@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/core_clock.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/bench/openmesh_peer.h"
@@ -79,6 +80,7 @@ struct Options
     std::string out = "bench-results.tsv";
     std::string cli;
     bool skip_load = false;
+    bool profile = false;
 };
 
 std::string human_count(long n)
@@ -96,6 +98,8 @@ std::string format_value(double v, const std::string& unit)
         std::snprintf(buffer, sizeof buffer, "%10.3f ms", v * 1e3);
     else if (unit == "B/s")
         std::snprintf(buffer, sizeof buffer, "%9.2f GB/s", v / 1e9);
+    else if (unit == "Hz")
+        std::snprintf(buffer, sizeof buffer, "%10.2f GHz", v / 1e9);
     else if (unit == "B/vertex")
         std::snprintf(buffer, sizeof buffer, "%10.1f B/v", v);
     else
@@ -239,7 +243,52 @@ public:
         return 0;
     }
 
+    //! \brief For a profiler (app/bench/profile.sh runs this under callgrind): the plain
+    //! and combined steps of MeshFair and OpenMesh's smoother on the first size's mesh in
+    //! its natural order, `--steps` steps each, inside the functions named
+    //! profiled_*_steps so the profiler can count each one alone (noipa: two of them have
+    //! the same body, which the compiler would otherwise merge). No timing.
+    int profile()
+    {
+        const Mesh base = io::read_mesh(o_.mesh);
+        const long size = o_.sizes.empty() ? 1'000'000 : o_.sizes.front();
+        const Mesh mesh =
+            bench::subdivide_triangles(base, bench::subdivision_factor_for(base, size));
+        const Topology topology = build_topology(mesh);
+        const LocalityOrder locality = locality_order(mesh);
+        const Mesh work = reorder_mesh(mesh, locality);
+        const Topology work_topology = build_topology(work);
+        const auto internal = [&](const Recipe& r) {
+            return renumber_recipe(r, locality.vertex_index, locality.face_index);
+        };
+        Session plain_session(work, work_topology, internal(plain_recipe(topology)));
+        Session combined_session(work, work_topology, internal(combined_recipe(std::nullopt)));
+        bench::OpenMeshPeer peer(mesh);
+        plain_session.set_positions(work.positions);
+        combined_session.set_positions(work.positions);
+        profiled_meshfair_plain_steps(plain_session, o_.steps);
+        profiled_meshfair_combined_steps(combined_session, o_.steps);
+        profiled_openmesh_plain_steps(peer, o_.steps);
+        std::printf("profiled: %d vertices, %d steps each\n", mesh.vertex_count(), o_.steps);
+        return 0;
+    }
+
 private:
+    [[gnu::noipa]] static void profiled_meshfair_plain_steps(Session& session, int steps)
+    {
+        for (int s = 0; s < steps; ++s)
+            session.step();
+    }
+    [[gnu::noipa]] static void profiled_meshfair_combined_steps(Session& session, int steps)
+    {
+        for (int s = 0; s < steps; ++s)
+            session.step();
+    }
+    [[gnu::noipa]] static void profiled_openmesh_plain_steps(bench::OpenMeshPeer& peer, int steps)
+    {
+        peer.smooth(steps);
+    }
+
     Figure& figure(const std::string& name, Index vertices, const std::string& order,
                    const std::string& implementation, const std::string& unit)
     {
@@ -318,6 +367,8 @@ private:
         {
             figure("bandwidth (triad)", n, order, "machine", "B/s")
                 .samples.push_back(triad_.measure());
+            figure("core clock", n, order, "machine", "Hz")
+                .samples.push_back(bench::core_clock_hz());
             if (!o_.skip_load)
             {
                 auto t = Clock::now();
@@ -413,6 +464,12 @@ private:
         };
         char note[160];
         print_row(get("bandwidth (triad)", "machine"), "");
+        print_row(get("core clock", "machine"), "");
+        // Cycles a thread spends per vertex of a step: step time x clock x threads / #V.
+        const double clock = get("core clock", "machine").median();
+        const auto cycles = [&](const Figure& f, int threads) {
+            return f.median() * clock * threads / n;
+        };
         if (!o_.skip_load)
         {
             const Figure& ours = get("load + topology", "meshfair");
@@ -425,19 +482,21 @@ private:
         }
         const Figure& plain = get("plain step", "meshfair");
         const double bound = get("plain step bound", "machine").median();
-        std::snprintf(note, sizeof note, "  %.2fx the bound (%.3f ms)", plain.median() / bound,
-                      bound * 1e3);
+        std::snprintf(note, sizeof note, "  %.2fx the bound (%.3f ms); %.1f cycles/vertex",
+                      plain.median() / bound, bound * 1e3, cycles(plain, omp_get_max_threads()));
         print_row(plain, note);
         const Figure& om = get("plain step", "openmesh");
-        std::snprintf(note, sizeof note, "  MeshFair %.1fx faster", om.median() / plain.median());
+        std::snprintf(note, sizeof note, "  MeshFair %.1fx faster; %.1f cycles/vertex",
+                      om.median() / plain.median(), cycles(om, 1));
         print_row(om, note);
         const double combined_bound = get("combined step bound", "machine").median();
         for (const char* name : {"combined step", "combined step, 10% region"})
         {
             const Figure& c = get(name, "meshfair");
-            std::snprintf(note, sizeof note, "  %.2fx plain; %.2fx its bound (%.3f ms)",
+            std::snprintf(note, sizeof note,
+                          "  %.2fx plain; %.2fx its bound (%.3f ms); %.1f cycles/vertex",
                           c.median() / plain.median(), c.median() / combined_bound,
-                          combined_bound * 1e3);
+                          combined_bound * 1e3, cycles(c, omp_get_max_threads()));
             print_row(c, note);
         }
     }
@@ -494,13 +553,18 @@ int main(int argc, char** argv)
     app.add_option("--out", o.out, "machine-readable results (TSV)");
     app.add_option("--cli", o.cli, "meshfair-cli, for the peak-memory figure (empty: skip)");
     app.add_flag("--skip-load", o.skip_load, "do not time the readers");
+    app.add_flag("--profile", o.profile,
+                 "only run --steps plain and combined steps of MeshFair and OpenMesh on the "
+                 "first size, for a profiler (app/bench/profile.sh)");
     CLI11_PARSE(app, argc, argv);
     if (o.threads > 0)
         omp_set_num_threads(o.threads); // the triad
     set_thread_count(o.threads);        // MeshFair's solver
     try
     {
-        return Bench(std::move(o)).run();
+        const bool profile = o.profile;
+        Bench bench(std::move(o));
+        return profile ? bench.profile() : bench.run();
     }
     catch (const std::exception& e)
     {
