@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstddef>
 #include <cstring>
 #include <span>
 
@@ -49,7 +50,8 @@ public:
         Scalar s2 = 0;
         for (Index n = topology_->vertex_offsets[i]; n < topology_->vertex_offsets[i + 1]; ++n)
         {
-            const Scalar* q = x + 3 * neighbors[n];
+            // 64-bit before the multiplication: the address is then one addressing mode.
+            const Scalar* q = x + 3 * static_cast<std::ptrdiff_t>(neighbors[n]);
             Pair q01;
             std::memcpy(&q01, q, sizeof q01);
             s01 += q01 - x01;
