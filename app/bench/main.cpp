@@ -216,6 +216,37 @@ double cli_peak_rss(const std::string& cli, const std::string& file, const std::
     return json["peak_memory_bytes"].get<double>();
 }
 
+//! \brief What the bench solves on, as meshfair-cli does: the mesh renumbered for
+//! locality, its topology, and the plain and combined sessions, their recipes written in
+//! the file's numbering. Sessions point into `work`: not copyable.
+struct SolverSetup
+{
+    explicit SolverSetup(const Mesh& mesh)
+        : topology(build_topology(mesh)),
+          locality(locality_order(mesh)),
+          work(reorder_mesh(mesh, locality)),
+          work_topology(build_topology(work)),
+          plain(work, work_topology, internal(plain_recipe(topology))),
+          combined(work, work_topology, internal(combined_recipe(std::nullopt)))
+    {
+    }
+    SolverSetup(const SolverSetup&) = delete;
+    SolverSetup& operator=(const SolverSetup&) = delete;
+
+    //! A recipe in the file's numbering, in the solver's.
+    Recipe internal(const Recipe& r) const
+    {
+        return renumber_recipe(r, locality.vertex_index, locality.face_index);
+    }
+
+    Topology topology; //!< of the mesh in the file's numbering
+    LocalityOrder locality;
+    Mesh work;
+    Topology work_topology;
+    Session plain;
+    Session combined;
+};
+
 class Bench
 {
 public:
@@ -254,20 +285,12 @@ public:
         const long size = o_.sizes.empty() ? 1'000'000 : o_.sizes.front();
         const Mesh mesh =
             bench::subdivide_triangles(base, bench::subdivision_factor_for(base, size));
-        const Topology topology = build_topology(mesh);
-        const LocalityOrder locality = locality_order(mesh);
-        const Mesh work = reorder_mesh(mesh, locality);
-        const Topology work_topology = build_topology(work);
-        const auto internal = [&](const Recipe& r) {
-            return renumber_recipe(r, locality.vertex_index, locality.face_index);
-        };
-        Session plain_session(work, work_topology, internal(plain_recipe(topology)));
-        Session combined_session(work, work_topology, internal(combined_recipe(std::nullopt)));
+        SolverSetup setup(mesh);
         bench::OpenMeshPeer peer(mesh);
-        plain_session.set_positions(work.positions);
-        combined_session.set_positions(work.positions);
-        profiled_meshfair_plain_steps(plain_session, o_.steps);
-        profiled_meshfair_combined_steps(combined_session, o_.steps);
+        setup.plain.set_positions(setup.work.positions);
+        setup.combined.set_positions(setup.work.positions);
+        profiled_meshfair_plain_steps(setup.plain, o_.steps);
+        profiled_meshfair_combined_steps(setup.combined, o_.steps);
         profiled_openmesh_plain_steps(peer, o_.steps);
         std::printf("profiled: %d vertices, %d steps each\n", mesh.vertex_count(), o_.steps);
         return 0;
@@ -328,20 +351,15 @@ private:
 
     void run_order(const Mesh& mesh, const std::string& file, const std::string& order)
     {
-        // Recipes in the file's numbering; MeshFair solves in its locality numbering, as
-        // meshfair-cli does.
-        const Topology topology = build_topology(mesh);
         const Index n = mesh.vertex_count();
-        const LocalityOrder locality = locality_order(mesh);
-        const Mesh work = reorder_mesh(mesh, locality);
-        const Topology work_topology = build_topology(work);
-        const auto internal = [&](const Recipe& r) {
-            return renumber_recipe(r, locality.vertex_index, locality.face_index);
-        };
-        Session plain_session(work, work_topology, internal(plain_recipe(topology)));
-        Session combined_session(work, work_topology, internal(combined_recipe(std::nullopt)));
-        Session region_session(work, work_topology,
-                               internal(combined_recipe(patch_region(mesh, 0.1))));
+        SolverSetup setup(mesh);
+        const Topology& topology = setup.topology;
+        const LocalityOrder& locality = setup.locality;
+        const Mesh& work = setup.work;
+        Session& plain_session = setup.plain;
+        Session& combined_session = setup.combined;
+        Session region_session(work, setup.work_topology,
+                               setup.internal(combined_recipe(patch_region(mesh, 0.1))));
         bench::OpenMeshPeer peer(mesh);
 
         // Same update? 10 steps of each from the input positions.
