@@ -217,10 +217,9 @@ void Session::precompute()
     if (normal_ && recipe_.method == Method::Jacobi)
     {
         system_.block.assign(6 * static_cast<size_t>(nv), 0);
-        system_.factor.assign(6 * static_cast<size_t>(nv), 0);
+        if (joint_) // the blocks are rebuilt and factored again every step
+            system_.factor.assign(6 * static_cast<size_t>(nv), 0);
         factor_blocks();
-        if (!joint_) // the normals never move: the factors are all a step needs
-            system_.block = {};
     }
     // The fused step needs no right-hand side nor displacement arrays, only an output.
     // Kept positions stay (a new recipe on the same mesh).
@@ -247,10 +246,15 @@ void Session::factor_blocks()
     for (const Index i : free_)
         std::fill_n(&system_.block[6 * i], 6, Scalar(0));
     normal_->add_block(normals_, free_, system_.block);
+    // Without joint mode the normals never move: the blocks are factored in place and the
+    // factors are all a step needs (no second 6 #V array, even while factoring).
+    Scalar* factor = joint_ ? system_.factor.data() : system_.block.data();
     for (const Index i : free_)
-        if (!cholesky3(system_.diagonal[i], &system_.block[6 * i], &system_.factor[6 * i]))
+        if (!cholesky3(system_.diagonal[i], &system_.block[6 * i], &factor[6 * i]))
             throw SolverError("Session: the 3x3 system of vertex " + std::to_string(i) +
                               " is not positive definite");
+    if (!joint_)
+        system_.factor = std::move(system_.block);
 }
 
 void Session::apply_hard_targets(std::span<Scalar> x) const

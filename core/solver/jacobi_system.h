@@ -22,7 +22,8 @@ namespace meshfair {
 struct JacobiSystem
 {
     std::vector<Scalar> diagonal; //!< #V
-    //! 6 #V; empty when no term adds one, and once factored when the normals never move
+    //! 6 #V; empty when no term adds one, and once factored (in place, becoming `factor`)
+    //! when the normals never move
     std::vector<Scalar> block;
     std::vector<Scalar> factor; //!< 6 #V Cholesky factors of A_i; empty without blocks
     std::vector<Scalar> rhs;    //!< 3 #V
@@ -30,9 +31,9 @@ struct JacobiSystem
 
 //! Cholesky factor L of the SPD matrix (d I + B), B given as xx xy xz yy yz zz, stored
 //! as 1/l00 l10 1/l11 l20 l21 1/l22 (row-major lower triangle with the diagonal inverted:
-//! cholesky3_solve then multiplies where it would divide, and a chain of six dependent
-//! divisions per vertex was a large part of the combined step). False when not positive
-//! definite.
+//! cholesky3_solve then multiplies where it would divide). False when not positive
+//! definite. B and L may be the same six values (factoring in place): B is read whole
+//! before L is written.
 inline bool cholesky3(Scalar d, const Scalar* B, Scalar* L)
 {
     const Scalar a00 = d + B[0], a10 = B[1], a20 = B[2], a11 = d + B[3], a21 = B[4], a22 = d + B[5];

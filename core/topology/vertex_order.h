@@ -39,7 +39,8 @@ struct LocalityOrder
 LocalityOrder locality_order(const Mesh& mesh);
 
 //! \brief The mesh in the internal numbering: vertices and faces reordered, corners of
-//! each face in their order (orientation kept).
+//! each face in their order (orientation kept). Reads vertex_order, vertex_index and
+//! face_order (not face_index).
 Mesh reorder_mesh(const Mesh& mesh, const LocalityOrder& order);
 
 //! \brief The order that undoes `order`: reorder_mesh(reorder_mesh(m, order),
