@@ -114,8 +114,9 @@ private:
     //! \brief The fused step: one sweep over the free vertices in which each vertex adds
     //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
     //! solves its 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
-    //! general_step without its right-hand-side and displacement arrays: what lets a
-    //! step run near memory speed. x and y must not overlap; y is written at free
+    //! general_step without its right-hand-side and displacement arrays and their passes
+    //! over memory (the step is then bound by its instructions per vertex,
+    //! docs/performance.md). x and y must not overlap; y is written at free
     //! vertices only.
     void fused_step(std::span<const Scalar> x, std::span<Scalar> y);
     //! fused_step for one combination of active terms, so that the sweep tests nothing
