@@ -166,9 +166,6 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
         const Topology topology = build_topology(mesh, required_topology(recipe));
         Session session(mesh, topology,
                         renumber_recipe(recipe, order.vertex_index, order.face_index));
-        // The way back (reorder_mesh with inverse_order) reads both vertex maps and
-        // face_index only: face_order (4 bytes per face) need not live through the solve.
-        order.face_order = {};
         session.apply_hard_targets(mesh.positions);
         setup_seconds = seconds_since(t_setup);
 
