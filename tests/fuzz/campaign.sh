@@ -167,7 +167,11 @@ for t in "${targets[@]}"; do
         mode=()
     fi
     echo "== $t: ${limit[*]#-}, inputs up to $max_len bytes, $jobs job(s), into $corpus"
-    "$bin" "${FUZZ_REPLAY_OPTIONS[@]}" -max_len="$max_len" "${limit[@]}" "${mode[@]}" \
+    # No periodic purge of ASan's allocator: with the 32 MB quarantine the peak stays near
+    # 140 MB anyway, and re-faulting the purged pages cost a quarter of the run (measured
+    # with perf on fuzz_ply_ascii: 150 k executions in 28 s instead of 35-38 s).
+    "$bin" "${FUZZ_REPLAY_OPTIONS[@]}" -purge_allocator_interval=-1 -max_len="$max_len" \
+        "${limit[@]}" "${mode[@]}" \
         -dict="$(fuzz_dict "$t")" -artifact_prefix="$artifacts/" "$corpus" "$seeds" \
         >"$log" 2>&1 || true
     elapsed=$(($(date +%s) - start))
