@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -46,22 +47,30 @@ public:
     //! ((x_prev - x_i) + (x_next - x_i)), with prev and next i's neighbours in face f.
     void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const
     {
-        const Scalar* xi = &x[3 * i];
+        // Locals, not r[] and mu_: a store through r could change x, the normals or mu_
+        // for the compiler, which would then load them again for every corner.
+        Scalar r0 = r[0], r1 = r[1], r2 = r[2];
+        const Scalar mu = mu_;
+        const Scalar xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
         for (const Index c : topology_->corners_of_vertex(i))
         {
             const Index f = topology_->corner_face[c];
             if (!constrained_[f])
                 continue;
             const auto [prev, next] = corner_neighbors(*mesh_, *topology_, c);
-            const Scalar* u = &normals[3 * f];
-            const Scalar* a = &x[3 * prev];
-            const Scalar* b = &x[3 * next];
-            const Scalar s = u[0] * ((a[0] - xi[0]) + (b[0] - xi[0])) +
-                             u[1] * ((a[1] - xi[1]) + (b[1] - xi[1])) +
-                             u[2] * ((a[2] - xi[2]) + (b[2] - xi[2]));
-            for (int k = 0; k < 3; ++k)
-                r[k] += mu_ * s * u[k];
+            const Scalar* u = &normals[3 * static_cast<std::ptrdiff_t>(f)];
+            const Scalar* a = &x[3 * static_cast<std::ptrdiff_t>(prev)];
+            const Scalar* b = &x[3 * static_cast<std::ptrdiff_t>(next)];
+            const Scalar s = u[0] * ((a[0] - xi0) + (b[0] - xi0)) +
+                             u[1] * ((a[1] - xi1) + (b[1] - xi1)) +
+                             u[2] * ((a[2] - xi2) + (b[2] - xi2));
+            r0 += mu * s * u[0];
+            r1 += mu * s * u[1];
+            r2 += mu * s * u[2];
         }
+        r[0] = r0;
+        r[1] = r1;
+        r[2] = r2;
     }
     //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
     //! f's part of E_N is mu u_f^T M_f u_f (used by the joint update of u).
