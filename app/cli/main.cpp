@@ -170,7 +170,10 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
         setup_seconds = seconds_since(t_setup);
 
         const auto t_solve = Clock::now();
-        const SmoothResult result = run(session, mesh.positions);
+        // The session holds the only copy of the positions while it runs.
+        session.adopt_positions(std::move(mesh.positions));
+        const SmoothResult result = run(session);
+        mesh.positions = session.release_positions();
         solve_seconds = seconds_since(t_solve);
         validate_mesh(mesh); // never write garbage: every coordinate is still finite
         report = cli::smooth_report(mesh, topology, session, result, read_report);

@@ -84,6 +84,7 @@ void Session::precompute()
             "Session: the topology lacks parts this recipe needs (build it "
             "with required_topology(recipe))");
     ++precompute_count_;
+    vertex_count_ = topology_->vertex_count;
     const Mesh& mesh = *mesh_;
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
     const std::span<const Scalar> x0 = mesh.positions;
@@ -254,7 +255,10 @@ void Session::factor_blocks()
             throw SolverError("Session: the 3x3 system of vertex " + std::to_string(i) +
                               " is not positive definite");
     if (!joint_)
+    {
         system_.factor = std::move(system_.block);
+        system_.diagonal = {}; // in the factors now; only joint mode factors again
+    }
 }
 
 void Session::apply_hard_targets(std::span<Scalar> x) const
@@ -300,10 +304,10 @@ const std::vector<Index>& Session::centroid_faces() const
 
 void Session::check_size(std::span<const Scalar> x, const char* what) const
 {
-    if (x.size() != 3 * static_cast<size_t>(mesh_->vertex_count()))
+    if (x.size() != 3 * static_cast<size_t>(vertex_count_))
         throw SolverError(std::string("Session::") + what + ": positions hold " +
                           std::to_string(x.size()) + " values, the mesh needs " +
-                          std::to_string(3 * static_cast<size_t>(mesh_->vertex_count())));
+                          std::to_string(3 * static_cast<size_t>(vertex_count_)));
 }
 
 bool Session::fused() const
@@ -375,6 +379,23 @@ void Session::set_positions(std::span<const Scalar> x)
         next_.assign(x.begin(), x.end()); // the vertices a step never writes agree
 }
 
+void Session::adopt_positions(std::vector<Scalar>&& x)
+{
+    check_size(x, "adopt_positions");
+    has_positions_ = true;
+    x_ = std::move(x);
+    if (fused())
+        next_.assign(x_.begin(), x_.end()); // the vertices a step never writes agree
+}
+
+std::vector<Scalar> Session::release_positions()
+{
+    std::vector<Scalar> out;
+    out.swap(x_);
+    has_positions_ = false;
+    return out;
+}
+
 StepInfo Session::step()
 {
     if (!has_positions_)
@@ -394,10 +415,10 @@ StepInfo Session::step(std::span<Scalar> x)
 
 StepInfo Session::general_step(std::span<Scalar> x)
 {
-    if (dx_.size() != 3 * static_cast<size_t>(mesh_->vertex_count()))
+    if (dx_.size() != 3 * static_cast<size_t>(vertex_count_))
     { // the first general step of a fused session
-        system_.rhs.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
-        dx_.assign(3 * static_cast<size_t>(mesh_->vertex_count()), 0);
+        system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0);
+        dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
     }
     const bool use_blocks = !system_.factor.empty();
     if (joint_ && use_blocks)
@@ -460,8 +481,18 @@ TermEnergies Session::energy(std::span<const Scalar> x) const
 SmoothResult run(Session& session, std::span<Scalar> x,
                  const std::function<void(int, const TermEnergies&)>& on_step)
 {
-    SmoothResult result;
     session.set_positions(x);
+    SmoothResult result = run(session, on_step);
+    const std::span<const Scalar> kept = session.positions();
+    std::copy(kept.begin(), kept.end(), x.begin());
+    return result;
+}
+
+SmoothResult run(Session& session, const std::function<void(int, const TermEnergies&)>& on_step)
+{
+    if (!session.has_positions())
+        throw SolverError("run: the session keeps no positions (call set_positions first)");
+    SmoothResult result;
     result.energies.push_back(session.energy());
     if (on_step)
         on_step(0, result.energies.back());
@@ -479,8 +510,6 @@ SmoothResult run(Session& session, std::span<Scalar> x,
             break;
         }
     }
-    const std::span<const Scalar> kept = session.positions();
-    std::copy(kept.begin(), kept.end(), x.begin());
     return result;
 }
 

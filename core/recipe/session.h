@@ -88,6 +88,15 @@ public:
     //! when the step can be fused (see fused_step). Allocates; step() does not.
     //! \throw SolverError when x does not hold 3 #V values.
     void set_positions(std::span<const Scalar> x);
+    //! set_positions without the copy: the session takes over x's buffer, so a caller
+    //! that needs the positions only after the run (the CLI) holds them once, not twice.
+    //! \throw SolverError when x does not hold 3 #V values.
+    void adopt_positions(std::vector<Scalar>&& x);
+    //! Hands the kept positions back; the session then has none until set_positions or
+    //! adopt_positions.
+    std::vector<Scalar> release_positions();
+    //! True once set_positions or adopt_positions has given the session positions.
+    bool has_positions() const { return has_positions_; }
     //! The kept positions (empty before set_positions).
     std::span<const Scalar> positions() const { return x_; }
     //! One step on the kept positions; the same bits as step(x) (tested).
@@ -131,6 +140,8 @@ private:
 
     const Mesh* mesh_;
     const Topology* topology_;
+    //! #V, from the topology: the mesh's positions may be handed to adopt_positions.
+    Index vertex_count_ = 0;
     Recipe recipe_;
     int precompute_count_ = 0;
 
@@ -152,7 +163,7 @@ private:
     std::vector<Scalar> scratch_u_; //!< 3 #F for normal smoothing and joint mode, else empty
     std::vector<Scalar> x_;         //!< kept positions (set_positions)
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
-    bool has_positions_ = false;    //!< set_positions was called (x_ may be empty: #V = 0)
+    bool has_positions_ = false;    //!< positions were given (x_ may be empty: #V = 0)
 };
 
 //! \brief The parts of a Topology a Session with `recipe` reads: V(i) always, the corners
@@ -171,6 +182,10 @@ struct SmoothResult
 //! \brief Runs session.recipe().iterations steps on x (modified in place), stopping early
 //! by the recipe's tolerance; `on_step` (optional) sees each step's energies.
 SmoothResult run(Session& session, std::span<Scalar> x,
+                 const std::function<void(int, const TermEnergies&)>& on_step = {});
+//! The same on the session's kept positions (set_positions or adopt_positions first).
+//! \throw SolverError when the session keeps no positions.
+SmoothResult run(Session& session,
                  const std::function<void(int, const TermEnergies&)>& on_step = {});
 
 //! \brief One-liner: check the recipe, precompute, move hard vertices to their targets

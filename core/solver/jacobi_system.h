@@ -21,7 +21,7 @@ namespace meshfair {
 //! precomputation (or per step when the normals move, in joint mode).
 struct JacobiSystem
 {
-    std::vector<Scalar> diagonal; //!< #V
+    std::vector<Scalar> diagonal; //!< #V; empty once factored into `factor` for good
     //! 6 #V; empty when no term adds one, and once factored (in place, becoming `factor`)
     //! when the normals never move
     std::vector<Scalar> block;

@@ -427,6 +427,36 @@ TEST_SUITE("Session")
         }
     }
 
+    TEST_CASE("adopted positions run to the same bits as copied ones, with the mesh's moved out")
+    {
+        const Mesh m = noisy(test::icosphere(2));
+        const Topology t = build_topology(m);
+        for (const Case& c : configurations(m))
+        {
+            CAPTURE(c.name);
+            Mesh a = m;
+            const SmoothResult expected = smooth(a, t, c.recipe);
+
+            Mesh b = m;
+            Session session(b, t, c.recipe);
+            CHECK_THROWS_AS(run(session), SolverError); // no positions yet
+            session.apply_hard_targets(b.positions);
+            // The mesh then has no positions (and so no vertices) while the session runs.
+            session.adopt_positions(std::move(b.positions));
+            CHECK(b.positions.empty());
+            const SmoothResult result = run(session);
+            CHECK(result.iterations == expected.iterations);
+            CHECK(result.energies.back().total() == expected.energies.back().total());
+            b.positions = session.release_positions();
+            CHECK(b.positions == a.positions);
+            CHECK_FALSE(session.has_positions());
+            CHECK(session.positions().empty());
+            CHECK_THROWS_AS(session.step(), SolverError);
+            std::vector<Scalar> short_positions(6, 0);
+            CHECK_THROWS_AS(session.adopt_positions(std::move(short_positions)), SolverError);
+        }
+    }
+
     TEST_CASE("a topology of the required parts only gives the same bits; fewer are refused")
     {
         const Mesh m = noisy(test::icosphere(2));
