@@ -42,9 +42,10 @@ public:
         // millimetres at 10^3) would lose digits to sum_j x_j - n_i x_i.
         // x and y as one pair: the sweep's cost is its instruction count per neighbour.
         using Pair = Scalar __attribute__((vector_size(2 * sizeof(Scalar))));
+        const Scalar* xi = x + 3 * static_cast<std::ptrdiff_t>(i);
         Pair x01;
-        std::memcpy(&x01, x + 3 * i, sizeof x01);
-        const Scalar x2 = x[3 * i + 2];
+        std::memcpy(&x01, xi, sizeof x01);
+        const Scalar x2 = xi[2];
         const Index* neighbors = topology_->vertex_neighbors.data();
         Pair s01 = {0, 0};
         Scalar s2 = 0;
