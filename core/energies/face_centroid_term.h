@@ -63,10 +63,9 @@ public:
         // change x or mu_ for the compiler, which would then load them again.
         Scalar r0 = r[0], r1 = r[1], r2 = r[2];
         const Index* offsets = mesh_->face_offsets.data();
-        const Index* corners = mesh_->face_vertices.data();
         const Index* corner_face = topology_->corner_face.data();
-        // 1/n_f and mu/n_f for the last face size met, the same values as face_centroid's
-        // and energy()'s: most meshes have one or two face sizes, so this saves two
+        // 1/n_f and mu/n_f for the last face size met (face_centroid's 1/n_f, so the
+        // residuals are energy()'s): most meshes have one or two face sizes, so this saves two
         // divisions per face.
         Index last_n = 0;
         Scalar inv = 0, w = 0;
@@ -75,25 +74,18 @@ public:
             const Index f = corner_face[c];
             if (!constrained_[f])
                 continue;
-            const Index begin = offsets[f], n = offsets[f + 1] - begin;
+            const Index n = offsets[f + 1] - offsets[f];
             if (n != last_n)
             {
                 last_n = n;
                 inv = Scalar(1) / n;
                 w = mu_ / n;
             }
-            Scalar c0 = 0, c1 = 0, c2 = 0;
-            for (Index k = begin; k < begin + n; ++k)
-            {
-                const Scalar* p = x + 3 * static_cast<std::ptrdiff_t>(corners[k]);
-                c0 += p[0];
-                c1 += p[1];
-                c2 += p[2];
-            }
+            const Vec3 sum = face_corner_sum(*mesh_, x, f);
             const Scalar* t = &target_[3 * static_cast<size_t>(f)];
-            r0 += w * (t[0] - c0 * inv);
-            r1 += w * (t[1] - c1 * inv);
-            r2 += w * (t[2] - c2 * inv);
+            r0 += w * (t[0] - sum[0] * inv);
+            r1 += w * (t[1] - sum[1] * inv);
+            r2 += w * (t[2] - sum[2] * inv);
         }
         r[0] = r0;
         r[1] = r1;

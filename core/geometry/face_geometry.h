@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <vector>
 
@@ -11,13 +12,21 @@
 namespace meshfair {
 
 //! \brief Centroid x_f = (1/n_f) sum_{i in f} x_i of face f for positions `x` (3 #V).
-inline Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f)
+//! Sum of the positions of face f's corners, in face order (face_centroid before the
+//! division; the centroid term scales it itself with a cached 1/n_f).
+inline Vec3 face_corner_sum(const Mesh& mesh, const Scalar* x, Index f)
 {
     // Inline: the centroid term computes it for every corner of every step.
     Vec3 c{0, 0, 0};
     for (Index v : mesh.face(f))
         for (int a = 0; a < 3; ++a)
-            c[a] += x[3 * v + a];
+            c[a] += x[3 * static_cast<std::ptrdiff_t>(v) + a];
+    return c;
+}
+
+inline Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f)
+{
+    Vec3 c = face_corner_sum(mesh, x.data(), f);
     const Scalar inv = Scalar(1) / mesh.face_size(f);
     for (int a = 0; a < 3; ++a)
         c[a] *= inv;
