@@ -9,6 +9,7 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
+#include "core/solver/plain_sweep.h"
 #include "core/solver/solver.h"
 
 namespace meshfair {
@@ -318,6 +319,20 @@ bool Session::fused() const
 template <bool Soft, bool Centroid, bool Normal>
 void Session::fused_sweep(const Scalar* x, Scalar* y) const
 {
+    if constexpr (!Soft && !Centroid && !Normal)
+    {
+        // The plain Laplacian step: its own kernel (SIMD where the processor has it).
+        const PlainSweep plain{free_.data(),
+                               topology_->vertex_offsets.data(),
+                               topology_->vertex_neighbors.data(),
+                               system_.diagonal.data(),
+                               recipe_.lambda,
+                               x,
+                               y};
+        parallel_ranges(static_cast<Index>(free_.size()),
+                        [&plain](Index begin, Index end) { plain_sweep(plain, begin, end); });
+        return;
+    }
     // Copies, captured by value: the loop then keeps them in registers.
     const Scalar lambda = recipe_.lambda;
     const Index* free = free_.data();
