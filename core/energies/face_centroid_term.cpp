@@ -87,6 +87,28 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
         }
 }
 
+void FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
+                                      Scalar* residual) const
+{
+    // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
+    // this saves two divisions per face (the same values as face_residual's).
+    Index last_n = 0;
+    Scalar inv = 0, w = 0;
+    for (Index k = begin; k < end; ++k)
+    {
+        const Index f = faces[k];
+        const Index n = mesh_->face_size(f);
+        if (n != last_n)
+        {
+            last_n = n;
+            inv = Scalar(1) / n;
+            w = mu_ / n;
+        }
+        residual_of(face_corner_sum(*mesh_, x, f), f, inv, w,
+                    residual + 3 * static_cast<std::ptrdiff_t>(f));
+    }
+}
+
 void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                                std::span<Scalar> rhs) const
 {

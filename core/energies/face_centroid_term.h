@@ -53,39 +53,49 @@ public:
     //! rhs_i += the residuals of the constrained faces of i, for each i in `vertices`.
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
-    //! The same for one vertex, for the fused step. Each face's residual
-    //! mu/n_f (x0_f - x_f) is computed by each of its vertices rather than cached per face:
-    //! the same values without a 3 #F array (48 bytes per vertex on triangle meshes) and
-    //! its extra pass over memory.
+    //! The same for one vertex (the general step).
     void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
     {
-        // The sums live in locals, not in r: every store through r (a Scalar*) could
-        // change x or mu_ for the compiler, which would then load them again.
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->corner_face[c];
+            if (!constrained_[f])
+                continue;
+            Scalar residual[3];
+            face_residual(x, f, residual);
+            for (int a = 0; a < 3; ++a)
+                r[a] += residual[a];
+        }
+    }
+    //! Face f's residual mu/n_f (x0_f - x_f): its part of r_i for each of its vertices i.
+    void face_residual(const Scalar* x, Index f, Scalar* out) const
+    {
+        const Index n = mesh_->face_size(f);
+        // face_centroid's 1/n_f, so that the residuals are energy()'s.
+        residual_of(face_corner_sum(*mesh_, x, f), f, Scalar(1) / n, mu_ / n, out);
+    }
+    //! face_residual of each face of faces[begin .. end) into residual[3 f ..] (3 #F; other
+    //! faces' values are left as they are): the fused step's pass over the faces, so that
+    //! each residual is computed once per step, not once per corner.
+    void face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
+                        Scalar* residual) const;
+    //! r += the residuals of i's constrained faces in corner order: add_vertex_rhs's
+    //! sum, the same bits, from face_residual's values computed once per face (the fused
+    //! step: a face's n_f corners read each residual, which is computed once per step).
+    void add_vertex_residuals(Index i, const Scalar* residual, Scalar* r) const
+    {
+        // Locals, not r[]: a store through r could change residual for the compiler.
         Scalar r0 = r[0], r1 = r[1], r2 = r[2];
-        const Index* offsets = mesh_->face_offsets.data();
         const Index* corner_face = topology_->corner_face.data();
-        // 1/n_f and mu/n_f for the last face size met (face_centroid's 1/n_f, so the
-        // residuals are energy()'s): most meshes have one or two face sizes, so this saves two
-        // divisions per face.
-        Index last_n = 0;
-        Scalar inv = 0, w = 0;
         for (const Index c : topology_->corners_of_vertex(i))
         {
             const Index f = corner_face[c];
             if (!constrained_[f])
                 continue;
-            const Index n = offsets[f + 1] - offsets[f];
-            if (n != last_n)
-            {
-                last_n = n;
-                inv = Scalar(1) / n;
-                w = mu_ / n;
-            }
-            const Vec3 sum = face_corner_sum(*mesh_, x, f);
-            const Scalar* t = &target_[3 * static_cast<size_t>(f)];
-            r0 += w * (t[0] - sum[0] * inv);
-            r1 += w * (t[1] - sum[1] * inv);
-            r2 += w * (t[2] - sum[2] * inv);
+            const Scalar* q = residual + 3 * static_cast<std::ptrdiff_t>(f);
+            r0 += q[0];
+            r1 += q[1];
+            r2 += q[2];
         }
         r[0] = r0;
         r[1] = r1;
@@ -93,6 +103,14 @@ public:
     }
 
 private:
+    //! out = w (x0_f - sum inv), sum being the sum of f's corners.
+    void residual_of(const Vec3& sum, Index f, Scalar inv, Scalar w, Scalar* out) const
+    {
+        const Scalar* t = &target_[3 * static_cast<size_t>(f)];
+        for (int a = 0; a < 3; ++a)
+            out[a] = w * (t[a] - sum[a] * inv);
+    }
+
     const Mesh* mesh_;
     const Topology* topology_;
     Scalar mu_;

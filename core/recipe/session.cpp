@@ -9,7 +9,6 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
-#include "core/solver/plain_sweep.h"
 #include "core/solver/solver.h"
 
 namespace meshfair {
@@ -223,6 +222,22 @@ void Session::precompute()
             system_.factor.assign(6 * static_cast<size_t>(nv), 0);
         factor_blocks();
     }
+    // The fused step computes each constrained face's centroid residual once per step,
+    // for the faces with a free vertex (when that is not all of them, they are listed).
+    centroid_residual_ = {};
+    centroid_active_ = {};
+    if (centroid_ && fused())
+    {
+        centroid_residual_.assign(3 * static_cast<size_t>(nf), 0);
+        std::vector<char> is_free(nv, 0);
+        for (const Index v : free_)
+            is_free[v] = 1;
+        for (const Index f : centroid_->faces())
+            if (std::ranges::any_of(mesh.face(f), [&](Index v) { return is_free[v] != 0; }))
+                centroid_active_.push_back(f);
+        if (centroid_active_.size() == centroid_->faces().size())
+            centroid_active_ = {};
+    }
     // The fused step needs no right-hand side nor displacement arrays, only an output.
     // Kept positions stay (a new recipe on the same mesh).
     if (fused())
@@ -317,21 +332,19 @@ bool Session::fused() const
 }
 
 template <bool Soft, bool Centroid, bool Normal>
-void Session::fused_sweep(const Scalar* x, Scalar* y) const
+void Session::fused_sweep(const Scalar* x, Scalar* y)
 {
-    if constexpr (!Soft && !Centroid && !Normal)
+    if constexpr (Centroid)
     {
-        // The plain Laplacian step: its own kernel (SIMD where the processor has it).
-        const PlainSweep plain{free_.data(),
-                               topology_->vertex_offsets.data(),
-                               topology_->vertex_neighbors.data(),
-                               system_.diagonal.data(),
-                               recipe_.lambda,
-                               x,
-                               y};
-        parallel_ranges(static_cast<Index>(free_.size()),
-                        [&plain](Index begin, Index end) { plain_sweep(plain, begin, end); });
-        return;
+        // Each constrained face's residual once per step, for the faces a free vertex
+        // reads; its n_f corners then add it.
+        const std::span<const Index> faces = centroid_active_.empty()
+                                                 ? std::span<const Index>(centroid_->faces())
+                                                 : std::span<const Index>(centroid_active_);
+        Scalar* residual = centroid_residual_.data();
+        parallel_ranges(static_cast<Index>(faces.size()), [&](Index begin, Index end) {
+            centroid_->face_residuals(x, faces.data(), begin, end, residual);
+        });
     }
     // Copies, captured by value: the loop then keeps them in registers.
     const Scalar lambda = recipe_.lambda;
@@ -339,6 +352,7 @@ void Session::fused_sweep(const Scalar* x, Scalar* y) const
     const Scalar* normals = normals_.data();
     const Scalar* factor = system_.factor.data();
     const Scalar* diagonal = system_.diagonal.data();
+    const Scalar* residual = centroid_residual_.data();
     parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
         // A local: the closure's copy could be changed by the stores to y for the compiler.
         const Scalar step = lambda;
@@ -352,7 +366,7 @@ void Session::fused_sweep(const Scalar* x, Scalar* y) const
             if constexpr (Soft)
                 soft_->add_vertex_rhs(i, x, r);
             if constexpr (Centroid)
-                centroid_->add_vertex_rhs(i, x, r);
+                centroid_->add_vertex_residuals(i, residual, r);
             if constexpr (Normal)
                 normal_->add_vertex_rhs(i, x, normals, r);
             Scalar dx[3];
@@ -372,7 +386,7 @@ void Session::fused_sweep(const Scalar* x, Scalar* y) const
 
 namespace {
 
-using FusedSweep = void (Session::*)(const Scalar*, Scalar*) const;
+using FusedSweep = void (Session::*)(const Scalar*, Scalar*);
 
 } // namespace
 

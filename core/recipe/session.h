@@ -124,15 +124,16 @@ private:
     //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
     //! solves its 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
     //! general_step without its right-hand-side and displacement arrays and their passes
-    //! over memory (the step is then bound by its instructions per vertex,
-    //! docs/performance.md). x and y must not overlap; y is written at free
-    //! vertices only.
+    //! over memory. With centroid constraints a pass over the constrained faces first
+    //! computes each face's residual once (FaceCentroidTerm::face_residuals), which the
+    //! face's corners then add (add_vertex_residuals: the same bits as add_vertex_rhs).
+    //! x and y must not overlap; y is written at free vertices only.
     void fused_step(std::span<const Scalar> x, std::span<Scalar> y);
     //! fused_step for one combination of active terms, so that the sweep tests nothing
     //! per vertex: the plain Laplacian step is a bare gather loop. (The Jacobi method
     //! solves 3x3 blocks exactly when the normal term is on.)
     template <bool Soft, bool Centroid, bool Normal>
-    void fused_sweep(const Scalar* x, Scalar* y) const;
+    void fused_sweep(const Scalar* x, Scalar* y);
     //! The general step (separate right-hand side, displacement, line search, joint
     //! update), in place on x.
     StepInfo general_step(std::span<Scalar> x);
@@ -163,7 +164,11 @@ private:
     std::vector<Scalar> scratch_u_; //!< 3 #F for normal smoothing and joint mode, else empty
     std::vector<Scalar> x_;         //!< kept positions (set_positions)
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
-    bool has_positions_ = false;    //!< positions were given (x_ may be empty: #V = 0)
+    //! 3 #F: this step's centroid residuals, for the fused step with centroids
+    std::vector<Scalar> centroid_residual_;
+    //! The constrained faces with a free vertex when not all have one; else empty
+    std::vector<Index> centroid_active_;
+    bool has_positions_ = false; //!< positions were given (x_ may be empty: #V = 0)
 };
 
 //! \brief The parts of a Topology a Session with `recipe` reads: V(i) always, the corners
