@@ -3,9 +3,12 @@
 #include "core/topology/topology.h"
 
 #include <algorithm>
+#include <atomic>
+#include <cstdint>
 #include <numeric>
+#include <utility>
 
-#include "core/topology/edge_graph.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair {
 
@@ -25,12 +28,37 @@ std::vector<Index> offsets_from_counts(const std::vector<Index>& counts)
     return offsets;
 }
 
-//! Counts one edge with n_e = `faces` as boundary, regular or singular.
-void count_edge(Topology& t, size_t faces)
+//! Boundary, regular and singular edge counts, summed per thread and then added up
+//! (integers: the same totals in any order).
+struct EdgeCounts
 {
-    ++(faces == 1   ? t.boundary_edge_count
-       : faces == 2 ? t.regular_edge_count
-                    : t.singular_edge_count);
+    std::int64_t boundary = 0, regular = 0, singular = 0;
+    //! Counts one edge with n_e = `faces`.
+    void add(size_t faces) { ++(faces == 1 ? boundary : faces == 2 ? regular : singular); }
+};
+
+struct SharedEdgeCounts
+{
+    std::atomic<std::int64_t> boundary{0}, regular{0}, singular{0};
+    void add(const EdgeCounts& c)
+    {
+        boundary += c.boundary;
+        regular += c.regular;
+        singular += c.singular;
+    }
+};
+
+//! The corners before and after corner c in its face (cyclically).
+struct AdjacentCorners
+{
+    Index previous;
+    Index next;
+};
+AdjacentCorners adjacent_corners(const Mesh& mesh, const Topology& t, Index c)
+{
+    const Index f = t.corner_face[c];
+    const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
+    return {c == first ? last : c - 1, c == last ? first : c + 1};
 }
 
 //! The other ends of the face edges at vertex i, sorted, an end j repeated once per face
@@ -47,14 +75,56 @@ void edge_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<Index>&
     std::sort(ends.begin(), ends.end());
 }
 
+//! One face's side of an edge (i, j), i < j, seen from i: j, and the corner at which
+//! the edge starts in that face (the corner whose next corner closes it).
+struct UpperEnd
+{
+    Index j;
+    Index corner;
+    bool operator<(const UpperEnd& o) const { return j != o.j ? j < o.j : corner < o.corner; }
+};
+
+//! The face edges (i, j) with j > i, one entry per face of each edge, sorted by j and then
+//! by corner (that is, by face). Every corner starts exactly one face edge and is listed
+//! once, at the edge's lower end.
+void upper_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<UpperEnd>& ends)
+{
+    ends.clear();
+    for (const Index c : t.corners_of_vertex(i))
+    {
+        const AdjacentCorners a = adjacent_corners(mesh, t, c);
+        const Index next = mesh.face_vertices[a.next], previous = mesh.face_vertices[a.previous];
+        if (next > i)
+            ends.push_back({next, c}); // (i, next) starts at c
+        if (previous > i)
+            ends.push_back({previous, a.previous}); // (previous, i) starts at the previous corner
+    }
+    std::sort(ends.begin(), ends.end());
+}
+
+//! Calls f(begin, end) for each run of equal j in sorted ends.
+template <class F>
+void for_each_run(const std::vector<UpperEnd>& ends, F&& f)
+{
+    for (size_t k = 0; k < ends.size();)
+    {
+        size_t run = k + 1;
+        while (run < ends.size() && ends[run].j == ends[k].j)
+            ++run;
+        f(k, run);
+        k = run;
+    }
+}
+
 //! Corners of each vertex (in face order) and the face of each corner.
 void build_corners(const Mesh& mesh, Topology& t)
 {
     const Index corners = mesh.corner_count();
     t.corner_face.resize(corners);
-    for (Index f = 0; f < t.face_count; ++f)
+    parallel_for(t.face_count, [&](Index f) {
         std::fill(t.corner_face.begin() + mesh.face_offsets[f],
                   t.corner_face.begin() + mesh.face_offsets[f + 1], f);
+    });
     std::vector<Index> count(t.vertex_count, 0);
     for (Index c = 0; c < corners; ++c)
         ++count[mesh.face_vertices[c]];
@@ -67,132 +137,182 @@ void build_corners(const Mesh& mesh, Topology& t)
 }
 
 //! V(i) (increasing) and the edge counts from the corners: an edge (i, j) with n_e
-//! faces appears n_e times among the ends at i (faces have distinct vertices).
+//! faces appears n_e times among the ends at i (faces have distinct vertices). Each
+//! vertex on its own, in parallel: one pass counts, the second fills.
 void build_neighbors_and_counts(const Mesh& mesh, Topology& t)
 {
-    std::vector<Index> ends;
     std::vector<Index> valence(t.vertex_count, 0);
-    for (Index i = 0; i < t.vertex_count; ++i)
-    {
-        edge_ends(mesh, t, i, ends);
-        for (size_t k = 0; k < ends.size();)
+    SharedEdgeCounts total;
+    parallel_ranges(t.vertex_count, [&](Index begin, Index end) {
+        std::vector<Index> ends;
+        EdgeCounts counts;
+        for (Index i = begin; i < end; ++i)
         {
-            size_t run = k + 1;
-            while (run < ends.size() && ends[run] == ends[k])
-                ++run;
-            ++valence[i];
-            if (ends[k] > i) // each edge once, from its lower end
+            edge_ends(mesh, t, i, ends);
+            for (size_t k = 0; k < ends.size();)
             {
-                count_edge(t, run - k);
+                size_t run = k + 1;
+                while (run < ends.size() && ends[run] == ends[k])
+                    ++run;
+                ++valence[i];
+                if (ends[k] > i) // each edge once, from its lower end
+                    counts.add(run - k);
+                k = run;
             }
-            k = run;
         }
-    }
+        total.add(counts);
+    });
+    t.boundary_edge_count = static_cast<Index>(total.boundary.load());
+    t.regular_edge_count = static_cast<Index>(total.regular.load());
+    t.singular_edge_count = static_cast<Index>(total.singular.load());
     t.vertex_offsets = offsets_from_counts(valence);
     valence = {};
     t.vertex_neighbors.resize(t.vertex_offsets.back());
-    for (Index i = 0; i < t.vertex_count; ++i)
-    {
-        edge_ends(mesh, t, i, ends);
-        const auto last = std::unique(ends.begin(), ends.end());
-        std::copy(ends.begin(), last, t.vertex_neighbors.begin() + t.vertex_offsets[i]);
-    }
+    parallel_ranges(t.vertex_count, [&](Index begin, Index end) {
+        std::vector<Index> ends;
+        for (Index i = begin; i < end; ++i)
+        {
+            edge_ends(mesh, t, i, ends);
+            const auto last = std::unique(ends.begin(), ends.end());
+            std::copy(ends.begin(), last, t.vertex_neighbors.begin() + t.vertex_offsets[i]);
+        }
+    });
 }
 
-//! The primal edges E, corner_edge and F(e): one get/insert per face corner, as the
-//! paper builds the edge array.
+//! The primal edges E, corner_edge and F(e), numbered as the paper's get/insert over the
+//! faces numbers them (the order in which a traversal of the corners first meets each
+//! edge; tested against EdgeGraph), without its hash table: each vertex sorts the edges
+//! to its higher neighbours (upper_ends), so every access stays near the vertex. Three
+//! parallel passes: mark each edge's first corner, number the edges by a prefix sum over
+//! the corners, then write each edge from its lower end.
 void build_edges(const Mesh& mesh, Topology& t)
 {
     const Index corners = mesh.corner_count();
-    EdgeGraph graph(static_cast<size_t>(corners));
-    t.corner_edge.resize(corners);
-    std::vector<Index> face_count_of_edge;
-    face_count_of_edge.reserve(static_cast<size_t>(corners));
-    for (Index f = 0; f < t.face_count; ++f)
-    {
-        const Index begin = mesh.face_offsets[f], n = mesh.face_size(f);
-        for (Index k = 0; k < n; ++k)
+    // 1 at the first corner (in corner order) of each edge, then each edge's number there.
+    std::vector<Index> edge_at(static_cast<size_t>(corners), 0);
+    parallel_ranges(t.vertex_count, [&](Index begin, Index end) {
+        std::vector<UpperEnd> ends;
+        for (Index i = begin; i < end; ++i)
         {
-            const Index i = mesh.face_vertices[begin + k];
-            const Index j = mesh.face_vertices[begin + (k + 1) % n];
-            Index e = graph.get(i, j);
-            if (e == kInvalidIndex)
-            {
-                e = graph.insert(i, j);
-                face_count_of_edge.push_back(1); // n_e starts at 1 on insert
-            }
-            else
-            {
-                ++face_count_of_edge[e]; // and grows each time get() finds the edge
-            }
-            t.corner_edge[begin + k] = e;
+            upper_ends(mesh, t, i, ends);
+            for_each_run(ends, [&](size_t first, size_t) { edge_at[ends[first].corner] = 1; });
         }
-    }
-    t.edge_vertices = graph.release_pairs();
-
-    // F(e): faces per edge in face order.
-    t.edge_face_offsets = offsets_from_counts(face_count_of_edge);
-    t.edge_faces.resize(t.edge_face_offsets.back());
-    std::vector<Index> fill(t.edge_face_offsets.begin(), t.edge_face_offsets.end() - 1);
+    });
+    Index edges = 0;
     for (Index c = 0; c < corners; ++c)
-        t.edge_faces[fill[t.corner_edge[c]]++] = t.corner_face[c];
-}
-
-//! V(i) (increasing) and the edge counts from the edge list and F(e): cheaper than
-//! build_neighbors_and_counts once the edges exist, and the same result.
-void neighbors_and_counts_from_edges(Topology& t)
-{
-    const auto edges = static_cast<Index>(t.edge_vertices.size() / 2);
-    std::vector<Index> valence(t.vertex_count, 0);
-    for (Index e = 0; e < edges; ++e)
     {
-        ++valence[t.edge_vertices[2 * e]];
-        ++valence[t.edge_vertices[2 * e + 1]];
-        count_edge(t, static_cast<size_t>(t.edge_face_count(e)));
+        const Index first = edge_at[c];
+        edge_at[c] = edges;
+        edges += first;
     }
-    t.vertex_offsets = offsets_from_counts(valence);
-    t.vertex_neighbors.resize(t.vertex_offsets.back());
-    std::vector<Index>& fill = valence;
-    std::copy(t.vertex_offsets.begin(), t.vertex_offsets.end() - 1, fill.begin());
-    for (Index e = 0; e < edges; ++e)
-    {
-        const Index i = t.edge_vertices[2 * e], j = t.edge_vertices[2 * e + 1];
-        t.vertex_neighbors[fill[i]++] = j;
-        t.vertex_neighbors[fill[j]++] = i;
-    }
-    for (Index i = 0; i < t.vertex_count; ++i)
-        std::sort(t.vertex_neighbors.begin() + t.vertex_offsets[i],
-                  t.vertex_neighbors.begin() + t.vertex_offsets[i + 1]);
-}
-
-//! The dual graph E*: the same get/insert structure over pairs of faces.
-void build_dual(Topology& t)
-{
-    EdgeGraph dual(static_cast<size_t>(t.regular_edge_count));
-    const auto edges = static_cast<Index>(t.edge_vertices.size() / 2);
-    for (Index e = 0; e < edges; ++e)
-        if (t.edge_kind(e) == EdgeKind::Regular)
+    // Each edge from its lower end: its vertices, n_e, its corners and, per corner, its
+    // place among the edge's faces (in face order).
+    t.edge_vertices.resize(2 * static_cast<size_t>(edges));
+    t.corner_edge.resize(corners);
+    std::vector<Index> face_count(static_cast<size_t>(edges));
+    // Then, per corner, its place among its edge's faces: edge_at is read at a run's
+    // first corner only, by the one vertex that owns the run, before this overwrites it.
+    std::vector<Index>& place = edge_at;
+    parallel_ranges(t.vertex_count, [&](Index begin, Index end) {
+        std::vector<UpperEnd> ends;
+        for (Index i = begin; i < end; ++i)
         {
-            const auto faces = t.faces_of_edge(e);
-            dual.insert(faces[0], faces[1]);
+            upper_ends(mesh, t, i, ends);
+            for_each_run(ends, [&](size_t first, size_t last) {
+                const Index e = edge_at[ends[first].corner];
+                t.edge_vertices[2 * static_cast<size_t>(e)] = i;
+                t.edge_vertices[2 * static_cast<size_t>(e) + 1] = ends[first].j;
+                face_count[e] = static_cast<Index>(last - first);
+                for (size_t k = first; k < last; ++k)
+                {
+                    t.corner_edge[ends[k].corner] = e;
+                    place[ends[k].corner] = static_cast<Index>(k - first);
+                }
+            });
         }
-    t.dual_edge_faces = dual.release_pairs();
+    });
+    // F(e): faces per edge in face order.
+    t.edge_face_offsets = offsets_from_counts(face_count);
+    face_count = {};
+    t.edge_faces.resize(t.edge_face_offsets.back());
+    parallel_for(corners, [&](Index c) {
+        t.edge_faces[t.edge_face_offsets[t.corner_edge[c]] + place[c]] = t.corner_face[c];
+    });
+}
+
+//! The dual graph E*: pairs (f, g), f < g, of faces sharing a regular edge, a pair once
+//! however many regular edges the faces share, numbered in the order of their first
+//! shared edge (as the paper's get/insert over the edges numbers them); N*(f) in that
+//! order. Parallel passes over the edges and the faces, like build_edges.
+void build_dual(const Mesh& mesh, Topology& t)
+{
+    const auto edges = static_cast<Index>(t.edge_vertices.size() / 2);
+    // The other face of regular edge e, seen from face f.
+    const auto other = [&t](Index e, Index f) {
+        const auto faces = t.faces_of_edge(e);
+        return faces[0] == f ? faces[1] : faces[0];
+    };
+    // 1 at each regular edge that is the first one its two faces share, then the dual
+    // edge's number there.
+    std::vector<Index> dual_at(static_cast<size_t>(edges), 0);
+    parallel_for(edges, [&](Index e) {
+        if (t.edge_kind(e) != EdgeKind::Regular)
+            return;
+        const Index f = t.faces_of_edge(e)[0], g = t.faces_of_edge(e)[1];
+        for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
+        {
+            const Index d = t.corner_edge[c];
+            if (d < e && t.edge_kind(d) == EdgeKind::Regular && other(d, f) == g)
+                return; // an earlier shared edge
+        }
+        dual_at[e] = 1;
+    });
+    Index duals = 0;
+    for (Index e = 0; e < edges; ++e)
+    {
+        const Index first = dual_at[e];
+        dual_at[e] = first ? duals : kInvalidIndex;
+        duals += first;
+    }
+    t.dual_edge_faces.resize(2 * static_cast<size_t>(duals));
+    parallel_for(edges, [&](Index e) {
+        if (dual_at[e] == kInvalidIndex)
+            return;
+        const auto faces = t.faces_of_edge(e); // in face order: faces[0] < faces[1]
+        t.dual_edge_faces[2 * static_cast<size_t>(dual_at[e])] = faces[0];
+        t.dual_edge_faces[2 * static_cast<size_t>(dual_at[e]) + 1] = faces[1];
+    });
+    // N*(f): the dual edges at f, in dual-edge order. Each pair's first shared edge is an
+    // edge of both faces, so a face finds all its dual edges among its own edges.
+    const auto dual_edges_of = [&](Index f, std::vector<std::pair<Index, Index>>& out) {
+        out.clear();
+        for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
+            if (const Index e = t.corner_edge[c]; dual_at[e] != kInvalidIndex)
+                out.emplace_back(dual_at[e], other(e, f));
+        std::sort(out.begin(), out.end());
+    };
     std::vector<Index> count(t.face_count, 0);
-    for (Index d = 0; d < t.dual_edge_count(); ++d)
-    {
-        ++count[t.dual_edge_faces[2 * d]];
-        ++count[t.dual_edge_faces[2 * d + 1]];
-    }
+    parallel_ranges(t.face_count, [&](Index begin, Index end) {
+        std::vector<std::pair<Index, Index>> duals_of_f;
+        for (Index f = begin; f < end; ++f)
+        {
+            dual_edges_of(f, duals_of_f);
+            count[f] = static_cast<Index>(duals_of_f.size());
+        }
+    });
     t.face_neighbor_offsets = offsets_from_counts(count);
+    count = {};
     t.face_neighbors.resize(t.face_neighbor_offsets.back());
-    std::vector<Index>& fill = count;
-    std::copy(t.face_neighbor_offsets.begin(), t.face_neighbor_offsets.end() - 1, fill.begin());
-    for (Index d = 0; d < t.dual_edge_count(); ++d)
-    {
-        const Index f = t.dual_edge_faces[2 * d], g = t.dual_edge_faces[2 * d + 1];
-        t.face_neighbors[fill[f]++] = g;
-        t.face_neighbors[fill[g]++] = f;
-    }
+    parallel_ranges(t.face_count, [&](Index begin, Index end) {
+        std::vector<std::pair<Index, Index>> duals_of_f;
+        for (Index f = begin; f < end; ++f)
+        {
+            dual_edges_of(f, duals_of_f);
+            for (size_t k = 0; k < duals_of_f.size(); ++k)
+                t.face_neighbors[t.face_neighbor_offsets[f] + static_cast<Index>(k)] =
+                    duals_of_f[k].second;
+        }
+    });
 }
 
 template <class T>
@@ -212,16 +332,12 @@ Topology build_topology(const Mesh& mesh, TopologyParts parts)
     // The corners are the base of every other part. V(i) and the edge counts come from
     // the edges when they are built anyway, else from the corners (no edge hash).
     build_corners(mesh, t);
+    build_neighbors_and_counts(mesh, t);
     const bool dual = has_parts(parts, TopologyParts::Dual);
     if (dual || has_parts(parts, TopologyParts::Edges))
-    {
         build_edges(mesh, t);
-        neighbors_and_counts_from_edges(t);
-    }
-    else
-        build_neighbors_and_counts(mesh, t);
     if (dual)
-        build_dual(t);
+        build_dual(mesh, t);
     if (!has_parts(parts, TopologyParts::Edges))
     {
         release(t.edge_vertices);

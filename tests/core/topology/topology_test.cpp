@@ -8,6 +8,7 @@
 #include <set>
 
 #include "core/io/io.h"
+#include "core/solver/parallel.h"
 #include "core/topology/edge_graph.h"
 #include "tests/helpers.h"
 
@@ -132,10 +133,130 @@ void check_parts(const Mesh& m, TopologyParts parts)
     same_or_empty(TopologyParts::Dual, t.face_neighbors, all.face_neighbors);
 }
 
+// The paper's construction, literally: get/insert over the face corners into the
+// EdgeGraph hash, n_e counted as insert() and get() meet each edge, F(e) filled in corner
+// order, then the dual edges inserted over the regular edges in edge order.
+struct PaperEdges
+{
+    std::vector<Index> edge_vertices, corner_edge, edge_faces, dual_edge_faces, face_neighbors;
+};
+
+PaperEdges paper_edges(const Mesh& m)
+{
+    PaperEdges p;
+    EdgeGraph graph(static_cast<size_t>(m.corner_count()));
+    std::vector<Index> n_e;
+    p.corner_edge.resize(static_cast<size_t>(m.corner_count()));
+    for (Index f = 0; f < m.face_count(); ++f)
+    {
+        const auto face = m.face(f);
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Index i = face[k], j = face[(k + 1) % face.size()];
+            Index e = graph.get(i, j);
+            if (e == kInvalidIndex)
+            {
+                e = graph.insert(i, j);
+                n_e.push_back(1);
+            }
+            else
+                ++n_e[static_cast<size_t>(e)];
+            p.corner_edge[static_cast<size_t>(m.face_offsets[f]) + k] = e;
+        }
+    }
+    p.edge_vertices = graph.release_pairs();
+    std::vector<std::vector<Index>> faces_of(n_e.size());
+    for (Index c = 0; c < m.corner_count(); ++c)
+    {
+        const auto f =
+            static_cast<Index>(std::upper_bound(m.face_offsets.begin(), m.face_offsets.end(), c) -
+                               m.face_offsets.begin() - 1);
+        faces_of[static_cast<size_t>(p.corner_edge[static_cast<size_t>(c)])].push_back(f);
+    }
+    EdgeGraph dual(16);
+    for (const auto& faces : faces_of)
+    {
+        p.edge_faces.insert(p.edge_faces.end(), faces.begin(), faces.end());
+        if (faces.size() == 2)
+            dual.insert(faces[0], faces[1]);
+    }
+    p.dual_edge_faces = dual.release_pairs();
+    std::vector<std::vector<Index>> neighbors(static_cast<size_t>(m.face_count()));
+    for (size_t d = 0; d < p.dual_edge_faces.size(); d += 2)
+    {
+        neighbors[static_cast<size_t>(p.dual_edge_faces[d])].push_back(p.dual_edge_faces[d + 1]);
+        neighbors[static_cast<size_t>(p.dual_edge_faces[d + 1])].push_back(p.dual_edge_faces[d]);
+    }
+    for (const auto& n : neighbors)
+        p.face_neighbors.insert(p.face_neighbors.end(), n.begin(), n.end());
+    return p;
+}
+
+void check_against_paper(const Mesh& m)
+{
+    const Topology t = build_topology(m);
+    const PaperEdges p = paper_edges(m);
+    CHECK(t.edge_vertices == p.edge_vertices);
+    CHECK(t.corner_edge == p.corner_edge);
+    CHECK(t.edge_faces == p.edge_faces);
+    CHECK(t.dual_edge_faces == p.dual_edge_faces);
+    CHECK(t.face_neighbors == p.face_neighbors);
+}
+
+// Restores the default thread count when a test case ends.
+struct ThreadCountGuard
+{
+    ~ThreadCountGuard() { set_thread_count(0); }
+};
+
 } // namespace
 
 TEST_SUITE("Topology")
 {
+    TEST_CASE("edges, F(e) and the dual graph are numbered exactly as the paper's get/insert")
+    {
+        ThreadCountGuard guard;
+        Mesh folded; // two quads sharing two regular edges: one dual edge
+        for (int k = 0; k < 5; ++k)
+            folded.add_vertex(k, k * k, 0);
+        folded.add_face(std::vector<Index>{0, 1, 2, 3});
+        folded.add_face(std::vector<Index>{2, 1, 0, 4});
+        for (const Mesh& m :
+             {test::tetrahedron(), test::quad_cube(), test::open_grid(4, 3),
+              test::nonmanifold_fan(), test::two_components(), test::with_isolated_vertex(),
+              test::mixed_polygons(), test::quad_torus(6, 5, 2, 1), folded})
+            check_against_paper(m);
+        // The bunny as stored and with its faces and vertices shuffled (any file order),
+        // on one, two and three threads.
+        const Mesh bunny = io::read_mesh((test::assets_dir() / "bunny.obj").string());
+        Mesh shuffled;
+        std::vector<Index> to(static_cast<size_t>(bunny.vertex_count()));
+        for (Index v = 0; v < bunny.vertex_count(); ++v)
+            to[static_cast<size_t>(v)] =
+                static_cast<Index>((static_cast<std::int64_t>(v) * 7919) % bunny.vertex_count());
+        shuffled.positions.resize(bunny.positions.size());
+        for (Index v = 0; v < bunny.vertex_count(); ++v)
+            for (int a = 0; a < 3; ++a)
+                shuffled.positions[3 * static_cast<size_t>(to[static_cast<size_t>(v)]) + a] =
+                    bunny.positions[3 * static_cast<size_t>(v) + a];
+        for (Index k = 0; k < bunny.face_count(); ++k)
+        {
+            const Index f =
+                static_cast<Index>((static_cast<std::int64_t>(k) * 104729) % bunny.face_count());
+            std::vector<Index> face;
+            for (const Index v : bunny.face(f))
+                face.push_back(to[static_cast<size_t>(v)]);
+            shuffled.add_face(face);
+        }
+        for (const int threads : {1, 2, 3})
+        {
+            CAPTURE(threads);
+            set_thread_count(threads);
+            check_against_paper(bunny);
+            check_against_paper(shuffled);
+        }
+    }
+
     TEST_CASE("counts on hand-built meshes")
     {
         check_counts(test::tetrahedron(), {6, 0, 6, 0, 6, 1, 0});
