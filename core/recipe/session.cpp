@@ -346,56 +346,60 @@ void Session::fused_sweep(const Scalar* x, Scalar* y)
             centroid_->face_residuals(x, faces.data(), begin, end, residual);
         });
     }
-    // Copies, captured by value: the loop then keeps them in registers.
-    const Scalar lambda = recipe_.lambda;
+    if (free_.size() == static_cast<size_t>(vertex_count_))
+        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, true>(x, y, begin, end);
+        });
+    else
+        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, false>(x, y, begin, end);
+        });
+}
+
+template <bool Soft, bool Centroid, bool Normal, bool AllFree>
+void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
+{
+    // Locals: the loop keeps them in registers (the stores to y could change the
+    // session's members for the compiler, which would then load them again).
+    const Scalar step = recipe_.lambda;
     const Index* free = free_.data();
     const Index* offsets = topology_->vertex_offsets.data();
     const Scalar* normals = normals_.data();
     const Scalar* factor = system_.factor.data();
     const Scalar* diagonal = system_.diagonal.data();
     const Scalar* residual = centroid_residual_.data();
+    const EdgeTerm& edge = edge_;
     // E_L alone: the diagonal is n_i, read from V(i)'s offsets, which the edge term loads
     // anyway (8 bytes per vertex less to stream; the same value).
     constexpr bool kPlain = !Soft && !Centroid && !Normal;
-    const auto sweep = [=, this]<bool AllFree>(Index begin, Index end) {
-        // A local: the closure's copy could be changed by the stores to y for the compiler.
-        const Scalar step = lambda;
-        for (Index k = begin; k < end; ++k)
+    for (Index k = begin; k < end; ++k)
+    {
+        // Every vertex free (no region, no pins): the free list is 0, 1, ... and is not
+        // read (4 bytes per vertex less to stream).
+        const Index i = AllFree ? k : free[k];
+        // 64 bits before the multiplications: one addressing mode each.
+        const std::ptrdiff_t at = 3 * static_cast<std::ptrdiff_t>(i);
+        Scalar r[3] = {0, 0, 0};
+        edge.add_vertex_rhs(i, x, r);
+        if constexpr (Soft)
+            soft_->add_vertex_rhs(i, x, r);
+        if constexpr (Centroid)
+            centroid_->add_vertex_residuals(i, residual, r);
+        if constexpr (Normal)
+            normal_->add_vertex_rhs(i, x, normals, r);
+        Scalar dx[3];
+        if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
+            cholesky3_solve(&factor[2 * at], r, dx);
+        else
         {
-            // Every vertex free (no region, no pins): the free list is 0, 1, ... and is
-            // not read (4 bytes per vertex less to stream).
-            const Index i = AllFree ? k : free[k];
-            // 64 bits before the multiplications: one addressing mode each.
-            const std::ptrdiff_t at = 3 * static_cast<std::ptrdiff_t>(i);
-            Scalar r[3] = {0, 0, 0};
-            edge_.add_vertex_rhs(i, x, r);
-            if constexpr (Soft)
-                soft_->add_vertex_rhs(i, x, r);
-            if constexpr (Centroid)
-                centroid_->add_vertex_residuals(i, residual, r);
-            if constexpr (Normal)
-                normal_->add_vertex_rhs(i, x, normals, r);
-            Scalar dx[3];
-            if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
-                cholesky3_solve(&factor[2 * at], r, dx);
-            else
-            {
-                const Scalar inv =
-                    Scalar(1) / (kPlain ? Scalar(offsets[i + 1] - offsets[i]) : diagonal[i]);
-                for (int a = 0; a < 3; ++a)
-                    dx[a] = r[a] * inv;
-            }
+            const Scalar inv =
+                Scalar(1) / (kPlain ? Scalar(offsets[i + 1] - offsets[i]) : diagonal[i]);
             for (int a = 0; a < 3; ++a)
-                y[at + a] = x[at + a] + step * dx[a];
+                dx[a] = r[a] * inv;
         }
-    };
-    const auto n = static_cast<Index>(free_.size());
-    if (n == vertex_count_)
-        parallel_ranges(
-            n, [&](Index begin, Index end) { sweep.template operator()<true>(begin, end); });
-    else
-        parallel_ranges(
-            n, [&](Index begin, Index end) { sweep.template operator()<false>(begin, end); });
+        for (int a = 0; a < 3; ++a)
+            y[at + a] = x[at + a] + step * dx[a];
+    }
 }
 
 namespace {
