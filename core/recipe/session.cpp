@@ -229,11 +229,9 @@ void Session::precompute()
     if (centroid_ && fused())
     {
         centroid_residual_.assign(3 * static_cast<size_t>(nf), 0);
-        std::vector<char> is_free(nv, 0);
-        for (const Index v : free_)
-            is_free[v] = 1;
+        // A face's vertex is free exactly when it is not fixed: it has n_i >= 2 > 0.
         for (const Index f : centroid_->faces())
-            if (std::ranges::any_of(mesh.face(f), [&](Index v) { return is_free[v] != 0; }))
+            if (std::ranges::any_of(mesh.face(f), [&](Index v) { return fixed[v] == 0; }))
                 centroid_active_.push_back(f);
         if (centroid_active_.size() == centroid_->faces().size())
             centroid_active_ = {};
@@ -363,15 +361,11 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
     // session's members for the compiler, which would then load them again).
     const Scalar step = recipe_.lambda;
     const Index* free = free_.data();
-    const Index* offsets = topology_->vertex_offsets.data();
     const Scalar* normals = normals_.data();
     const Scalar* factor = system_.factor.data();
     const Scalar* diagonal = system_.diagonal.data();
     const Scalar* residual = centroid_residual_.data();
     const EdgeTerm& edge = edge_;
-    // E_L alone: the diagonal is n_i, read from V(i)'s offsets, which the edge term loads
-    // anyway (8 bytes per vertex less to stream; the same value).
-    constexpr bool kPlain = !Soft && !Centroid && !Normal;
     for (Index k = begin; k < end; ++k)
     {
         // Every vertex free (no region, no pins): the free list is 0, 1, ... and is not
@@ -392,8 +386,7 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
             cholesky3_solve(&factor[2 * at], r, dx);
         else
         {
-            const Scalar inv =
-                Scalar(1) / (kPlain ? Scalar(offsets[i + 1] - offsets[i]) : diagonal[i]);
+            const Scalar inv = Scalar(1) / diagonal[i];
             for (int a = 0; a < 3; ++a)
                 dx[a] = r[a] * inv;
         }

@@ -48,19 +48,6 @@ struct SharedEdgeCounts
     }
 };
 
-//! The corners before and after corner c in its face (cyclically).
-struct AdjacentCorners
-{
-    Index previous;
-    Index next;
-};
-AdjacentCorners adjacent_corners(const Mesh& mesh, const Topology& t, Index c)
-{
-    const Index f = t.corner_face[c];
-    const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
-    return {c == first ? last : c - 1, c == last ? first : c + 1};
-}
-
 //! The other ends of the face edges at vertex i, sorted, an end j repeated once per face
 //! of the edge (i, j): the corners of i contribute their next and previous vertices.
 void edge_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<Index>& ends)
@@ -102,19 +89,22 @@ void upper_ends(const Mesh& mesh, const Topology& t, Index i, std::vector<UpperE
     std::sort(ends.begin(), ends.end());
 }
 
-//! Calls f(begin, end) for each run of equal j in sorted ends.
-template <class F>
-void for_each_run(const std::vector<UpperEnd>& ends, F&& f)
+//! Calls f(begin, end) for each run of entries with equal key(entry) in sorted `items`.
+template <class T, class Key, class F>
+void for_each_run(const std::vector<T>& items, Key key, F&& f)
 {
-    for (size_t k = 0; k < ends.size();)
+    for (size_t k = 0; k < items.size();)
     {
         size_t run = k + 1;
-        while (run < ends.size() && ends[run].j == ends[k].j)
+        while (run < items.size() && key(items[run]) == key(items[k]))
             ++run;
         f(k, run);
         k = run;
     }
 }
+
+constexpr auto end_vertex = [](const auto& end) { return end.j; };
+constexpr auto itself = [](Index v) { return v; };
 
 //! Corners of each vertex (in face order) and the face of each corner.
 void build_corners(const Mesh& mesh, Topology& t)
@@ -149,16 +139,11 @@ void build_neighbors_and_counts(const Mesh& mesh, Topology& t)
         for (Index i = begin; i < end; ++i)
         {
             edge_ends(mesh, t, i, ends);
-            for (size_t k = 0; k < ends.size();)
-            {
-                size_t run = k + 1;
-                while (run < ends.size() && ends[run] == ends[k])
-                    ++run;
+            for_each_run(ends, itself, [&](size_t first, size_t last) {
                 ++valence[i];
-                if (ends[k] > i) // each edge once, from its lower end
-                    counts.add(run - k);
-                k = run;
-            }
+                if (ends[first] > i) // each edge once, from its lower end
+                    counts.add(last - first);
+            });
         }
         total.add(counts);
     });
@@ -195,7 +180,8 @@ void build_edges(const Mesh& mesh, Topology& t)
         for (Index i = begin; i < end; ++i)
         {
             upper_ends(mesh, t, i, ends);
-            for_each_run(ends, [&](size_t first, size_t) { edge_at[ends[first].corner] = 1; });
+            for_each_run(ends, end_vertex,
+                         [&](size_t first, size_t) { edge_at[ends[first].corner] = 1; });
         }
     });
     Index edges = 0;
@@ -218,7 +204,7 @@ void build_edges(const Mesh& mesh, Topology& t)
         for (Index i = begin; i < end; ++i)
         {
             upper_ends(mesh, t, i, ends);
-            for_each_run(ends, [&](size_t first, size_t last) {
+            for_each_run(ends, end_vertex, [&](size_t first, size_t last) {
                 const Index e = edge_at[ends[first].corner];
                 t.edge_vertices[2 * static_cast<size_t>(e)] = i;
                 t.edge_vertices[2 * static_cast<size_t>(e) + 1] = ends[first].j;

@@ -130,6 +130,23 @@ struct TopologySummary
 //! \pre the topology has TopologyParts::Neighbors.
 TopologySummary summarize(const Topology& topology);
 
+//! The corners before and after corner c in its face (cyclically), as corner indices.
+struct AdjacentCorners
+{
+    Index previous;
+    Index next;
+};
+//! Inline: the face-normal term calls it (through corner_neighbors) for every corner of
+//! every step.
+inline AdjacentCorners adjacent_corners(const Mesh& mesh, const Topology& topology, Index corner)
+{
+    // Branches, not (k +- 1) % n: two integer divisions per corner were a measurable
+    // part of the face-normal term's step.
+    const Index f = topology.corner_face[corner];
+    const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
+    return {corner == first ? last : corner - 1, corner == last ? first : corner + 1};
+}
+
 //! \brief Corners before and after corner k in its face: the vertices joined to the
 //! corner's vertex by the two edges of that face, V(f, i) in the paper.
 struct CornerNeighbors
@@ -137,15 +154,10 @@ struct CornerNeighbors
     Index previous;
     Index next;
 };
-//! Inline: the face-normal term calls it for every corner of every step.
 inline CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topology, Index corner)
 {
-    // Branches, not (k +- 1) % n: two integer divisions per corner were a measurable
-    // part of the face-normal term's step.
-    const Index f = topology.corner_face[corner];
-    const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
-    return {mesh.face_vertices[corner == first ? last : corner - 1],
-            mesh.face_vertices[corner == last ? first : corner + 1]};
+    const AdjacentCorners a = adjacent_corners(mesh, topology, corner);
+    return {mesh.face_vertices[a.previous], mesh.face_vertices[a.next]};
 }
 
 } // namespace meshfair
