@@ -2,12 +2,15 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/io/read_obj.h"
 
+#include <algorithm>
+#include <exception>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair::io {
 
@@ -99,19 +102,32 @@ void add_notes(const ObjTally& t, ReadReport& report)
                                " lines with unknown keywords (first: " + t.first_unknown + ")");
 }
 
-} // namespace
-
-Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report)
+// The lines of one part of the file, parsed into a mesh of their own. The first part is
+// the file's start, so everything in it means what it means in the serial read. A later
+// part starts at an unknown vertex count and line number; whatever needs those (a
+// negative index, a note that names a line, an error) stops it with RangeNeedsContext or
+// a FormatError, and the caller reads the file again serially.
+struct ObjPart
 {
-    report.format = Format::Obj;
-    report.encoding = Encoding::Ascii;
-    // One pass straight into the mesh: faces are normalized as they are read, so no
-    // per-face bookkeeping outlives its line.
     Mesh mesh;
     ObjTally tally;
+    std::int64_t max_index = -1;   // the largest corner index, forward references included
+    std::int64_t forward_line = 0; // where the largest forward reference is (first part)
+    std::int64_t forward_column = 0;
+};
+
+struct RangeNeedsContext
+{
+};
+
+ObjPart parse_part(std::string_view data, const std::string& name, bool first_part)
+{
+    ObjPart part;
+    Mesh& mesh = part.mesh;
+    ObjTally& tally = part.tally;
     LineReader reader(data, name);
     std::vector<Index> face;
-    std::int64_t forward_line = 0, forward_column = 0, forward_max = -1;
+    std::int64_t forward_max = -1;
     while (reader.next())
     {
         Tokenizer tokens(reader.line());
@@ -121,6 +137,8 @@ Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report
         if (keyword == "v")
         {
             read_vertex(reader, tokens, mesh, tally);
+            if (!first_part && tally.vertex_extras > 0)
+                throw RangeNeedsContext{};
         }
         else if (keyword == "f")
         {
@@ -128,12 +146,15 @@ Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report
             face.clear();
             for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
             {
+                if (!first_part && t.front() == '-')
+                    throw RangeNeedsContext{};
                 const std::int64_t index = corner_index(reader, t, nv);
+                part.max_index = std::max(part.max_index, index);
                 if (index >= nv && index > forward_max)
                 {
                     forward_max = index;
-                    forward_line = reader.line_number();
-                    forward_column = reader.column_of(t);
+                    part.forward_line = reader.line_number();
+                    part.forward_column = reader.column_of(t);
                 }
                 face.push_back(static_cast<Index>(index));
             }
@@ -145,8 +166,12 @@ Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report
             if (!check.ok)
                 reader.fail(check.problem, reader.column_of(keyword));
             if (check.collapsed > 0)
+            {
+                if (!first_part)
+                    throw RangeNeedsContext{};
                 tally.collapsed.add(check.collapsed,
                                     reader.here(reader.column_of(keyword)).to_string());
+            }
             if (mesh.face_vertices.size() + face.size() > static_cast<size_t>(kMaxElements))
                 reader.fail("more face corners than MeshFair supports");
             mesh.add_face(face);
@@ -170,17 +195,154 @@ Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report
         }
         else if (tally.unknown_lines++ == 0)
         {
+            if (!first_part)
+                throw RangeNeedsContext{};
             tally.first_unknown = "'" + std::string(keyword.substr(0, 20)) + "' at line " +
                                   std::to_string(reader.line_number());
         }
     }
-    if (forward_max >= mesh.vertex_count())
-        throw FormatError(SourceLocation::text(name, forward_line, forward_column),
-                          "vertex index " + std::to_string(forward_max + 1) +
+    return part;
+}
+
+Mesh finish(ObjPart& part, const std::string& name, ReadReport& report)
+{
+    if (part.max_index >= part.mesh.vertex_count())
+        throw FormatError(SourceLocation::text(name, part.forward_line, part.forward_column),
+                          "vertex index " + std::to_string(part.max_index + 1) +
                               " is past the last vertex (the file defines " +
-                              std::to_string(mesh.vertex_count()) + ")");
-    add_notes(tally, report);
-    return mesh;
+                              std::to_string(part.mesh.vertex_count()) + ")");
+    add_notes(part.tally, report);
+    return std::move(part.mesh);
+}
+
+// Cuts the data just after a line feed near each k/parts of its length, which is always
+// a line boundary (LF and CRLF end a line there; a CR alone never precedes the cut).
+std::vector<std::string_view> cut_at_lines(std::string_view data, int parts)
+{
+    std::vector<std::string_view> cuts;
+    size_t begin = 0;
+    for (int k = 1; k <= parts; ++k)
+    {
+        size_t end = data.size();
+        if (k < parts)
+        {
+            const size_t target =
+                std::max(begin, data.size() / static_cast<size_t>(parts) * static_cast<size_t>(k));
+            const size_t lf = data.find('\n', target);
+            end = lf == std::string_view::npos ? data.size() : lf + 1;
+        }
+        if (end > begin)
+            cuts.push_back(data.substr(begin, end - begin));
+        begin = end;
+    }
+    return cuts;
+}
+
+// The parts joined in file order into the first one; false when a later part cannot be
+// taken as it is (then the serial read decides).
+bool join_parts(std::vector<ObjPart>& parts)
+{
+    ObjPart& all = parts.front();
+    size_t nv = all.mesh.positions.size(), nc = all.mesh.face_vertices.size(),
+           nf = all.mesh.face_offsets.size();
+    for (size_t k = 1; k < parts.size(); ++k)
+    {
+        const ObjTally& t = parts[k].tally;
+        all.tally.ignored_lines += t.ignored_lines;
+        all.tally.attribute_lines += t.attribute_lines;
+        all.tally.grouping_lines += t.grouping_lines;
+        all.tally.material_lines += t.material_lines;
+        all.max_index = std::max(all.max_index, parts[k].max_index);
+        nv += parts[k].mesh.positions.size();
+        nc += parts[k].mesh.face_vertices.size();
+        nf += parts[k].mesh.face_offsets.size() - 1;
+    }
+    // The serial read's limits and its forward-reference message need the whole file.
+    if (nv / 3 > static_cast<size_t>(kMaxVertices) || nc > static_cast<size_t>(kMaxElements) ||
+        all.max_index >= static_cast<std::int64_t>(nv / 3))
+        return false;
+    Mesh& mesh = all.mesh;
+    mesh.positions.reserve(nv);
+    mesh.face_vertices.reserve(nc);
+    mesh.face_offsets.reserve(nf);
+    for (size_t k = 1; k < parts.size(); ++k)
+    {
+        const Mesh& m = parts[k].mesh;
+        const Index base = static_cast<Index>(mesh.face_vertices.size());
+        mesh.positions.insert(mesh.positions.end(), m.positions.begin(), m.positions.end());
+        mesh.face_vertices.insert(mesh.face_vertices.end(), m.face_vertices.begin(),
+                                  m.face_vertices.end());
+        for (size_t f = 1; f < m.face_offsets.size(); ++f)
+            mesh.face_offsets.push_back(base + m.face_offsets[f]);
+        parts[k].mesh = Mesh{}; // frees the part as soon as it is copied
+    }
+    return true;
+}
+
+} // namespace
+
+Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report)
+{
+    // One range per thread, for files large enough to pay for waking the threads.
+    constexpr size_t kBytesPerRange = size_t{4} << 20;
+    const auto ranges = static_cast<int>(
+        std::clamp<size_t>(data.size() / kBytesPerRange, 1, static_cast<size_t>(thread_count())));
+    return read_obj_in_ranges(data, name, report, ranges);
+}
+
+Mesh read_obj_in_ranges(std::string_view data, const std::string& name, ReadReport& report,
+                        int ranges, int* parsed_in)
+{
+    if (parsed_in)
+        *parsed_in = 1;
+    report.format = Format::Obj;
+    report.encoding = Encoding::Ascii;
+    std::vector<std::string_view> pieces = cut_at_lines(data, std::max(ranges, 1));
+    // A later range that starts with a byte-order mark would have it skipped as if it
+    // were the file's start.
+    const bool splittable =
+        pieces.size() > 1 && std::none_of(pieces.begin() + 1, pieces.end(), [](std::string_view p) {
+            return p.substr(0, 3) == "\xEF\xBB\xBF";
+        });
+    if (splittable)
+    {
+        std::vector<ObjPart> parts(pieces.size());
+        std::vector<char> stopped(pieces.size(), 0);
+        std::vector<std::exception_ptr> other(pieces.size());
+        auto parse = [&](Index k) {
+            try
+            {
+                parts[k] = parse_part(pieces[k], name, k == 0);
+            }
+            catch (const FormatError&)
+            {
+                stopped[k] = 1;
+            }
+            catch (const RangeNeedsContext&)
+            {
+                stopped[k] = 1;
+            }
+            catch (...)
+            {
+                other[k] = std::current_exception(); // out of memory: nothing to retry
+            }
+        };
+        detail::parallel_for_threads(static_cast<Index>(pieces.size()),
+                                     static_cast<int>(pieces.size()), parse);
+        for (const std::exception_ptr& e : other)
+            if (e)
+                std::rethrow_exception(e);
+        if (std::find(stopped.begin(), stopped.end(), 1) == stopped.end() && join_parts(parts))
+        {
+            if (parsed_in)
+                *parsed_in = static_cast<int>(parts.size());
+            return finish(parts.front(), name, report);
+        }
+    }
+    // One pass straight into the mesh: faces are normalized as they are read, so no
+    // per-face bookkeeping outlives its line.
+    ObjPart whole = parse_part(data, name, true);
+    return finish(whole, name, report);
 }
 
 } // namespace meshfair::io
