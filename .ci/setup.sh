@@ -17,14 +17,18 @@ esac
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
-# libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else.
+# libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else. The
+# editor needs GLFW, OSMesa, GLM, Dear ImGui and stb; xvfb and xauth give it a display
+# where there is none.
 packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
-    doctest-dev libeigen3-dev libopenmesh-dev)
+    doctest-dev libeigen3-dev libopenmesh-dev libglfw3-dev libosmesa6-dev libglm-dev
+    libimgui-dev libstb-dev xvfb xauth)
 # Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
 # and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
-# save tests and the files-opened check).
+# save tests and the files-opened check), xdotool, x11-apps and imagemagick (the editor's
+# real-window test: synthetic keys, a screenshot taken from outside, its pixels).
 [ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
-    strace)
+    strace xdotool x11-apps imagemagick)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -14,16 +14,7 @@
 // Measured with meshfair-cli on the 1.25M-vertex bunny: read 2.3 s -> 0.5-0.9 s, setup
 // 9.9 s -> 1.5-2.9 s (docs/performance.md).
 //
-// The mmap threshold is also fixed at 4 MiB: every block that large is a mapping of its
-// own, returned to the system when freed. glibc otherwise raises the threshold to the size
-// of each mapped block freed (up to 32 MiB); blocks below it then come from the heaps,
-// where a freed one can stay resident. With the OBJ reader's second thread, whose parts
-// are freed into a heap of their own, that kept 20 bytes per vertex more at the peak
-// (meshfair-cli smooth, combined recipe, 1.25M vertices: 494 -> 460 B/vertex on two
-// threads, 473 -> 459 on one).
-//
 // Not built under AddressSanitizer, which owns malloc.
-#include <malloc.h>
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -54,9 +45,6 @@ void* advise(void* block, std::size_t size)
     }
     return block;
 }
-
-// Before main: the readers' arrays are the first large blocks.
-[[maybe_unused]] const int g_fixed_mmap_threshold = mallopt(M_MMAP_THRESHOLD, 4 << 20);
 
 } // namespace
 

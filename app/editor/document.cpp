@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/document.h"
+
+namespace meshfair::app {
+
+Document load_document(const std::string& path)
+{
+    io::ReadReport report;
+    Mesh mesh = io::read_mesh(path, &report);
+    Document d = make_document(std::move(mesh), path);
+    d.report = std::move(report);
+    return d;
+}
+
+Document make_document(Mesh mesh, std::string path)
+{
+    Document d;
+    d.path = std::move(path);
+    d.mesh = std::move(mesh);
+    d.topology = build_topology(d.mesh, TopologyParts::Edges | TopologyParts::Corners);
+    d.draw_data = mesh_draw_data(d.mesh, d.topology);
+    d.box = bounding_box(d.mesh.positions);
+    return d;
+}
+
+Box3 bounding_box(std::span<const Scalar> x)
+{
+    Box3 box;
+    for (size_t k = 0; k + 2 < x.size(); k += 3)
+        box.add({x[k], x[k + 1], x[k + 2]});
+    return box;
+}
+
+std::string with_separators(std::int64_t n)
+{
+    std::string digits = std::to_string(n < 0 ? -n : n);
+    for (int k = static_cast<int>(digits.size()) - 3; k > 0; k -= 3)
+        digits.insert(static_cast<size_t>(k), ",");
+    return (n < 0 ? "-" : "") + digits;
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <string>
+
+#include "app/render/camera.h"
+#include "app/render/mesh_draw_data.h"
+#include "core/io/io.h"
+#include "core/mesh/mesh.h"
+#include "core/topology/topology.h"
+
+namespace meshfair::app {
+
+//! \brief The mesh the editor shows, with what it derives from it once per connectivity:
+//! the topology (edges, corners), the draw data and the bounding box. The editor owns
+//! the interaction state; this is the data everything else reads.
+struct Document
+{
+    std::string path; //!< the file it came from or was last saved to
+    Mesh mesh;
+    io::ReadReport report;
+    Topology topology;
+    MeshDrawData draw_data;
+    Box3 box;
+    bool modified = false; //!< changed since it was read or saved
+};
+
+//! \brief Reads a mesh file into a document.
+//! \throw InvalidInputError (FormatError included) naming the file and what is wrong.
+Document load_document(const std::string& path);
+
+//! A document of a mesh already in memory (a test fixture, a generated mesh), named `path`.
+Document make_document(Mesh mesh, std::string path);
+
+//! The box around the positions (3 #V values).
+Box3 bounding_box(std::span<const Scalar> positions);
+
+//! "34,835 vertices" style thousands separators for the status bar.
+std::string with_separators(std::int64_t n);
+
+} // namespace meshfair::app

@@ -1,0 +1,347 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/editor_ui.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <imgui.h>
+
+#include "app/editor/imgui_layer.h"
+
+namespace meshfair::app {
+
+namespace {
+
+constexpr KeyBinding kBindings[] = {
+    {"Left drag", "orbit (turntable or trackball, see T)"},
+    {"Middle drag", "orbit"},
+    {"Right drag, Shift + middle drag", "pan"},
+    {"Wheel", "zoom to the cursor"},
+    {"Ctrl + middle drag", "zoom (drag up: closer)"},
+    {"Double-click", "centre the view on the surface point under the cursor"},
+    {"Home, numpad .", "frame all"},
+    {"F", "frame the selection (all when nothing is selected)"},
+    {"Numpad 1 / 3 / 7 (or 1 / 3 / 7)", "front / right / top view"},
+    {"Ctrl + numpad 1 / 3 / 7", "back / left / bottom view"},
+    {"Numpad 5 (or 5)", "perspective / orthographic"},
+    {"T", "turntable / trackball orbit"},
+    {"S", "smooth / flat shading"},
+    {"W", "polygon wireframe"},
+    {"B", "boundary and singular edges"},
+    {"P", "vertex points"},
+    {"Tab", "side panel"},
+    {"F1, H", "this help"},
+    {"F12", "screenshot (PNG)"},
+    {"Ctrl + O", "open a mesh (or drop a file on the window)"},
+    {"Ctrl + Shift + S", "save as"},
+    {"Ctrl + Q, closing the window", "quit (asks first when there are unsaved changes)"},
+};
+
+constexpr float kSidePanelWidth = 300;
+
+const char* view_name(StandardView v)
+{
+    switch (v)
+    {
+        case StandardView::Front:
+            return "Front";
+        case StandardView::Back:
+            return "Back";
+        case StandardView::Right:
+            return "Right";
+        case StandardView::Left:
+            return "Left";
+        case StandardView::Top:
+            return "Top";
+        case StandardView::Bottom:
+            return "Bottom";
+    }
+    return "";
+}
+
+void menu_bar(const Document& document, EditorState& state, const Camera& camera, EditorUi& ui,
+              UiRequests& r)
+{
+    if (!ImGui::BeginMainMenuBar())
+        return;
+    if (ImGui::BeginMenu("File"))
+    {
+        if (ImGui::MenuItem("Open...", "Ctrl+O"))
+            ui.open_file_dialog(document);
+        if (ImGui::BeginMenu("Open recent", !state.recent.empty()))
+        {
+            for (const std::string& path : state.recent)
+                if (ImGui::MenuItem(path.c_str()))
+                    r.open_path = path;
+            ImGui::EndMenu();
+        }
+        if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S"))
+            ui.save_file_dialog(document);
+        if (ImGui::MenuItem("Screenshot", "F12"))
+            r.screenshot = true;
+        ImGui::Separator();
+        if (ImGui::MenuItem("Quit", "Ctrl+Q"))
+            ui.ask_to_quit(document, r);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View"))
+    {
+        if (ImGui::MenuItem("Frame all", "Home"))
+            r.frame_all = true;
+        for (StandardView v : {StandardView::Front, StandardView::Right, StandardView::Top,
+                               StandardView::Back, StandardView::Left, StandardView::Bottom})
+            if (ImGui::MenuItem(view_name(v)))
+                r.view = v;
+        if (ImGui::MenuItem("Orthographic", "Numpad 5",
+                            camera.projection == Projection::Orthographic))
+            r.toggle_projection = true;
+        bool trackball = state.orbit == OrbitStyle::Trackball;
+        if (ImGui::MenuItem("Trackball orbit", "T", &trackball))
+            state.orbit = trackball ? OrbitStyle::Trackball : OrbitStyle::Turntable;
+        ImGui::MenuItem("Side panel", "Tab", &state.show_side_panel);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Display"))
+    {
+        DisplayOptions& d = state.display;
+        if (ImGui::MenuItem("Flat shading", nullptr, d.shading == Shading::Flat))
+            d.shading = Shading::Flat;
+        if (ImGui::MenuItem("Smooth shading", "S", d.shading == Shading::Smooth))
+            d.shading = Shading::Smooth;
+        ImGui::MenuItem("Wireframe", "W", &d.wireframe);
+        ImGui::MenuItem("Boundary and singular edges", "B", &d.boundary_edges);
+        ImGui::MenuItem("Vertex points", "P", &d.vertex_points);
+        ImGui::MenuItem("Tint back faces", nullptr, &d.back_face_tint);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help"))
+    {
+        ImGui::MenuItem("Keys and mouse", "F1", &state.show_help);
+        ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+}
+
+void side_panel(const Document& document, EditorState& state, const Camera& camera, UiRequests& r)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    const float top = ImGui::GetFrameHeight();
+    const float bottom = ImGui::GetFrameHeight() + 8;
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kSidePanelWidth, top));
+    ImGui::SetNextWindowSize(ImVec2(kSidePanelWidth, io.DisplaySize.y - top - bottom));
+    ImGui::Begin("##side", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoCollapse);
+    if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        const Topology& t = document.topology;
+        ImGui::TextUnformatted(std::filesystem::path(document.path).filename().string().c_str());
+        ImGui::Text("vertices  %s", with_separators(document.mesh.vertex_count()).c_str());
+        ImGui::Text("faces     %s", with_separators(document.mesh.face_count()).c_str());
+        ImGui::Text("edges     %s", with_separators(t.edge_count()).c_str());
+        ImGui::Text("boundary  %s   singular  %s", with_separators(t.boundary_edge_count).c_str(),
+                    with_separators(t.singular_edge_count).c_str());
+        for (const std::string& note : document.report.notes)
+            ImGui::TextWrapped("note: %s", note.c_str());
+    }
+    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        DisplayOptions& d = state.display;
+        int shading = d.shading == Shading::Flat ? 0 : 1;
+        ImGui::RadioButton("flat", &shading, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("smooth", &shading, 1);
+        d.shading = shading == 0 ? Shading::Flat : Shading::Smooth;
+        ImGui::Checkbox("wireframe (polygon edges)", &d.wireframe);
+        ImGui::Checkbox("boundary and singular edges", &d.boundary_edges);
+        ImGui::Checkbox("vertex points", &d.vertex_points);
+        ImGui::Checkbox("tint back faces", &d.back_face_tint);
+        ImGui::SliderFloat("edge width", &d.edge_width_px, 1.0f, 4.0f, "%.1f px");
+        ImGui::SliderFloat("point size", &d.point_size_px, 1.0f, 12.0f, "%.0f px");
+        ImGui::ColorEdit3("surface", d.surface_color.data(), ImGuiColorEditFlags_NoInputs);
+        ImGui::SameLine();
+        ImGui::ColorEdit3("background", d.background.data(), ImGuiColorEditFlags_NoInputs);
+    }
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+    {
+        int projection = camera.projection == Projection::Perspective ? 0 : 1;
+        const int before = projection;
+        ImGui::RadioButton("perspective", &projection, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("orthographic", &projection, 1);
+        r.toggle_projection = r.toggle_projection || projection != before;
+        int orbit = state.orbit == OrbitStyle::Turntable ? 0 : 1;
+        ImGui::RadioButton("turntable", &orbit, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("trackball", &orbit, 1);
+        state.orbit = orbit == 0 ? OrbitStyle::Turntable : OrbitStyle::Trackball;
+        int column = 0;
+        for (StandardView v : {StandardView::Front, StandardView::Right, StandardView::Top,
+                               StandardView::Back, StandardView::Left, StandardView::Bottom})
+        {
+            if (column++ % 3 != 0)
+                ImGui::SameLine();
+            if (ImGui::Button(view_name(v), ImVec2(86, 0)))
+                r.view = v;
+        }
+        if (ImGui::Button("Frame all", ImVec2(-1, 0)))
+            r.frame_all = true;
+    }
+    ImGui::End();
+}
+
+void status_bar(const Document& document, const EditorState& state)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    const float height = ImGui::GetFrameHeight() + 8;
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoSavedSettings);
+    const Topology& t = document.topology;
+    const std::string frame = state.frame_ms > 0
+                                  ? std::to_string(static_cast<int>(state.frame_ms + 0.5)) + " ms"
+                                  : "offscreen";
+    ImGui::Text(
+        "V %s  F %s  E %s  |  boundary %s  singular %s  |  %s  |  %s%s%s",
+        with_separators(document.mesh.vertex_count()).c_str(),
+        with_separators(document.mesh.face_count()).c_str(),
+        with_separators(t.edge_count()).c_str(), with_separators(t.boundary_edge_count).c_str(),
+        with_separators(t.singular_edge_count).c_str(), frame.c_str(), state.renderer_name.c_str(),
+        state.message.empty() ? "" : "  |  ", state.message.c_str());
+    ImGui::End();
+}
+
+void help_overlay(EditorState& state)
+{
+    if (!state.show_help)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    ImGui::Begin("Keys and mouse", &state.show_help,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::BeginTable("bindings", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV))
+    {
+        for (const KeyBinding& b : kBindings)
+        {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(b.input);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(b.action);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+} // namespace
+
+std::span<const KeyBinding> key_bindings()
+{
+    return kBindings;
+}
+
+void remember_recent(std::vector<std::string>& recent, const std::string& path)
+{
+    recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
+    recent.insert(recent.begin(), path);
+    if (recent.size() > 10)
+        recent.resize(10);
+}
+
+void EditorUi::open_file_dialog(const Document& document)
+{
+    browser_.open(FileBrowser::Mode::Open, document.path);
+    browser_mode_ = FileBrowser::Mode::Open;
+}
+
+void EditorUi::save_file_dialog(const Document& document)
+{
+    browser_.open(FileBrowser::Mode::Save, document.path,
+                  std::filesystem::path(document.path).filename().string());
+    browser_mode_ = FileBrowser::Mode::Save;
+}
+
+void EditorUi::ask_to_quit(const Document& document, UiRequests& requests)
+{
+    if (document.modified)
+        quit_prompt_ = true;
+    else
+        requests.quit = true;
+}
+
+UiRequests EditorUi::build(const Document& document, EditorState& state, const Camera& camera)
+{
+    UiRequests r;
+    menu_bar(document, state, camera, *this, r);
+    if (state.show_side_panel)
+        side_panel(document, state, camera, r);
+    status_bar(document, state);
+    help_overlay(state);
+    if (const std::optional<std::string> chosen = browser_.draw())
+    {
+        if (browser_mode_ == FileBrowser::Mode::Open)
+            r.open_path = chosen;
+        else
+            r.save_path = chosen;
+    }
+    if (quit_prompt_)
+    {
+        ImGui::OpenPopup("Unsaved changes");
+        quit_prompt_ = false;
+    }
+    if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("%s has unsaved changes.",
+                    std::filesystem::path(document.path).filename().string().c_str());
+        if (ImGui::Button("Save as..."))
+        {
+            ImGui::CloseCurrentPopup();
+            save_file_dialog(document);
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard and quit"))
+        {
+            ImGui::CloseCurrentPopup();
+            r.quit = true;
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Cancel"))
+            ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+    }
+    return r;
+}
+
+ViewRect EditorUi::view_rect(int width, int height, const EditorState& state)
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    // ImGui lays out in window units; the framebuffer may have more pixels (HiDPI).
+    const float scale = io.DisplaySize.x > 0 ? float(width) / io.DisplaySize.x : 1.0f;
+    const int top = static_cast<int>(ImGui::GetFrameHeight() * scale);
+    const int bottom = static_cast<int>((ImGui::GetFrameHeight() + 8) * scale);
+    const int right = state.show_side_panel ? static_cast<int>(kSidePanelWidth * scale) : 0;
+    return {
+        width, height, 0, top, std::max(width - right, 16), std::max(height - top - bottom, 16)};
+}
+
+void EditorUi::prepare_offscreen(ImGuiLayer& layer, const Document& document, EditorState& state,
+                                 const Camera& camera, int width, int height)
+{
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(float(width), float(height));
+    io.DeltaTime = 1.0f / 60.0f;
+    // Two frames: windows that size themselves to their contents settle in the first.
+    for (int frame = 0; frame < 2; ++frame)
+    {
+        layer.new_frame();
+        build(document, state, camera);
+        layer.end_frame();
+    }
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "app/editor/document.h"
+#include "app/editor/file_browser.h"
+#include "app/render/camera.h"
+#include "app/render/renderer.h"
+
+namespace meshfair::app {
+
+class ImGuiLayer;
+
+//! The interaction state the editor owns (the document holds the data).
+struct EditorState
+{
+    DisplayOptions display;
+    OrbitStyle orbit = OrbitStyle::Turntable;
+    bool show_help = false;
+    bool show_side_panel = true;
+    std::string renderer_name;       //!< GL_RENDERER, for the status bar
+    double frame_ms = 0;             //!< the last frame's time (0 before the first)
+    bool offscreen = false;          //!< a frame for a file, not a window
+    std::vector<std::string> recent; //!< most recent first
+    std::string message;             //!< the last status or error message
+};
+
+//! What the user asked for in a frame of the interface; the window carries it out.
+struct UiRequests
+{
+    std::optional<std::string> open_path;
+    std::optional<std::string> save_path;
+    std::optional<StandardView> view;
+    bool frame_all = false;
+    bool toggle_projection = false;
+    bool screenshot = false;
+    bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them
+};
+
+//! One mouse or key binding, as the help overlay and docs/editor.md list it.
+struct KeyBinding
+{
+    const char* input;
+    const char* action;
+};
+std::span<const KeyBinding> key_bindings();
+
+//! \brief The editor's Dear ImGui interface: menu bar, side panel, status bar, help
+//! overlay, file browser and the unsaved-changes prompt. Pure ImGui: called between
+//! ImGui::NewFrame and ImGui::Render by the window, or by draw_offscreen.
+class EditorUi
+{
+public:
+    UiRequests build(const Document& document, EditorState& state, const Camera& camera);
+    //! Asks whether to discard unsaved changes before quitting (a window close, Ctrl+Q).
+    void ask_to_quit(const Document& document, UiRequests& requests);
+    void open_file_dialog(const Document& document);
+    void save_file_dialog(const Document& document);
+
+    //! \brief Lays out the interface for a `width` x `height` frame without a window (the
+    //! offscreen screenshot's --ui): afterwards view_rect is known and layer.draw() draws
+    //! the panels over the scene.
+    void prepare_offscreen(ImGuiLayer& layer, const Document& document, EditorState& state,
+                           const Camera& camera, int width, int height);
+
+    //! \brief The part of a `width` x `height` framebuffer the 3D view gets: all of it but
+    //! the menu bar, the status bar and the side panel when shown.
+    //! \pre a frame of the interface was laid out (the bars' heights come from its font).
+    static ViewRect view_rect(int width, int height, const EditorState& state);
+
+private:
+    FileBrowser browser_;
+    FileBrowser::Mode browser_mode_ = FileBrowser::Mode::Open;
+    bool quit_prompt_ = false;
+};
+
+//! Adds `path` in front of the recent files (once, at most 10 kept).
+void remember_recent(std::vector<std::string>& recent, const std::string& path);
+
+} // namespace meshfair::app

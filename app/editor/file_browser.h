@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meshfair::app {
+
+//! \brief A file dialog drawn with Dear ImGui (Debian ships no native dialog library):
+//! a directory listing (folders first, then the mesh files MeshFair reads), a path bar,
+//! and for saving a file name field. open() shows it; draw() every frame returns the chosen
+//! path once, when the user confirms.
+class FileBrowser
+{
+public:
+    enum class Mode
+    {
+        Open,
+        Save
+    };
+
+    void open(Mode mode, const std::filesystem::path& start, const std::string& file_name = {});
+    bool is_open() const { return open_; }
+    std::optional<std::string> draw();
+
+    //! The entries of `dir` shown to the user: folders (but not hidden ones), then files with
+    //! a mesh extension, each group sorted by name.
+    static std::vector<std::filesystem::directory_entry> listing(const std::filesystem::path& dir);
+
+private:
+    Mode mode_ = Mode::Open;
+    bool open_ = false;
+    bool just_opened_ = false;
+    std::filesystem::path directory_;
+    std::string file_name_;
+    std::string error_;
+};
+
+} // namespace meshfair::app

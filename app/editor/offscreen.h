@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <string>
+
+#include "app/render/renderer.h"
+
+namespace meshfair::app {
+
+//! What `meshfair --offscreen` renders.
+struct ScreenshotRequest
+{
+    std::string mesh_path;
+    std::string view_path; //!< a camera saved as JSON; empty: frame the mesh, front view
+    std::string screenshot_path;
+    std::string save_view_path; //!< where to write the camera used; empty: nowhere
+    int width = 1280;
+    int height = 800;
+    DisplayOptions display;
+    bool ui = false; //!< draw the editor's panels too
+};
+
+//! \brief Renders one frame through OSMesa (no display, no GLFW) and writes it as PNG.
+//! \throw InvalidInputError for a bad mesh or view file, WriteError when the PNG cannot be
+//! written (an existing file is kept whole), RenderError when there is no usable OpenGL.
+void render_screenshot(const ScreenshotRequest& request);
+
+} // namespace meshfair::app

@@ -1,0 +1,386 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/window.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <utility>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <backends/imgui_impl_glfw.h>
+
+#include "app/editor/document.h"
+#include "app/editor/editor_ui.h"
+#include "app/editor/imgui_layer.h"
+#include "app/editor/navigation.h"
+#include "app/render/gl_loader.h"
+#include "app/render/gl_renderer.h"
+#include "app/render/render_error.h"
+#include "core/errors.h"
+#include "core/io/io.h"
+
+namespace meshfair::app {
+
+namespace {
+
+std::string g_glfw_error; // GLFW reports errors through a C callback, before any window
+
+void remember_glfw_error(int /*code*/, const char* description)
+{
+    g_glfw_error = description ? description : "unknown GLFW error";
+}
+
+void* glfw_proc_address(const char* name)
+{
+    return reinterpret_cast<void*>(glfwGetProcAddress(name));
+}
+
+// Everything a frame needs, reachable from GLFW's C callbacks through the user pointer.
+struct Editor
+{
+    GLFWwindow* window = nullptr;
+    Document document;
+    EditorState state;
+    EditorUi ui;
+    Camera camera;
+    Navigator navigator;
+    std::unique_ptr<GlRenderer> renderer;
+    UiRequests pending; // requests from keys and callbacks, merged with the UI's
+    std::string screenshot_path;
+    int screenshots = 0;
+
+    ViewRect view; // where the 3D view is, from the interface's last frame
+
+    int width() const { return view.width; }
+    int height() const { return view.height; }
+    double aspect() const { return double(view.width) / std::max(view.height, 1); }
+    //! The cursor in the view's pixels.
+    void cursor(double& x, double& y) const
+    {
+        // Window coordinates to framebuffer pixels (they differ on scaled displays).
+        int ww = 0, wh = 0;
+        glfwGetWindowSize(window, &ww, &wh);
+        glfwGetCursorPos(window, &x, &y);
+        x = x * view.framebuffer_width / std::max(ww, 1) - view.x;
+        y = y * view.framebuffer_height / std::max(wh, 1) - view.y;
+    }
+
+    void open(const std::string& path)
+    {
+        try
+        {
+            Document next = load_document(path);
+            renderer->set_mesh(next.mesh, next.draw_data);
+            document = std::move(next);
+            camera.frame(document.box, aspect());
+            remember_recent(state.recent, path);
+            state.message = "opened " + path;
+        }
+        catch (const InvalidInputError& e)
+        {
+            state.message = e.what(); // the document on screen stays as it was
+        }
+    }
+
+    void save(const std::string& path)
+    {
+        try
+        {
+            io::write_mesh(document.mesh, path);
+            document.path = path;
+            document.modified = false;
+            remember_recent(state.recent, path);
+            state.message = "saved " + path;
+        }
+        catch (const std::exception& e)
+        {
+            state.message = e.what();
+        }
+    }
+
+    void screenshot()
+    {
+        std::string path = screenshot_path;
+        if (path.empty())
+            path = "meshfair-screenshot-" + std::to_string(++screenshots) + ".png";
+        try
+        {
+            write_png(renderer->read_pixels(view.framebuffer_width, view.framebuffer_height), path);
+            state.message = "screenshot " + path;
+        }
+        catch (const std::exception& e)
+        {
+            state.message = e.what();
+        }
+    }
+
+    void carry_out(const UiRequests& r)
+    {
+        if (r.frame_all)
+            camera.frame(document.box, aspect());
+        if (r.view)
+            camera.set_view(*r.view);
+        if (r.toggle_projection)
+            camera.projection = camera.projection == Projection::Perspective
+                                    ? Projection::Orthographic
+                                    : Projection::Perspective;
+        if (r.open_path)
+            open(*r.open_path);
+        if (r.save_path)
+            save(*r.save_path);
+        if (r.quit)
+            glfwSetWindowShouldClose(window, GLFW_TRUE);
+    }
+};
+
+Editor& editor_of(GLFWwindow* window)
+{
+    return *static_cast<Editor*>(glfwGetWindowUserPointer(window));
+}
+
+void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
+{
+    if (action != GLFW_PRESS && action != GLFW_REPEAT)
+        return;
+    Editor& e = editor_of(window);
+    if (ImGui::GetIO().WantCaptureKeyboard)
+        return;
+    const bool ctrl = mods & GLFW_MOD_CONTROL, shift = mods & GLFW_MOD_SHIFT;
+    UiRequests& r = e.pending;
+    DisplayOptions& d = e.state.display;
+    switch (key)
+    {
+        case GLFW_KEY_Q:
+            if (ctrl)
+                e.ui.ask_to_quit(e.document, r);
+            break;
+        case GLFW_KEY_O:
+            if (ctrl)
+                e.ui.open_file_dialog(e.document);
+            break;
+        case GLFW_KEY_S:
+            if (ctrl && shift)
+                e.ui.save_file_dialog(e.document);
+            else if (!ctrl)
+                d.shading = d.shading == Shading::Smooth ? Shading::Flat : Shading::Smooth;
+            break;
+        case GLFW_KEY_HOME:
+        case GLFW_KEY_KP_DECIMAL:
+        case GLFW_KEY_F: // no selection yet: the selection is everything
+            r.frame_all = true;
+            break;
+        case GLFW_KEY_KP_1:
+        case GLFW_KEY_1:
+            r.view = ctrl ? StandardView::Back : StandardView::Front;
+            break;
+        case GLFW_KEY_KP_3:
+        case GLFW_KEY_3:
+            r.view = ctrl ? StandardView::Left : StandardView::Right;
+            break;
+        case GLFW_KEY_KP_7:
+        case GLFW_KEY_7:
+            r.view = ctrl ? StandardView::Bottom : StandardView::Top;
+            break;
+        case GLFW_KEY_KP_5:
+        case GLFW_KEY_5:
+            r.toggle_projection = true;
+            break;
+        case GLFW_KEY_T:
+            e.state.orbit = e.state.orbit == OrbitStyle::Turntable ? OrbitStyle::Trackball
+                                                                   : OrbitStyle::Turntable;
+            break;
+        case GLFW_KEY_W:
+            d.wireframe = !d.wireframe;
+            break;
+        case GLFW_KEY_B:
+            d.boundary_edges = !d.boundary_edges;
+            break;
+        case GLFW_KEY_P:
+            d.vertex_points = !d.vertex_points;
+            break;
+        case GLFW_KEY_TAB:
+            e.state.show_side_panel = !e.state.show_side_panel;
+            break;
+        case GLFW_KEY_F1:
+        case GLFW_KEY_H:
+            e.state.show_help = !e.state.show_help;
+            break;
+        case GLFW_KEY_F12:
+            r.screenshot = true;
+            break;
+        default:
+            break;
+    }
+}
+
+void on_mouse_button(GLFWwindow* window, int button, int action, int mods)
+{
+    Editor& e = editor_of(window);
+    const MouseButton b = button == GLFW_MOUSE_BUTTON_LEFT     ? MouseButton::Left
+                          : button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
+                                                               : MouseButton::Right;
+    if (action == GLFW_RELEASE)
+    {
+        e.navigator.release(b);
+        return;
+    }
+    if (ImGui::GetIO().WantCaptureMouse)
+        return;
+    double x = 0, y = 0;
+    e.cursor(x, y);
+    e.navigator.press(
+        b, {bool(mods & GLFW_MOD_SHIFT), bool(mods & GLFW_MOD_CONTROL), bool(mods & GLFW_MOD_ALT)},
+        x, y);
+    if (b == MouseButton::Left && ImGui::IsMouseDoubleClicked(0))
+    {
+        // Centre the view on the surface point under the cursor (MeshLab's double click).
+        const PickResult p = e.renderer->pick(e.camera, e.view, int(x), int(y));
+        if (p.hit)
+            e.camera.target = p.point;
+    }
+}
+
+void on_cursor(GLFWwindow* window, double /*x*/, double /*y*/)
+{
+    Editor& e = editor_of(window);
+    double x = 0, y = 0;
+    e.cursor(x, y);
+    e.navigator.move(e.camera, e.state.orbit, x, y, e.width(), e.height());
+}
+
+void on_scroll(GLFWwindow* window, double /*dx*/, double dy)
+{
+    Editor& e = editor_of(window);
+    if (ImGui::GetIO().WantCaptureMouse)
+        return;
+    double x = 0, y = 0;
+    e.cursor(x, y);
+    e.navigator.scroll(e.camera, dy, x, y, e.width(), e.height());
+}
+
+void on_drop(GLFWwindow* window, int count, const char** paths)
+{
+    if (count > 0)
+        editor_of(window).pending.open_path = std::string(paths[0]);
+}
+
+void on_close(GLFWwindow* window)
+{
+    Editor& e = editor_of(window);
+    if (e.document.modified)
+    {
+        glfwSetWindowShouldClose(window, GLFW_FALSE);
+        e.ui.ask_to_quit(e.document, e.pending);
+    }
+}
+
+} // namespace
+
+void run_window(const WindowOptions& options)
+{
+    // The first document and view are read before any window opens, so that a bad file
+    // is reported like the command-line tool reports it.
+    auto editor = std::make_unique<Editor>();
+    editor->document = load_document(options.mesh_path);
+    if (!options.view_path.empty())
+        editor->camera = camera_from_json(io::read_file(options.view_path), options.view_path);
+    editor->state.display = options.display;
+    editor->screenshot_path = options.screenshot_path;
+    remember_recent(editor->state.recent, options.mesh_path);
+
+    glfwSetErrorCallback(remember_glfw_error);
+    if (!glfwInit())
+        throw NoDisplayError("cannot open a window: " + g_glfw_error);
+    struct Terminate
+    {
+        ~Terminate() { glfwTerminate(); }
+    } terminate;
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    const std::string title =
+        "MeshFair - " + std::filesystem::path(options.mesh_path).filename().string();
+    GLFWwindow* window =
+        glfwCreateWindow(options.width, options.height, title.c_str(), nullptr, nullptr);
+    if (window == nullptr)
+        throw RenderError("cannot create an OpenGL 3.3 core window: " + g_glfw_error);
+    struct Destroy
+    {
+        GLFWwindow* w;
+        ~Destroy() { glfwDestroyWindow(w); }
+    } destroy{window};
+    glfwMakeContextCurrent(window);
+    glfwSwapInterval(1);
+    // The renderer's GL objects go while the context still exists.
+    struct ReleaseGl
+    {
+        Editor& e;
+        ~ReleaseGl() { e.renderer.reset(); }
+    } release_gl{*editor};
+    editor->window = window;
+    editor->state.renderer_name = gl::load_functions(glfw_proc_address);
+    glfwSetWindowUserPointer(window, editor.get());
+    glfwSetKeyCallback(window, on_key);
+    glfwSetMouseButtonCallback(window, on_mouse_button);
+    glfwSetCursorPosCallback(window, on_cursor);
+    glfwSetScrollCallback(window, on_scroll);
+    glfwSetDropCallback(window, on_drop);
+    glfwSetWindowCloseCallback(window, on_close);
+
+    ImGuiLayer layer;
+    // Installed after MeshFair's callbacks, ImGui's chain to them.
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    struct Shutdown
+    {
+        ~Shutdown() { ImGui_ImplGlfw_Shutdown(); }
+    } shutdown;
+
+    editor->renderer = std::make_unique<GlRenderer>();
+    editor->renderer->set_mesh(editor->document.mesh, editor->document.draw_data);
+
+    bool first = true;
+    using Clock = std::chrono::steady_clock;
+    while (!glfwWindowShouldClose(window))
+    {
+        const auto start = Clock::now();
+        // Nothing animates yet: sleep until an event, but redraw at least twice a second.
+        if (!first)
+            glfwWaitEventsTimeout(0.5);
+        glfwPollEvents();
+        Editor& e = *editor;
+        ImGui_ImplGlfw_NewFrame();
+        layer.new_frame();
+        UiRequests r = e.ui.build(e.document, e.state, e.camera);
+        layer.end_frame();
+        int fb_width = 0, fb_height = 0;
+        glfwGetFramebufferSize(window, &fb_width, &fb_height);
+        e.view = EditorUi::view_rect(fb_width, fb_height, e.state);
+        if (first && options.view_path.empty())
+            e.camera.frame(e.document.box, e.aspect());
+        // Keys and callbacks of this frame, then the interface's own requests.
+        const UiRequests keys = std::exchange(e.pending, UiRequests{});
+        e.carry_out(keys);
+        e.carry_out(r);
+        e.renderer->draw(e.camera, e.state.display, e.view);
+        if (keys.screenshot || r.screenshot)
+            e.screenshot(); // the view without the panels
+        layer.draw();
+        glfwSwapBuffers(window);
+        e.state.frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        if (first)
+        {
+            std::printf("meshfair: window open, %dx%d, %s\n", fb_width, fb_height,
+                        e.state.renderer_name.c_str());
+            std::fflush(stdout);
+            first = false;
+        }
+    }
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,307 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/errors.h"
+
+namespace meshfair::app {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A point of the window on Shoemake's arcball: the unit sphere inscribed in the window,
+// and beyond its rim the rim itself.
+glm::dvec3 arcball_point(double x, double y, int width, int height)
+{
+    const double s = std::max(1, std::min(width, height));
+    glm::dvec3 p{(2 * x - width) / s, (height - 2 * y) / s, 0};
+    const double d2 = p.x * p.x + p.y * p.y;
+    if (d2 < 1)
+        p.z = std::sqrt(1 - d2);
+    else
+        p /= std::sqrt(d2);
+    return p;
+}
+
+} // namespace
+
+double Box3::radius() const
+{
+    return empty() ? 1.0 : std::max(0.5 * glm::length(hi - lo), 1e-9);
+}
+
+glm::dvec3 Camera::forward() const
+{
+    return rotation * glm::dvec3(0, 0, -1);
+}
+
+glm::dvec3 Camera::up() const
+{
+    return rotation * glm::dvec3(0, 1, 0);
+}
+
+glm::dvec3 Camera::right() const
+{
+    return rotation * glm::dvec3(1, 0, 0);
+}
+
+glm::dvec3 Camera::eye() const
+{
+    return target - distance * forward();
+}
+
+double Camera::near_plane() const
+{
+    const double depth = glm::dot(scene_center - eye(), forward());
+    const double near = depth - scene_radius;
+    // Orthographic depth may be negative: what is behind the eye is still in view.
+    return projection == Projection::Orthographic ? near : std::max(near, 1e-4 * scene_radius);
+}
+
+double Camera::far_plane() const
+{
+    const double depth = glm::dot(scene_center - eye(), forward());
+    return std::max(depth + scene_radius, near_plane() + 1e-3 * scene_radius);
+}
+
+double Camera::view_height() const
+{
+    return 2 * distance * std::tan(0.5 * glm::radians(fov_y_degrees));
+}
+
+glm::dmat4 Camera::view_matrix() const
+{
+    return glm::lookAt(eye(), target, up());
+}
+
+glm::dmat4 Camera::projection_matrix(double aspect) const
+{
+    if (projection == Projection::Perspective)
+        return glm::perspective(glm::radians(fov_y_degrees), aspect, near_plane(), far_plane());
+    const double h = 0.5 * view_height();
+    return glm::ortho(-h * aspect, h * aspect, -h, h, near_plane(), far_plane());
+}
+
+glm::dvec3 Camera::project(const glm::dvec3& p, int width, int height) const
+{
+    const glm::dvec4 clip =
+        projection_matrix(double(width) / height) * view_matrix() * glm::dvec4(p, 1);
+    const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    return {(ndc.x + 1) * 0.5 * width, (1 - ndc.y) * 0.5 * height, (ndc.z + 1) * 0.5};
+}
+
+glm::dvec3 Camera::unproject(const glm::dvec3& window, int width, int height) const
+{
+    const glm::dvec4 ndc{2 * window.x / width - 1, 1 - 2 * window.y / height, 2 * window.z - 1, 1};
+    const glm::dvec4 world =
+        glm::inverse(projection_matrix(double(width) / height) * view_matrix()) * ndc;
+    return glm::dvec3(world) / world.w;
+}
+
+void Camera::frame(const Box3& box, double aspect)
+{
+    scene_center = box.empty() ? glm::dvec3(0.0) : box.center();
+    scene_radius = box.radius();
+    target = scene_center;
+    const double r = 1.05 * scene_radius;
+    const double half_y = 0.5 * glm::radians(fov_y_degrees);
+    if (projection == Projection::Perspective)
+    {
+        // The sphere fits when its tangent cone's half angle is the narrower half field.
+        const double half_x = std::atan(std::tan(half_y) * aspect);
+        distance = r / std::sin(std::min(half_y, half_x));
+    }
+    else
+    {
+        const double height = 2 * r * std::max(1.0, 1.0 / aspect);
+        distance = height / (2 * std::tan(half_y));
+        // Keep the eye outside the sphere, so that a switch to perspective sees it all.
+        distance = std::max(distance, 2 * r);
+    }
+}
+
+void Camera::set_view(StandardView view)
+{
+    const glm::dvec3 y{0, 1, 0}, x{1, 0, 0};
+    switch (view)
+    {
+        case StandardView::Front:
+            rotation = glm::dquat(1, 0, 0, 0);
+            break;
+        case StandardView::Back:
+            rotation = glm::angleAxis(kPi, y);
+            break;
+        case StandardView::Right:
+            rotation = glm::angleAxis(0.5 * kPi, y);
+            break;
+        case StandardView::Left:
+            rotation = glm::angleAxis(-0.5 * kPi, y);
+            break;
+        case StandardView::Top:
+            rotation = glm::angleAxis(-0.5 * kPi, x);
+            break;
+        case StandardView::Bottom:
+            rotation = glm::angleAxis(0.5 * kPi, x);
+            break;
+    }
+}
+
+void Camera::orbit(OrbitStyle style, double x0, double y0, double x1, double y1, int width,
+                   int height)
+{
+    if (style == OrbitStyle::Turntable)
+    {
+        const double per_px = kPi / std::max(height, 1);
+        const double yaw = -(x1 - x0) * per_px, pitch = -(y1 - y0) * per_px;
+        rotation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * rotation *
+                   glm::angleAxis(pitch, glm::dvec3(1, 0, 0));
+    }
+    else
+    {
+        const glm::dvec3 a = arcball_point(x0, y0, width, height);
+        const glm::dvec3 b = arcball_point(x1, y1, width, height);
+        const glm::dvec3 axis = glm::cross(a, b);
+        const double len = glm::length(axis);
+        if (len < 1e-12)
+            return;
+        const double angle = std::atan2(len, glm::dot(a, b));
+        // The scene turns with the mouse, so the camera turns the other way, about the
+        // axis expressed in the camera's frame.
+        rotation = rotation * glm::angleAxis(-angle, axis / len);
+    }
+    rotation = glm::normalize(rotation);
+}
+
+void Camera::pan(double dx_px, double dy_px, int /*width*/, int height)
+{
+    const double per_px = view_height() / std::max(height, 1);
+    target += (-dx_px * right() + dy_px * up()) * per_px;
+}
+
+void Camera::zoom(double factor, double x_px, double y_px, int width, int height)
+{
+    const double per_px = view_height() / std::max(height, 1);
+    const glm::dvec3 under_cursor =
+        target + ((x_px - 0.5 * width) * right() + (0.5 * height - y_px) * up()) * per_px;
+    distance *= factor;
+    target = under_cursor + (target - under_cursor) * factor;
+}
+
+std::string to_json(const Camera& c)
+{
+    const nlohmann::json j = {
+        {"target", {c.target.x, c.target.y, c.target.z}},
+        {"distance", c.distance},
+        {"rotation", {c.rotation.w, c.rotation.x, c.rotation.y, c.rotation.z}},
+        {"projection", c.projection == Projection::Perspective ? "perspective" : "orthographic"},
+        {"fov_y_degrees", c.fov_y_degrees},
+        {"scene_center", {c.scene_center.x, c.scene_center.y, c.scene_center.z}},
+        {"scene_radius", c.scene_radius},
+    };
+    return j.dump(2) + "\n";
+}
+
+namespace {
+
+[[noreturn]] void bad_field(const std::string& name, const std::string& field,
+                            const std::string& why)
+{
+    throw InvalidInputError("'" + name + "': view field '" + field + "' " + why);
+}
+
+double finite_number(const nlohmann::json& j, const std::string& name, const std::string& field)
+{
+    if (!j.is_number())
+        bad_field(name, field, "must be a number");
+    const double v = j.get<double>();
+    if (!std::isfinite(v))
+        bad_field(name, field, "must be finite");
+    return v;
+}
+
+template <int N>
+glm::vec<N, double> vector_field(const nlohmann::json& j, const std::string& name,
+                                 const std::string& field)
+{
+    if (!j.is_array() || j.size() != N)
+        bad_field(name, field, "must be an array of " + std::to_string(N) + " numbers");
+    glm::vec<N, double> v;
+    for (int k = 0; k < N; ++k)
+        v[k] = finite_number(j[static_cast<size_t>(k)], name, field);
+    return v;
+}
+
+} // namespace
+
+Camera camera_from_json(const std::string& text, const std::string& name)
+{
+    nlohmann::json j;
+    try
+    {
+        j = nlohmann::json::parse(text);
+    }
+    catch (const nlohmann::json::parse_error& e)
+    {
+        // The message holds "at line L, column C".
+        throw InvalidInputError("'" + name + "': not JSON: " + e.what());
+    }
+    if (!j.is_object())
+        throw InvalidInputError("'" + name + "': a view must be a JSON object");
+    static const char* const known[] = {"target",      "distance",      "rotation",
+                                        "projection",  "fov_y_degrees", "scene_center",
+                                        "scene_radius"};
+    for (const auto& [key, value] : j.items())
+        if (std::find(std::begin(known), std::end(known), key) == std::end(known))
+            bad_field(name, key, "is unknown");
+    Camera c;
+    if (j.contains("target"))
+        c.target = vector_field<3>(j["target"], name, "target");
+    if (j.contains("distance"))
+    {
+        c.distance = finite_number(j["distance"], name, "distance");
+        if (c.distance <= 0)
+            bad_field(name, "distance", "must be positive");
+    }
+    if (j.contains("rotation"))
+    {
+        const glm::dvec4 q = vector_field<4>(j["rotation"], name, "rotation");
+        const double len = glm::length(q);
+        if (len < 1e-9)
+            bad_field(name, "rotation", "must be a non-zero quaternion (w x y z)");
+        c.rotation = glm::normalize(glm::dquat(q.x, q.y, q.z, q.w));
+    }
+    if (j.contains("projection"))
+    {
+        const auto& p = j["projection"];
+        if (p == "perspective")
+            c.projection = Projection::Perspective;
+        else if (p == "orthographic")
+            c.projection = Projection::Orthographic;
+        else
+            bad_field(name, "projection", "must be \"perspective\" or \"orthographic\"");
+    }
+    if (j.contains("fov_y_degrees"))
+    {
+        c.fov_y_degrees = finite_number(j["fov_y_degrees"], name, "fov_y_degrees");
+        if (c.fov_y_degrees <= 0 || c.fov_y_degrees >= 180)
+            bad_field(name, "fov_y_degrees", "must be in (0, 180)");
+    }
+    if (j.contains("scene_center"))
+        c.scene_center = vector_field<3>(j["scene_center"], name, "scene_center");
+    if (j.contains("scene_radius"))
+    {
+        c.scene_radius = finite_number(j["scene_radius"], name, "scene_radius");
+        if (c.scene_radius <= 0)
+            bad_field(name, "scene_radius", "must be positive");
+    }
+    return c;
+}
+
+} // namespace meshfair::app

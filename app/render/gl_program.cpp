@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/gl_program.h"
+
+#include <vector>
+
+#include "app/render/render_error.h"
+
+namespace meshfair::gl {
+
+namespace {
+
+GLuint compile(const std::string& file, GLenum stage)
+{
+    const std::string_view source = shader_source(file);
+    if (source.empty())
+        throw app::RenderError("no embedded shader '" + file + "'");
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source.data();
+    const auto length = static_cast<GLint>(source.size());
+    glShaderSource(shader, 1, &text, &length);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE)
+    {
+        GLint size = 0;
+        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &size);
+        std::vector<char> log(static_cast<size_t>(size) + 1, '\0');
+        glGetShaderInfoLog(shader, size, nullptr, log.data());
+        glDeleteShader(shader);
+        throw app::RenderError("shaders/" + file + " does not compile: " + log.data());
+    }
+    return shader;
+}
+
+} // namespace
+
+Program::Program(std::string_view name, bool with_geometry,
+                 std::initializer_list<const char*> uniforms)
+    : name_(name)
+{
+    std::vector<GLuint> shaders{compile(name_ + ".vert", GL_VERTEX_SHADER)};
+    if (with_geometry)
+        shaders.push_back(compile(name_ + ".geom", GL_GEOMETRY_SHADER));
+    shaders.push_back(compile(name_ + ".frag", GL_FRAGMENT_SHADER));
+    id_ = glCreateProgram();
+    for (const GLuint s : shaders)
+        glAttachShader(id_, s);
+    glLinkProgram(id_);
+    for (const GLuint s : shaders)
+    {
+        glDetachShader(id_, s);
+        glDeleteShader(s);
+    }
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE)
+    {
+        GLint size = 0;
+        glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &size);
+        std::vector<char> log(static_cast<size_t>(size) + 1, '\0');
+        glGetProgramInfoLog(id_, size, nullptr, log.data());
+        glDeleteProgram(id_);
+        throw app::RenderError("shader program '" + name_ + "' does not link: " + log.data());
+    }
+    for (const char* u : uniforms)
+    {
+        const GLint location = glGetUniformLocation(id_, u);
+        if (location < 0)
+        {
+            glDeleteProgram(id_);
+            throw app::RenderError("shader program '" + name_ + "' has no uniform " + u);
+        }
+        uniforms_[u] = location;
+    }
+}
+
+Program::~Program()
+{
+    glDeleteProgram(id_);
+}
+
+void Program::use() const
+{
+    glUseProgram(id_);
+}
+
+GLint Program::operator[](const char* uniform) const
+{
+    const auto it = uniforms_.find(uniform);
+    if (it == uniforms_.end())
+        throw app::RenderError("shader program '" + name_ + "': uniform " + uniform +
+                               " was not declared");
+    return it->second;
+}
+
+} // namespace meshfair::gl

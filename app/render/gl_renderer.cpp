@@ -1,0 +1,358 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/gl_renderer.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <string>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include "app/render/gl_functions.h"
+#include "app/render/gl_program.h"
+#include "app/render/render_error.h"
+
+namespace meshfair::app {
+
+namespace {
+
+void check(const char* where)
+{
+    const GLenum error = glGetError();
+    if (error == GL_NO_ERROR)
+        return;
+    char hex[16];
+    std::snprintf(hex, sizeof hex, "0x%04x", error);
+    throw RenderError(std::string("OpenGL error ") + hex + " in GlRenderer::" + where);
+}
+
+enum Attribute : GLuint
+{
+    kPosition = 0,
+    kNormal = 1,
+    kColor = 2
+};
+
+template <class T>
+void upload(GLenum target, GLuint buffer, const std::vector<T>& data)
+{
+    glBindBuffer(target, buffer);
+    glBufferData(target, static_cast<GLsizeiptr>(data.size() * sizeof(T)),
+                 data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
+}
+
+void set_matrices(const gl::Program& p, const glm::mat4& view, const glm::mat4& projection)
+{
+    glUniformMatrix4fv(p["u_view"], 1, GL_FALSE, glm::value_ptr(view));
+    glUniformMatrix4fv(p["u_projection"], 1, GL_FALSE, glm::value_ptr(projection));
+}
+
+} // namespace
+
+struct GlRenderer::Gl
+{
+    gl::Program surface{"mesh",
+                        false,
+                        {"u_view", "u_projection", "u_flat", "u_back_tint", "u_orthographic",
+                         "u_triangle_face", "u_face_area"}};
+    gl::Program lines{
+        "lines",
+        true,
+        {"u_view", "u_projection", "u_viewport_px", "u_width_px", "u_depth_bias", "u_color"}};
+    gl::Program points{
+        "points",
+        true,
+        {"u_view", "u_projection", "u_viewport_px", "u_size_px", "u_depth_bias", "u_color"}};
+    gl::Program ids{"pick", true, {"u_view", "u_projection", "u_triangle_face", "u_viewport_px"}};
+    GLuint surface_vao = 0, lines_vao = 0;
+    GLuint positions = 0, normals = 0, colors = 0, triangles = 0;
+    GLuint edges = 0, boundary = 0, singular = 0;
+    GLuint triangle_face = 0, face_area = 0; // buffers behind the textures
+    GLuint triangle_face_texture = 0, face_area_texture = 0;
+    GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
+    int pick_width = 0, pick_height = 0;
+
+    Gl()
+    {
+        glGenVertexArrays(1, &surface_vao);
+        glGenVertexArrays(1, &lines_vao);
+        GLuint* buffers[] = {&positions, &normals,  &colors,        &triangles, &edges,
+                             &boundary,  &singular, &triangle_face, &face_area};
+        for (GLuint* b : buffers)
+            glGenBuffers(1, b);
+        glGenTextures(1, &triangle_face_texture);
+        glGenTextures(1, &face_area_texture);
+        glBindVertexArray(surface_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, positions);
+        glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(kPosition);
+        glBindBuffer(GL_ARRAY_BUFFER, normals);
+        glVertexAttribPointer(kNormal, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(kNormal);
+        glBindBuffer(GL_ARRAY_BUFFER, colors);
+        glVertexAttribPointer(kColor, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles);
+        glBindVertexArray(lines_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, positions);
+        glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(kPosition);
+        glBindVertexArray(0);
+        // A buffer name exists only once bound; the textures need existing buffers.
+        for (GLuint b : {triangle_face, face_area, edges, boundary, singular})
+            glBindBuffer(GL_TEXTURE_BUFFER, b);
+        glBindBuffer(GL_TEXTURE_BUFFER, 0);
+        glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, triangle_face);
+        glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, face_area);
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+    }
+
+    ~Gl()
+    {
+        glDeleteVertexArrays(1, &surface_vao);
+        glDeleteVertexArrays(1, &lines_vao);
+        const GLuint buffers[] = {positions, normals,  colors,        triangles, edges,
+                                  boundary,  singular, triangle_face, face_area};
+        glDeleteBuffers(9, buffers);
+        glDeleteTextures(1, &triangle_face_texture);
+        glDeleteTextures(1, &face_area_texture);
+        glDeleteFramebuffers(1, &pick_framebuffer);
+        glDeleteRenderbuffers(1, &pick_ids);
+        glDeleteRenderbuffers(1, &pick_depth);
+    }
+
+    void bind_face_textures() const
+    {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
+        glActiveTexture(GL_TEXTURE0);
+    }
+
+    // The ID buffer's framebuffer, (re)made at the size asked for.
+    void prepare_pick_target(int width, int height)
+    {
+        if (pick_framebuffer != 0 && width == pick_width && height == pick_height)
+            return;
+        if (pick_framebuffer == 0)
+        {
+            glGenFramebuffers(1, &pick_framebuffer);
+            glGenRenderbuffers(1, &pick_ids);
+            glGenRenderbuffers(1, &pick_depth);
+        }
+        glBindRenderbuffer(GL_RENDERBUFFER, pick_ids);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RG32UI, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, pick_depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, pick_framebuffer);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, pick_ids);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, pick_depth);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RenderError("the ID buffer's framebuffer is incomplete");
+        pick_width = width;
+        pick_height = height;
+    }
+};
+
+GlRenderer::GlRenderer() : gl_(std::make_unique<Gl>())
+{
+    check("GlRenderer");
+}
+
+GlRenderer::~GlRenderer() = default;
+
+void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
+{
+    connectivity_.positions.clear();
+    connectivity_.face_offsets = mesh.face_offsets;
+    connectivity_.face_vertices = mesh.face_vertices;
+    data_ = data;
+    positions_.assign(3 * static_cast<size_t>(mesh.vertex_count()), 0.0f);
+    normals_.assign(positions_.size(), 0.0f);
+    face_areas_.assign(3 * static_cast<size_t>(mesh.face_count()), 0.0f);
+    upload(GL_ARRAY_BUFFER, gl_->positions, positions_);
+    upload(GL_ARRAY_BUFFER, gl_->normals, normals_);
+    upload(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_);
+    upload(GL_TEXTURE_BUFFER, gl_->triangle_face, data_.triangle_face);
+    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data_.edges);
+    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data_.boundary_edges);
+    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data_.singular_edges);
+    // The triangles' index buffer belongs to the surface's vertex array.
+    glBindVertexArray(gl_->surface_vao);
+    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->triangles, data_.triangles);
+    glBindVertexArray(0);
+    ++buffer_allocations_;
+    has_colors_ = false;
+    update_positions(mesh.positions);
+    check("set_mesh");
+}
+
+void GlRenderer::update_positions(std::span<const Scalar> positions)
+{
+    if (positions.size() != positions_.size())
+        throw RenderError("GlRenderer::update_positions: " + std::to_string(positions.size()) +
+                          " coordinates for a mesh of " + std::to_string(positions_.size()));
+    positions_to_float(positions, positions_);
+    face_area_vectors(positions, connectivity_, face_areas_);
+    vertex_normals(data_, face_areas_, normals_);
+    const auto sub = [](GLenum target, GLuint buffer, const std::vector<float>& v) {
+        glBindBuffer(target, buffer);
+        glBufferSubData(target, 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
+    };
+    sub(GL_ARRAY_BUFFER, gl_->positions, positions_);
+    sub(GL_ARRAY_BUFFER, gl_->normals, normals_);
+    sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_);
+    check("update_positions");
+}
+
+void GlRenderer::set_vertex_colors(std::span<const float> rgb)
+{
+    has_colors_ = !rgb.empty();
+    if (has_colors_ && rgb.size() != positions_.size())
+        throw RenderError("GlRenderer::set_vertex_colors: " + std::to_string(rgb.size()) +
+                          " values for " + std::to_string(positions_.size() / 3) + " vertices");
+    glBindBuffer(GL_ARRAY_BUFFER, gl_->colors);
+    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(rgb.size() * sizeof(float)),
+                 rgb.empty() ? nullptr : rgb.data(), GL_DYNAMIC_DRAW);
+    check("set_vertex_colors");
+}
+
+void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewRect& rect)
+{
+    const int width = std::max(rect.width, 1), height = std::max(rect.height, 1);
+    const double aspect = double(width) / height;
+    const glm::mat4 view = glm::mat4(camera.view_matrix());
+    const glm::mat4 projection = glm::mat4(camera.projection_matrix(aspect));
+    // GL counts rows from the bottom.
+    glViewport(rect.x, rect.framebuffer_height - rect.y - height, width, height);
+    glClearColor(o.background[0], o.background[1], o.background[2], 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glDisable(GL_SCISSOR_TEST);
+
+    // The surface, pushed back a little so that edges and points drawn on it win.
+    gl_->surface.use();
+    set_matrices(gl_->surface, view, projection);
+    glUniform1i(gl_->surface["u_flat"], o.shading == Shading::Flat);
+    glUniform1i(gl_->surface["u_back_tint"], o.back_face_tint);
+    glUniform1i(gl_->surface["u_orthographic"], camera.projection == Projection::Orthographic);
+    glUniform1i(gl_->surface["u_triangle_face"], 0);
+    glUniform1i(gl_->surface["u_face_area"], 1);
+    gl_->bind_face_textures();
+    glBindVertexArray(gl_->surface_vao);
+    if (o.vertex_colors && has_colors_)
+        glEnableVertexAttribArray(kColor);
+    else
+    {
+        glDisableVertexAttribArray(kColor);
+        glVertexAttrib3f(kColor, o.surface_color[0], o.surface_color[1], o.surface_color[2]);
+    }
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(data_.triangles.size()), GL_UNSIGNED_INT,
+                   nullptr);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+
+    glBindVertexArray(gl_->lines_vao);
+    const auto draw_edges = [&](GLuint buffer, size_t count, float width_px,
+                                const glm::vec4& color) {
+        if (count == 0)
+            return;
+        glUniform1f(gl_->lines["u_width_px"], width_px);
+        glUniform4f(gl_->lines["u_color"], color.r, color.g, color.b, color.a);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer);
+        glDrawElements(GL_LINES, static_cast<GLsizei>(count), GL_UNSIGNED_INT, nullptr);
+    };
+    gl_->lines.use();
+    set_matrices(gl_->lines, view, projection);
+    glUniform2f(gl_->lines["u_viewport_px"], float(width), float(height));
+    glUniform1f(gl_->lines["u_depth_bias"], 2e-5f);
+    if (o.wireframe)
+        draw_edges(gl_->edges, data_.edges.size(), o.edge_width_px, {0.08f, 0.08f, 0.10f, 1});
+    if (o.boundary_edges)
+    {
+        draw_edges(gl_->boundary, data_.boundary_edges.size(), 2.5f * o.edge_width_px,
+                   {1.0f, 0.55f, 0.05f, 1});
+        draw_edges(gl_->singular, data_.singular_edges.size(), 2.5f * o.edge_width_px,
+                   {0.95f, 0.10f, 0.85f, 1});
+    }
+    if (o.vertex_points)
+    {
+        gl_->points.use();
+        set_matrices(gl_->points, view, projection);
+        glUniform2f(gl_->points["u_viewport_px"], float(width), float(height));
+        glUniform1f(gl_->points["u_size_px"], o.point_size_px);
+        glUniform1f(gl_->points["u_depth_bias"], 4e-5f);
+        glUniform4f(gl_->points["u_color"], 0.10f, 0.20f, 0.55f, 1.0f);
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(data_.vertex_count));
+    }
+    glBindVertexArray(0);
+    glUseProgram(0);
+    check("draw");
+}
+
+Image GlRenderer::read_pixels(int width, int height)
+{
+    Image image{width, height, std::vector<std::uint8_t>(size_t{4} * width * height)};
+    std::vector<std::uint8_t> bottom_up(image.rgba.size());
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bottom_up.data());
+    const size_t row = size_t{4} * width;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(&bottom_up[row * (height - 1 - y)], row, &image.rgba[row * y]);
+    check("read_pixels");
+    return image;
+}
+
+PickResult GlRenderer::pick(const Camera& camera, const ViewRect& rect, int x, int y)
+{
+    PickResult result;
+    const int width = rect.width, height = rect.height;
+    if (x < 0 || y < 0 || x >= width || y >= height)
+        return result;
+    GLint previous_framebuffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    gl_->prepare_pick_target(width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, gl_->pick_framebuffer);
+    glViewport(0, 0, width, height);
+    const GLuint background[4] = {0, 0, 0, 0};
+    glClearBufferuiv(GL_COLOR, 0, background);
+    const GLfloat far = 1.0f;
+    glClearBufferfv(GL_DEPTH, 0, &far);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    const double aspect = double(width) / std::max(height, 1);
+    gl_->ids.use();
+    set_matrices(gl_->ids, glm::mat4(camera.view_matrix()),
+                 glm::mat4(camera.projection_matrix(aspect)));
+    glUniform1i(gl_->ids["u_triangle_face"], 0);
+    glUniform2f(gl_->ids["u_viewport_px"], float(width), float(height));
+    gl_->bind_face_textures();
+    glBindVertexArray(gl_->surface_vao);
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(data_.triangles.size()), GL_UNSIGNED_INT,
+                   nullptr);
+    glBindVertexArray(0);
+    glUseProgram(0);
+    GLuint ids[2] = {0, 0};
+    GLfloat depth = 1.0f;
+    const int row = height - 1 - y;
+    glReadPixels(x, row, 1, 1, GL_RG_INTEGER, GL_UNSIGNED_INT, ids);
+    glReadPixels(x, row, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, &depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_framebuffer));
+    check("pick");
+    if (ids[0] == 0)
+        return result;
+    result.hit = true;
+    result.face = static_cast<Index>(ids[0] - 1);
+    result.vertex = static_cast<Index>(ids[1] - 1);
+    result.point = camera.unproject({x + 0.5, y + 0.5, depth}, width, height);
+    return result;
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "app/render/renderer.h"
+
+namespace meshfair::app {
+
+//! \brief The Renderer on OpenGL 3.3 core, for whatever context is current (a GLFW
+//! window or an OSMesa buffer): the same shaders and draw calls in both.
+//!
+//! Buffers: positions, normals and colours (one vertex buffer each), the fan's triangles,
+//! the polygon, boundary and singular edges (index buffers), and two texture buffers read
+//! by the shaders: each triangle's face and each face's area vector. Every entry point
+//! checks glGetError and throws RenderError naming itself.
+class GlRenderer final : public Renderer
+{
+public:
+    //! \pre a context is current and gl::load_functions succeeded for it.
+    GlRenderer();
+    ~GlRenderer() override;
+
+    void set_mesh(const Mesh& mesh, const MeshDrawData& data) override;
+    void update_positions(std::span<const Scalar> positions) override;
+    void set_vertex_colors(std::span<const float> rgb) override;
+    void draw(const Camera& camera, const DisplayOptions& options, const ViewRect& view) override;
+    Image read_pixels(int width, int height) override;
+    PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) override;
+
+    //! How many times set_mesh and update_positions uploaded buffers (for tests: an update
+    //! must not reallocate).
+    int buffer_allocations() const { return buffer_allocations_; }
+
+private:
+    struct Gl; // the GL objects, defined where GL is included
+    std::unique_ptr<Gl> gl_;
+    Mesh connectivity_; // the faces of the mesh set last (positions not kept)
+    MeshDrawData data_;
+    std::vector<float> positions_, normals_, face_areas_; // staging, sized by set_mesh
+    bool has_colors_ = false;
+    int buffer_allocations_ = 0;
+};
+
+} // namespace meshfair::app

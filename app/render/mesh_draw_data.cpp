@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/mesh_draw_data.h"
+
+#include <cmath>
+
+#include "core/solver/parallel.h"
+
+namespace meshfair::app {
+
+MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology)
+{
+    MeshDrawData d;
+    d.vertex_count = static_cast<std::uint32_t>(mesh.vertex_count());
+    d.face_count = static_cast<std::uint32_t>(mesh.face_count());
+    const Index nf = mesh.face_count();
+    d.triangles.reserve(3 * static_cast<size_t>(mesh.corner_count() - 2 * nf));
+    d.triangle_face.reserve(static_cast<size_t>(mesh.corner_count() - 2 * nf));
+    for (Index f = 0; f < nf; ++f)
+    {
+        const std::span<const Index> face = mesh.face(f);
+        for (size_t k = 1; k + 1 < face.size(); ++k)
+        {
+            d.triangles.insert(d.triangles.end(), {static_cast<std::uint32_t>(face[0]),
+                                                   static_cast<std::uint32_t>(face[k]),
+                                                   static_cast<std::uint32_t>(face[k + 1])});
+            d.triangle_face.push_back(static_cast<std::uint32_t>(f));
+        }
+    }
+    for (Index e = 0; e < topology.edge_count(); ++e)
+    {
+        const Index faces = topology.edge_face_offsets[e + 1] - topology.edge_face_offsets[e];
+        const auto i = static_cast<std::uint32_t>(topology.edge_vertices[2 * e]);
+        const auto j = static_cast<std::uint32_t>(topology.edge_vertices[2 * e + 1]);
+        d.edges.insert(d.edges.end(), {i, j});
+        if (faces == 1)
+            d.boundary_edges.insert(d.boundary_edges.end(), {i, j});
+        else if (faces >= 3)
+            d.singular_edges.insert(d.singular_edges.end(), {i, j});
+    }
+    d.vertex_face_offsets = topology.vertex_corner_offsets;
+    d.vertex_faces.resize(topology.vertex_corners.size());
+    for (size_t k = 0; k < topology.vertex_corners.size(); ++k)
+        d.vertex_faces[k] = topology.corner_face[static_cast<size_t>(topology.vertex_corners[k])];
+    return d;
+}
+
+void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<float> out)
+{
+    parallel_for(mesh.face_count(), [&](Index f) {
+        const std::span<const Index> face = mesh.face(f);
+        double n[3] = {0, 0, 0};
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const double* p = &x[3 * static_cast<size_t>(face[k])];
+            const double* q = &x[3 * static_cast<size_t>(face[(k + 1) % face.size()])];
+            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+        }
+        for (int a = 0; a < 3; ++a)
+            out[3 * static_cast<size_t>(f) + a] = static_cast<float>(0.5 * n[a]);
+    });
+}
+
+void vertex_normals(const MeshDrawData& d, std::span<const float> areas, std::span<float> out)
+{
+    parallel_for(static_cast<Index>(d.vertex_count), [&](Index i) {
+        float n[3] = {0, 0, 0};
+        for (Index k = d.vertex_face_offsets[i]; k < d.vertex_face_offsets[i + 1]; ++k)
+            for (int a = 0; a < 3; ++a)
+                n[a] += areas[3 * static_cast<size_t>(d.vertex_faces[k]) + a];
+        const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const float s = len > 0 ? 1 / len : 0;
+        for (int a = 0; a < 3; ++a)
+            out[3 * static_cast<size_t>(i) + a] = n[a] * s;
+    });
+}
+
+void positions_to_float(std::span<const Scalar> x, std::span<float> out)
+{
+    parallel_ranges(static_cast<Index>(x.size()), [&](Index begin, Index end) {
+        for (Index k = begin; k < end; ++k)
+            out[k] = static_cast<float>(x[k]);
+    });
+}
+
+} // namespace meshfair::app

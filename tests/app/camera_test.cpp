@@ -1,0 +1,189 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/camera.h"
+
+#include <doctest/doctest.h>
+
+#include <cmath>
+
+#include "core/errors.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+
+namespace {
+
+Box3 unit_box()
+{
+    Box3 b;
+    b.add({-1, -0.5, -2});
+    b.add({3, 1.5, 0});
+    return b;
+}
+
+double distance(const glm::dvec3& a, const glm::dvec3& b)
+{
+    return glm::length(a - b);
+}
+
+} // namespace
+
+TEST_SUITE("Camera")
+{
+    TEST_CASE("project then unproject returns the point, in both projections")
+    {
+        for (const Projection p : {Projection::Perspective, Projection::Orthographic})
+        {
+            Camera c;
+            c.projection = p;
+            c.frame(unit_box(), 1.6);
+            c.orbit(OrbitStyle::Turntable, 100, 100, 160, 130, 800, 500);
+            for (const glm::dvec3 q : {glm::dvec3(0.3, 0.2, -1.1), glm::dvec3(2.9, 1.4, -0.1),
+                                       glm::dvec3(-0.9, -0.4, -1.9)})
+            {
+                const glm::dvec3 w = c.project(q, 800, 500);
+                CHECK(distance(c.unproject(w, 800, 500), q) < 1e-9);
+                CHECK(w.z > 0);
+                CHECK(w.z < 1);
+            }
+        }
+    }
+
+    TEST_CASE("frame puts every corner of the box inside the window, for any aspect")
+    {
+        const Box3 box = unit_box();
+        for (const Projection p : {Projection::Perspective, Projection::Orthographic})
+            for (const StandardView v : {StandardView::Front, StandardView::Right,
+                                         StandardView::Top, StandardView::Bottom})
+                for (const auto& [w, h] : {std::pair{1280, 800}, std::pair{400, 900}})
+                {
+                    Camera c;
+                    c.projection = p;
+                    c.set_view(v);
+                    c.frame(box, double(w) / h);
+                    for (int k = 0; k < 8; ++k)
+                    {
+                        const glm::dvec3 corner{k & 1 ? box.hi.x : box.lo.x,
+                                                k & 2 ? box.hi.y : box.lo.y,
+                                                k & 4 ? box.hi.z : box.lo.z};
+                        const glm::dvec3 s = c.project(corner, w, h);
+                        CHECK(s.x > 0);
+                        CHECK(s.x < w);
+                        CHECK(s.y > 0);
+                        CHECK(s.y < h);
+                        CHECK(s.z > 0); // between the near and far planes
+                        CHECK(s.z < 1);
+                    }
+                }
+    }
+
+    TEST_CASE("the standard views look along the axes, with +y up except from above")
+    {
+        Camera c;
+        c.set_view(StandardView::Front);
+        CHECK(distance(c.forward(), {0, 0, -1}) < 1e-12);
+        c.set_view(StandardView::Right);
+        CHECK(distance(c.forward(), {-1, 0, 0}) < 1e-12);
+        CHECK(distance(c.up(), {0, 1, 0}) < 1e-12);
+        c.set_view(StandardView::Top);
+        CHECK(distance(c.forward(), {0, -1, 0}) < 1e-12);
+        c.set_view(StandardView::Back);
+        CHECK(distance(c.forward(), {0, 0, 1}) < 1e-12);
+        c.set_view(StandardView::Bottom);
+        CHECK(distance(c.forward(), {0, 1, 0}) < 1e-12);
+    }
+
+    TEST_CASE("a turntable orbit keeps the world's up axis upright on screen")
+    {
+        Camera c;
+        c.frame(unit_box(), 1.5);
+        c.orbit(OrbitStyle::Turntable, 0, 0, 300, 0, 900, 600); // a horizontal drag: yaw only
+        CHECK(std::abs(glm::dot(c.right(), glm::dvec3(0, 1, 0))) < 1e-12);
+        CHECK(glm::dot(c.up(), glm::dvec3(0, 1, 0)) == doctest::Approx(1.0));
+        // Half a window height of horizontal drag turns 90 degrees.
+        CHECK(distance(c.forward(), {1, 0, 0}) < 1e-9);
+    }
+
+    TEST_CASE("a trackball drag across the centre turns the scene with the mouse")
+    {
+        Camera c;
+        c.frame(unit_box(), 1.0);
+        const glm::dvec3 point = c.target + glm::dvec3(0, 0, 1); // in front of the target
+        const double before = c.project(point, 600, 600).x;
+        c.orbit(OrbitStyle::Trackball, 300, 300, 340, 300, 600, 600);
+        CHECK(c.project(point, 600, 600).x > before); // moved right, like the mouse
+        CHECK(glm::length(c.rotation) == doctest::Approx(1.0));
+    }
+
+    TEST_CASE("zoom keeps the point under the cursor where it is on screen")
+    {
+        for (const Projection p : {Projection::Perspective, Projection::Orthographic})
+        {
+            Camera c;
+            c.projection = p;
+            c.frame(unit_box(), 1.6);
+            const glm::dvec3 window{620, 140, 0};
+            // The point under the cursor at the target's depth.
+            const double depth = c.project(c.target, 800, 500).z;
+            const glm::dvec3 under = c.unproject({window.x, window.y, depth}, 800, 500);
+            const double before = c.distance;
+            c.zoom(0.5, window.x, window.y, 800, 500);
+            CHECK(c.distance == doctest::Approx(0.5 * before));
+            const glm::dvec3 after = c.project(under, 800, 500);
+            CHECK(after.x == doctest::Approx(window.x).epsilon(1e-9));
+            CHECK(after.y == doctest::Approx(window.y).epsilon(1e-9));
+        }
+    }
+
+    TEST_CASE("a pan moves the scene with the mouse by as many pixels")
+    {
+        Camera c;
+        c.frame(unit_box(), 1.6);
+        const glm::dvec3 before = c.project(c.target, 800, 500);
+        const glm::dvec3 target = c.target;
+        c.pan(25, -10, 800, 500);
+        const glm::dvec3 after = c.project(target, 800, 500);
+        CHECK(after.x - before.x == doctest::Approx(25).epsilon(1e-9));
+        CHECK(after.y - before.y == doctest::Approx(-10).epsilon(1e-9));
+    }
+
+    TEST_CASE("a view saved as JSON loads back the same camera")
+    {
+        Camera c;
+        c.projection = Projection::Orthographic;
+        c.frame(unit_box(), 1.3);
+        c.orbit(OrbitStyle::Trackball, 10, 20, 200, 90, 640, 480);
+        const Camera d = camera_from_json(to_json(c), "v.json");
+        CHECK(distance(d.target, c.target) == 0);
+        CHECK(d.distance == c.distance);
+        CHECK(d.projection == c.projection);
+        CHECK(std::abs(glm::dot(d.rotation, c.rotation)) == doctest::Approx(1.0).epsilon(1e-15));
+        CHECK(distance(d.project({1, 1, -1}, 640, 480), c.project({1, 1, -1}, 640, 480)) < 1e-9);
+    }
+
+    TEST_CASE("a bad view file is refused with the file and the field named")
+    {
+        const auto error = [](const std::string& text) {
+            try
+            {
+                camera_from_json(text, "v.json");
+            }
+            catch (const InvalidInputError& e)
+            {
+                return std::string(e.what());
+            }
+            return std::string("accepted");
+        };
+        CHECK(error("{\"distance\": -1}") == "'v.json': view field 'distance' must be positive");
+        CHECK(error("{\"target\": [1, 2]}") ==
+              "'v.json': view field 'target' must be an array of 3 numbers");
+        CHECK(error("{\"rotation\": [0, 0, 0, 0]}") ==
+              "'v.json': view field 'rotation' must be a non-zero quaternion (w x y z)");
+        CHECK(error("{\"projection\": \"fisheye\"}") ==
+              "'v.json': view field 'projection' must be \"perspective\" or \"orthographic\"");
+        CHECK(error("{\"zoom\": 2}") == "'v.json': view field 'zoom' is unknown");
+        CHECK(error("[1]") == "'v.json': a view must be a JSON object");
+        CHECK(error("{\"distance\": 1,").find("'v.json': not JSON:") == 0);
+        CHECK(error("{\"distance\": 1,").find("line 1") != std::string::npos);
+    }
+}

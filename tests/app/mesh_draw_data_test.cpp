@@ -1,0 +1,159 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/render/mesh_draw_data.h"
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <utility>
+
+#include "core/solver/parallel.h"
+#include "core/topology/topology.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+
+namespace {
+
+MeshDrawData draw_data(const Mesh& m)
+{
+    return mesh_draw_data(m, build_topology(m, TopologyParts::Edges | TopologyParts::Corners));
+}
+
+std::set<std::pair<std::uint32_t, std::uint32_t>> edge_set(const std::vector<std::uint32_t>& e)
+{
+    std::set<std::pair<std::uint32_t, std::uint32_t>> s;
+    for (size_t k = 0; k < e.size(); k += 2)
+        s.insert(std::minmax(e[k], e[k + 1]));
+    return s;
+}
+
+} // namespace
+
+TEST_SUITE("MeshDrawData")
+{
+    TEST_CASE("a polygon of n corners is a fan of n - 2 triangles of that face")
+    {
+        const Mesh m = test::mixed_polygons();
+        const MeshDrawData d = draw_data(m);
+        size_t expected = 0;
+        for (Index f = 0; f < m.face_count(); ++f)
+            expected += static_cast<size_t>(m.face_size(f) - 2);
+        REQUIRE(d.triangle_face.size() == expected);
+        REQUIRE(d.triangles.size() == 3 * expected);
+        for (size_t t = 0; t < d.triangle_face.size(); ++t)
+        {
+            const std::span<const Index> face = m.face(static_cast<Index>(d.triangle_face[t]));
+            CHECK(d.triangles[3 * t] == static_cast<std::uint32_t>(face[0])); // the fan's apex
+            for (int k = 0; k < 3; ++k)
+                CHECK(std::find(face.begin(), face.end(), d.triangles[3 * t + k]) != face.end());
+        }
+    }
+
+    TEST_CASE("the wireframe is the polygon edges, never a fan diagonal")
+    {
+        const Mesh cube = test::quad_cube();
+        const MeshDrawData d = draw_data(cube);
+        CHECK(d.triangles.size() == 3 * 12);
+        const auto edges = edge_set(d.edges);
+        CHECK(edges.size() == 12);
+        CHECK(d.edges.size() == 24);
+        for (Index f = 0; f < cube.face_count(); ++f)
+        {
+            const std::span<const Index> q = cube.face(f);
+            CHECK(edges.count(std::minmax<std::uint32_t>(q[0], q[2])) == 0); // diagonals
+            CHECK(edges.count(std::minmax<std::uint32_t>(q[1], q[3])) == 0);
+            for (int k = 0; k < 4; ++k)
+                CHECK(edges.count(std::minmax<std::uint32_t>(q[k], q[(k + 1) % 4])) == 1);
+        }
+        CHECK(d.boundary_edges.empty());
+        CHECK(d.singular_edges.empty());
+    }
+
+    TEST_CASE("an open grid's boundary edges are its perimeter; a fan's shared edge is singular")
+    {
+        const MeshDrawData grid = draw_data(test::open_grid(5, 3));
+        CHECK(grid.boundary_edges.size() == 2 * (2 * 5 + 2 * 3));
+        for (const std::uint32_t v : grid.boundary_edges)
+        {
+            const std::uint32_t i = v % 6, j = v / 6;
+            CHECK((i == 0 || i == 5 || j == 0 || j == 3));
+        }
+        const MeshDrawData fan = draw_data(test::nonmanifold_fan());
+        REQUIRE(fan.singular_edges.size() == 2);
+        CHECK(std::min(fan.singular_edges[0], fan.singular_edges[1]) == 0);
+        CHECK(std::max(fan.singular_edges[0], fan.singular_edges[1]) == 1);
+        CHECK(fan.boundary_edges.size() == 2 * 6);
+    }
+
+    TEST_CASE("area vectors are the polygons' areas; vertex normals are unit and outward")
+    {
+        Mesh grid = test::open_grid(4, 4);
+        const MeshDrawData d = draw_data(grid);
+        std::vector<float> areas(3 * static_cast<size_t>(grid.face_count()));
+        face_area_vectors(grid.positions, grid, areas);
+        for (Index f = 0; f < grid.face_count(); ++f)
+        {
+            CHECK(areas[3 * f] == 0.0f);
+            CHECK(areas[3 * f + 1] == 0.0f);
+            CHECK(areas[3 * f + 2] == 1.0f); // unit squares, counter-clockwise from +z
+        }
+        std::vector<float> normals(grid.positions.size());
+        vertex_normals(d, areas, normals);
+        for (size_t i = 0; i < normals.size(); i += 3)
+            CHECK(normals[i + 2] == 1.0f);
+
+        const Mesh sphere = test::icosphere(2);
+        const MeshDrawData ds = draw_data(sphere);
+        std::vector<float> a(3 * static_cast<size_t>(sphere.face_count()));
+        std::vector<float> n(sphere.positions.size());
+        face_area_vectors(sphere.positions, sphere, a);
+        vertex_normals(ds, a, n);
+        for (size_t i = 0; i < n.size(); i += 3)
+        {
+            const double len = std::sqrt(double(n[i]) * n[i] + double(n[i + 1]) * n[i + 1] +
+                                         double(n[i + 2]) * n[i + 2]);
+            CHECK(len == doctest::Approx(1.0).epsilon(1e-6));
+            const double outward = n[i] * sphere.positions[i] + n[i + 1] * sphere.positions[i + 1] +
+                                   n[i + 2] * sphere.positions[i + 2];
+            CHECK(outward > 0.99);
+        }
+    }
+
+    TEST_CASE("normals are the same bits for any thread count")
+    {
+        Mesh sphere = test::icosphere(5); // above the parallel threshold
+        test::perturb(sphere, 0.01, 7);
+        const MeshDrawData d = draw_data(sphere);
+        std::vector<std::vector<float>> results;
+        for (const int threads : {1, 2, 3})
+        {
+            set_thread_count(threads);
+            std::vector<float> a(3 * static_cast<size_t>(sphere.face_count()));
+            std::vector<float> n(sphere.positions.size());
+            face_area_vectors(sphere.positions, sphere, a);
+            vertex_normals(d, a, n);
+            results.push_back(n);
+        }
+        set_thread_count(0);
+        CHECK(results[0] == results[1]);
+        CHECK(results[0] == results[2]);
+    }
+
+    TEST_CASE("a vertex in no face gets a zero normal")
+    {
+        const Mesh m = test::with_isolated_vertex();
+        const MeshDrawData d = draw_data(m);
+        std::vector<float> a(3 * static_cast<size_t>(m.face_count()));
+        std::vector<float> n(m.positions.size());
+        face_area_vectors(m.positions, m, a);
+        vertex_normals(d, a, n);
+        const size_t last = n.size() - 3;
+        CHECK(n[last] == 0.0f);
+        CHECK(n[last + 1] == 0.0f);
+        CHECK(n[last + 2] == 0.0f);
+    }
+}

@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+// GlRenderer through OSMesa: picking through the ID buffer at known pixels, position
+// updates that reallocate nothing, and refusals.
+#include "app/render/gl_renderer.h"
+
+#include <doctest/doctest.h>
+
+#include "app/render/render_error.h"
+#include "tests/helpers.h"
+#include "tests/render/render_support.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+
+namespace {
+
+constexpr int kWidth = 400, kHeight = 200;
+
+// Two unit quads side by side in z = 0, (0, 0) to (2, 1), seen from the front.
+struct TwoQuads
+{
+    Document document = make_document(test::open_grid(2, 1), "two_quads.obj");
+    Camera camera;
+    TwoQuads(Projection projection)
+    {
+        camera.projection = projection;
+        camera.frame(document.box, double(kWidth) / kHeight);
+    }
+};
+
+} // namespace
+
+TEST_SUITE("GlRenderer")
+{
+    TEST_CASE("pick returns the face, the nearest corner and the surface point at a pixel")
+    {
+        for (const Projection projection : {Projection::Orthographic, Projection::Perspective})
+        {
+            test::offscreen_context(kWidth, kHeight);
+            TwoQuads s(projection);
+            GlRenderer r;
+            r.set_mesh(s.document.mesh, s.document.draw_data);
+            const auto pixel_of = [&](glm::dvec3 p) {
+                const glm::dvec3 w = s.camera.project(p, kWidth, kHeight);
+                return std::pair{int(w.x), int(w.y)};
+            };
+            // Inside the left quad, near its corner (0, 1): vertex 3 of the 3 x 2 grid.
+            auto [x, y] = pixel_of({0.1, 0.85, 0});
+            PickResult p = r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y);
+            REQUIRE(p.hit);
+            CHECK(p.face == 0);
+            CHECK(p.vertex == 3);
+            CHECK(p.point.x == doctest::Approx(0.1).epsilon(0.02));
+            CHECK(p.point.y == doctest::Approx(0.85).epsilon(0.02));
+            CHECK(std::abs(p.point.z) < 1e-3);
+            // Inside the right quad, near (2, 0): vertex 2.
+            std::tie(x, y) = pixel_of({1.9, 0.1, 0});
+            p = r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y);
+            REQUIRE(p.hit);
+            CHECK(p.face == 1);
+            CHECK(p.vertex == 2);
+            // The window's corner is background.
+            CHECK_FALSE(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), 0, 0).hit);
+            CHECK_FALSE(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), -1, 5)
+                            .hit); // outside the window
+        }
+    }
+
+    TEST_CASE("updating positions re-uploads without reallocating, and the picture follows")
+    {
+        test::offscreen_context(kWidth, kHeight);
+        TwoQuads s(Projection::Orthographic);
+        GlRenderer r;
+        r.set_mesh(s.document.mesh, s.document.draw_data);
+        CHECK(r.buffer_allocations() == 1);
+        const DisplayOptions o;
+        r.draw(s.camera, o, ViewRect::whole(kWidth, kHeight));
+        const Image before = r.read_pixels(kWidth, kHeight);
+        // Move the mesh half a unit down: the top row of pixels it covered is background.
+        std::vector<Scalar> moved = s.document.mesh.positions;
+        for (size_t i = 1; i < moved.size(); i += 3)
+            moved[i] -= 0.5;
+        r.update_positions(moved);
+        r.draw(s.camera, o, ViewRect::whole(kWidth, kHeight));
+        const Image after = r.read_pixels(kWidth, kHeight);
+        CHECK(r.buffer_allocations() == 1);
+        const ImageDifference d = compare_images(before, after, 8);
+        CHECK(d.fraction_over_tolerance > 0.05);
+        const auto [x, y] =
+            std::pair{kWidth / 2, int(s.camera.project({1, 0.9, 0}, kWidth, kHeight).y)};
+        CHECK(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y).hit == false);
+    }
+
+    TEST_CASE("positions or colours of the wrong size are refused")
+    {
+        test::offscreen_context(kWidth, kHeight);
+        TwoQuads s(Projection::Orthographic);
+        GlRenderer r;
+        r.set_mesh(s.document.mesh, s.document.draw_data);
+        const std::vector<Scalar> short_positions(5, 0.0);
+        CHECK_THROWS_AS(r.update_positions(short_positions), RenderError);
+        const std::vector<float> colors(7, 0.5f);
+        CHECK_THROWS_AS(r.set_vertex_colors(colors), RenderError);
+    }
+}

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+// Offscreen frames for the render tests (OSMesa, llvmpipe) and their comparison with
+// the golden images of tests/golden/.
+
+#include <string>
+
+#include "app/editor/document.h"
+#include "app/render/gl_renderer.h"
+#include "app/render/image.h"
+
+namespace meshfair::test {
+
+//! A pixel differs from the golden one when a channel differs by more than this...
+inline constexpr int kGoldenChannelTolerance = 8;
+//! ...and an image fails when more than this fraction of its pixels differ.
+inline constexpr double kGoldenPixelFraction = 0.005;
+
+//! The process's offscreen context, made current at `width` x `height`.
+void offscreen_context(int width, int height);
+
+//! One frame of `document` (UI panels over it when `ui`).
+app::Image render_frame(const app::Document& document, const app::Camera& camera,
+                        const app::DisplayOptions& display, int width, int height, bool ui = false);
+
+//! \brief Compares `image` with tests/golden/NAME.png (see the tolerances above). On a
+//! failure writes NAME-actual.png and NAME-diff.png into the build's render-failures/
+//! folder and says so. With MESHFAIR_UPDATE_GOLDEN=1 in the environment it writes the
+//! golden instead (tests/golden/regenerate.sh).
+void check_golden(const std::string& name, const app::Image& image);
+
+} // namespace meshfair::test
