@@ -52,7 +52,7 @@ fi
 build=build
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DMESHFAIR_WERROR=ON >/dev/null
 if [ "$mode" = run ]; then
-    cmake --build "$build" -j"$(nproc)" --target meshfair-cli
+    cmake --build "$build" -j"$(nproc)" --target meshfair-cli meshfair
 else
     cmake --build "$build" -j"$(nproc)"
 fi
@@ -70,6 +70,11 @@ if [ "$mode" = run ]; then
     echo
     echo "report ($out/report.json):"
     cat "$out/report.json"
+    echo
+    # The editor on the bunny; where there is no display it says so and renders the
+    # offscreen screenshot instead.
+    "$build/app/meshfair" assets/bunny.obj --screenshot "$out/bunny.png"
+    [ -f "$out/bunny.png" ] && echo "screenshot: $out/bunny.png"
     exit 0
 fi
 

@@ -3,11 +3,14 @@
 #include "app/editor/editor_ui.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 
 #include <imgui.h>
 
 #include "app/editor/imgui_layer.h"
+#include "core/io/io.h"
 
 namespace meshfair::app {
 
@@ -247,10 +250,54 @@ std::span<const KeyBinding> key_bindings()
 
 void remember_recent(std::vector<std::string>& recent, const std::string& path)
 {
-    recent.erase(std::remove(recent.begin(), recent.end(), path), recent.end());
-    recent.insert(recent.begin(), path);
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    const std::string p = ec ? path : absolute.lexically_normal().string();
+    recent.erase(std::remove(recent.begin(), recent.end(), p), recent.end());
+    recent.insert(recent.begin(), p);
     if (recent.size() > 10)
         recent.resize(10);
+}
+
+std::string recent_files_path()
+{
+    const char* config = std::getenv("XDG_CONFIG_HOME");
+    if (config != nullptr && config[0] == '/')
+        return std::string(config) + "/meshfair/recent.txt";
+    const char* home = std::getenv("HOME");
+    if (home != nullptr && home[0] == '/')
+        return std::string(home) + "/.config/meshfair/recent.txt";
+    return {};
+}
+
+std::vector<std::string> load_recent(const std::string& file)
+{
+    std::vector<std::string> recent;
+    std::ifstream in(file);
+    for (std::string line; recent.size() < 10 && std::getline(in, line);)
+        if (!line.empty() && line[0] == '/')
+            recent.push_back(line);
+    return recent;
+}
+
+bool save_recent(const std::string& file, const std::vector<std::string>& recent)
+{
+    if (file.empty())
+        return false;
+    std::string text;
+    for (const std::string& p : recent)
+        if (p.find('\n') == std::string::npos)
+            text += p + "\n";
+    try
+    {
+        std::filesystem::create_directories(std::filesystem::path(file).parent_path());
+        io::write_file_atomically(file, text);
+        return true;
+    }
+    catch (const std::exception&)
+    {
+        return false;
+    }
 }
 
 void EditorUi::open_file_dialog(const Document& document)

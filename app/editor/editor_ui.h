@@ -79,7 +79,17 @@ private:
     bool quit_prompt_ = false;
 };
 
-//! Adds `path` in front of the recent files (once, at most 10 kept).
+//! Adds `path` (made absolute) in front of the recent files (once, at most 10 kept).
 void remember_recent(std::vector<std::string>& recent, const std::string& path);
+
+//! \brief Where the recent files are kept between runs:
+//! $XDG_CONFIG_HOME/meshfair/recent.txt, else ~/.config/meshfair/recent.txt; empty when
+//! neither variable is set.
+std::string recent_files_path();
+//! The recent files listed in `file`, one per line (none when it cannot be read).
+std::vector<std::string> load_recent(const std::string& file);
+//! \brief Writes the list atomically, creating the folder; false (and nothing changed)
+//! when it cannot: the recent list is a convenience, never a reason to fail.
+bool save_recent(const std::string& file, const std::vector<std::string>& recent);
 
 } // namespace meshfair::app

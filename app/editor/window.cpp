@@ -79,6 +79,7 @@ struct Editor
             document = std::move(next);
             camera.frame(document.box, aspect());
             remember_recent(state.recent, path);
+            save_recent(recent_files_path(), state.recent);
             state.message = "opened " + path;
         }
         catch (const InvalidInputError& e)
@@ -95,6 +96,7 @@ struct Editor
             document.path = path;
             document.modified = false;
             remember_recent(state.recent, path);
+            save_recent(recent_files_path(), state.recent);
             state.message = "saved " + path;
         }
         catch (const std::exception& e)
@@ -291,7 +293,9 @@ void run_window(const WindowOptions& options)
         editor->camera = camera_from_json(io::read_file(options.view_path), options.view_path);
     editor->state.display = options.display;
     editor->screenshot_path = options.screenshot_path;
+    editor->state.recent = load_recent(recent_files_path());
     remember_recent(editor->state.recent, options.mesh_path);
+    save_recent(recent_files_path(), editor->state.recent);
 
     glfwSetErrorCallback(remember_glfw_error);
     if (!glfwInit())

@@ -14,6 +14,8 @@ meshfair=$1 cli=$2 bunny=$3 work=$4
 rm -rf "$work"
 mkdir -p "$work"
 export GALLIUM_DRIVER=llvmpipe
+# The recent-files list goes into the work folder, not the user's configuration.
+export XDG_CONFIG_HOME="$work/config"
 # Under AddressSanitizer: the GLX driver is unloaded before leaks are reported, so its
 # allocations cannot be told apart (the OSMesa tests keep leak detection).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
@@ -79,7 +81,7 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
     "$meshfair" "$mesh" --size 800x600 >"$log" 2>&1 &
     pid=$!
     for _ in $(seq 1 300); do
-        grep -q "window open" "$log" && break
+        grep -qs "window open" "$log" && break
         kill -0 "$pid" 2>/dev/null || break
         sleep 0.1
     done
@@ -116,6 +118,10 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
     if [ "$rc" != 0 ]; then
         echo "FAIL $name: exit code $rc"
         cat "$log"
+        exit 1
+    fi
+    if ! grep -qx "$(cd "$(dirname "$mesh")" && pwd)/$name" "$XDG_CONFIG_HOME/meshfair/recent.txt"; then
+        echo "FAIL $name: not in the recent files"
         exit 1
     fi
     echo "ok $name: $(head -1 "$log"), screenshot deviation $deviation, exit 0"

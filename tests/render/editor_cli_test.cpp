@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// The meshfair executable as a script or a newcomer runs it: offscreen frames, the
+// fallback without a display, saved views, exit codes and messages, files kept whole.
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "app/render/image.h"
+#include "core/io/io.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Run
+{
+    int code = -1;
+    std::string out, err;
+};
+
+std::string quote(const std::string& s)
+{
+    std::string q = "'";
+    for (const char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+// Runs meshfair with `args` (already quoted), without a display unless `env` says more.
+Run editor(const std::string& args, const std::string& env = "env -u DISPLAY")
+{
+    static int counter = 0;
+    const fs::path dir = test::temp_dir();
+    const fs::path out = dir / ("out" + std::to_string(counter)),
+                   err = dir / ("err" + std::to_string(counter++));
+    const std::string command = env + " GALLIUM_DRIVER=llvmpipe " + quote(MESHFAIR_EDITOR) + " " +
+                                args + " >" + quote(out.string()) + " 2>" + quote(err.string());
+    const int status = std::system(command.c_str());
+    Run r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = io::read_file(out.string());
+    r.err = io::read_file(err.string());
+    return r;
+}
+
+std::string bunny()
+{
+    return quote((test::assets_dir() / "bunny.obj").string());
+}
+
+} // namespace
+
+TEST_SUITE("meshfair")
+{
+    TEST_CASE("an offscreen frame is written, the same bytes every time")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
+        const std::string common = "--offscreen " + bunny() + " --size 320x200 --mode flat,wire";
+        REQUIRE(editor(common + " --screenshot " + quote(a)).code == 0);
+        REQUIRE(editor(common + " --screenshot " + quote(b)).code == 0);
+        CHECK(io::read_file(a) == io::read_file(b));
+        const app::Image image = app::read_png(a);
+        CHECK(image.width == 320);
+        CHECK(image.height == 200);
+    }
+
+    TEST_CASE("a saved view gives the same frame when loaded")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string view = (dir / "view.json").string();
+        const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
+        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " + quote(a) +
+                       " --save-view " + quote(view))
+                    .code == 0);
+        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " + quote(b) +
+                       " --view " + quote(view))
+                    .code == 0);
+        CHECK(io::read_file(a) == io::read_file(b));
+    }
+
+    TEST_CASE("without a display the editor says so and renders the screenshot instead")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string shot = (dir / "shot.png").string();
+        const Run r = editor(bunny() + " --size 200x160 --screenshot " + quote(shot));
+        CHECK(r.code == 0);
+        CHECK(r.err.find("meshfair: no display") == 0);
+        CHECK(r.err.find("rendering offscreen to " + shot + " instead") != std::string::npos);
+        CHECK(app::read_png(shot).width == 200);
+    }
+
+    TEST_CASE("bad input is refused with exit code 2, naming the file and the place")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string shot = (dir / "shot.png").string();
+        const fs::path bad_mesh = dir / "bad.obj";
+        test::write_bytes(bad_mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
+        test::write_bytes(shot, "the previous screenshot");
+        Run r = editor("--offscreen " + quote(bad_mesh.string()) + " --screenshot " + quote(shot));
+        CHECK(r.code == 2);
+        CHECK(r.err == "meshfair: " + bad_mesh.string() +
+                           ":4:7: vertex index 9 is past the last vertex (the file defines 3)\n");
+        CHECK(io::read_file(shot) == "the previous screenshot"); // nothing half-written
+
+        const fs::path bad_view = dir / "view.json";
+        test::write_bytes(bad_view, "{\"distance\": 0}");
+        r = editor("--offscreen " + bunny() + " --view " + quote(bad_view.string()) +
+                   " --screenshot " + quote(shot));
+        CHECK(r.code == 2);
+        CHECK(r.err ==
+              "meshfair: '" + bad_view.string() + "': view field 'distance' must be positive\n");
+
+        r = editor("--offscreen " + bunny() + " --mode sketchy --screenshot " + quote(shot));
+        CHECK(r.code == 2);
+        CHECK(r.err.find("unknown mode 'sketchy'") != std::string::npos);
+        r = editor("--offscreen " + bunny() + " --size 12x4000 --screenshot " + quote(shot));
+        CHECK(r.code == 2);
+        CHECK(r.err.find("'12x4000' is not WxH") != std::string::npos);
+        r = editor("--offscreen " + bunny());
+        CHECK(r.code == 2);
+        CHECK(r.err == "meshfair: --offscreen needs --screenshot OUT.png\n");
+        r = editor("--offscreen " + quote((dir / "missing.obj").string()) + " --screenshot " +
+                   quote(shot));
+        CHECK(r.code == 2);
+        CHECK(r.err.find("missing.obj': cannot open") != std::string::npos);
+        CHECK(io::read_file(shot) == "the previous screenshot");
+    }
+
+    TEST_CASE("a screenshot that cannot be written exits with code 3")
+    {
+        const fs::path dir = test::temp_dir();
+        const Run r = editor("--offscreen " + bunny() + " --size 64x64 --screenshot " +
+                             quote((dir / "no" / "such" / "dir.png").string()));
+        CHECK(r.code == 3);
+        CHECK(r.err.find("dir.png': cannot create a temporary file beside it") != std::string::npos);
+    }
+}
