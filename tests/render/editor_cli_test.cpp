@@ -140,6 +140,7 @@ TEST_SUITE("meshfair")
         const Run r = editor("--offscreen " + bunny() + " --size 64x64 --screenshot " +
                              quote((dir / "no" / "such" / "dir.png").string()));
         CHECK(r.code == 3);
-        CHECK(r.err.find("dir.png': cannot create a temporary file beside it") != std::string::npos);
+        CHECK(r.err.find("dir.png': cannot create a temporary file beside it") !=
+              std::string::npos);
     }
 }
