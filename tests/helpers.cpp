@@ -2,6 +2,10 @@
 // Copyright 2026 the MeshFair authors.
 #include "tests/helpers.h"
 
+#include <sys/wait.h>
+
+#include <cstdlib>
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -247,6 +251,30 @@ Mesh mixed_polygons()
 void perturb(Mesh& mesh, double sigma, unsigned seed)
 {
     add_gaussian_noise(mesh, sigma, seed);
+}
+
+std::string shell_quote(const std::string& s)
+{
+    std::string q = "'";
+    for (const char c : s)
+        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+CommandRun run_command(const std::string& command_line)
+{
+    static int counter = 0;
+    const std::filesystem::path dir = temp_dir();
+    const std::filesystem::path out = dir / ("out" + std::to_string(counter)),
+                                err = dir / ("err" + std::to_string(counter++));
+    const std::string command =
+        command_line + " >" + shell_quote(out.string()) + " 2>" + shell_quote(err.string());
+    const int status = std::system(command.c_str());
+    CommandRun r;
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.out = io::read_file(out.string());
+    r.err = io::read_file(err.string());
+    return r;
 }
 
 } // namespace meshfair::test

@@ -20,6 +20,18 @@ std::filesystem::path adversarial_dir();
 //! A fresh, empty directory for the calling test case, removed at exit.
 std::filesystem::path temp_dir();
 
+//! What a command printed and how it ended.
+struct CommandRun
+{
+    int code = -1; //!< exit code, -1 when killed by a signal
+    std::string out, err;
+};
+//! \brief Runs a shell command line with stdout and stderr captured (in the test's temp
+//! dir).
+CommandRun run_command(const std::string& command_line);
+//! `s` quoted for the shell.
+std::string shell_quote(const std::string& s);
+
 //! Writes `content` to `path` byte for byte.
 void write_bytes(const std::filesystem::path& path, const std::string& content);
 

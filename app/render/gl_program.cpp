@@ -10,6 +10,17 @@ namespace meshfair::gl {
 
 namespace {
 
+// A shader's or a program's info log (the compiler's or the linker's messages).
+template <class GetParameter, class GetLog>
+std::string info_log(GLuint object, GetParameter get_parameter, GetLog get_log)
+{
+    GLint size = 0;
+    get_parameter(object, GL_INFO_LOG_LENGTH, &size);
+    std::vector<char> log(static_cast<size_t>(size) + 1, '\0');
+    get_log(object, size, nullptr, log.data());
+    return log.data();
+}
+
 GLuint compile(const std::string& file, GLenum stage)
 {
     const std::string_view source = shader_source(file);
@@ -24,12 +35,9 @@ GLuint compile(const std::string& file, GLenum stage)
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
     if (ok != GL_TRUE)
     {
-        GLint size = 0;
-        glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &size);
-        std::vector<char> log(static_cast<size_t>(size) + 1, '\0');
-        glGetShaderInfoLog(shader, size, nullptr, log.data());
+        const std::string log = info_log(shader, glGetShaderiv, glGetShaderInfoLog);
         glDeleteShader(shader);
-        throw app::RenderError("shaders/" + file + " does not compile: " + log.data());
+        throw app::RenderError("shaders/" + file + " does not compile: " + log);
     }
     return shader;
 }
@@ -57,12 +65,9 @@ Program::Program(std::string_view name, bool with_geometry,
     glGetProgramiv(id_, GL_LINK_STATUS, &ok);
     if (ok != GL_TRUE)
     {
-        GLint size = 0;
-        glGetProgramiv(id_, GL_INFO_LOG_LENGTH, &size);
-        std::vector<char> log(static_cast<size_t>(size) + 1, '\0');
-        glGetProgramInfoLog(id_, size, nullptr, log.data());
+        const std::string log = info_log(id_, glGetProgramiv, glGetProgramInfoLog);
         glDeleteProgram(id_);
-        throw app::RenderError("shader program '" + name_ + "' does not link: " + log.data());
+        throw app::RenderError("shader program '" + name_ + "' does not link: " + log);
     }
     for (const char* u : uniforms)
     {

@@ -21,39 +21,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run
-{
-    int code = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& s)
-{
-    std::string q = "'";
-    for (const char c : s)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using Run = test::CommandRun;
 
 Run cli(const std::string& args)
 {
-    static int counter = 0;
-    const fs::path dir = test::temp_dir();
-    const fs::path out = dir / ("out" + std::to_string(counter)),
-                   err = dir / ("err" + std::to_string(counter++));
-    const std::string command =
-        quote(MESHFAIR_CLI) + " " + args + " >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    Run r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = io::read_file(out.string());
-    r.err = io::read_file(err.string());
-    return r;
+    return test::run_command(test::shell_quote(MESHFAIR_CLI) + " " + args);
 }
 
 std::string bunny()
 {
-    return quote((test::assets_dir() / "bunny.obj").string());
+    return test::shell_quote((test::assets_dir() / "bunny.obj").string());
 }
 
 } // namespace
@@ -94,7 +71,8 @@ TEST_SUITE("Cli")
         for (const char* ext : {"obj", "off", "ply"})
         {
             const std::string out = (dir / (std::string("same.") + ext)).string();
-            const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --iterations 0 -q");
+            const Run r =
+                cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --iterations 0 -q");
             REQUIRE(r.code == 0);
             CHECK(io::read_mesh(out) == input);
         }
@@ -108,8 +86,8 @@ TEST_SUITE("Cli")
             "centroid": {"faces": "all"}, "normal": {"faces": "all", "normals": "smoothed"},
             "normal_smoothing": {"iterations": 3}})");
         const std::string out = (dir / "s.ply").string(), report = (dir / "report.json").string();
-        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " + quote(recipe) +
-                          " --report " + quote(report));
+        const Run r = cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --recipe " +
+                          test::shell_quote(recipe) + " --report " + test::shell_quote(report));
         REQUIRE(r.code == 0);
         const auto j = nlohmann::json::parse(io::read_file(report));
         CHECK(j["vertices"] == 34835);
@@ -137,8 +115,9 @@ TEST_SUITE("Cli")
         const std::string recipe = (dir / "r.json").string();
         test::write_bytes(recipe, R"({"iterations": 50, "lambda": 0.5})");
         const Run r =
-            cli("smooth " + bunny() + " -o " + quote((dir / "o.obj").string()) + " --recipe " +
-                quote(recipe) + " --iterations 2 --lambda optimal --report -");
+            cli("smooth " + bunny() + " -o " + test::shell_quote((dir / "o.obj").string()) +
+                " --recipe " + test::shell_quote(recipe) +
+                " --iterations 2 --lambda optimal --report -");
         REQUIRE(r.code == 0);
         const auto j = nlohmann::json::parse(r.out);
         CHECK(j["iterations"] == 2);
@@ -150,9 +129,12 @@ TEST_SUITE("Cli")
         const fs::path dir = test::temp_dir();
         const std::string a = (dir / "a.obj").string(), b = (dir / "b.obj").string(),
                           c = (dir / "c.obj").string();
-        CHECK(cli("noise " + bunny() + " -o " + quote(a) + " --sigma 0.5 --seed 4").code == 0);
-        CHECK(cli("noise " + bunny() + " -o " + quote(b) + " --sigma 0.5 --seed 4").code == 0);
-        CHECK(cli("noise " + bunny() + " -o " + quote(c) + " --sigma 0.5 --seed 5").code == 0);
+        CHECK(cli("noise " + bunny() + " -o " + test::shell_quote(a) + " --sigma 0.5 --seed 4")
+                  .code == 0);
+        CHECK(cli("noise " + bunny() + " -o " + test::shell_quote(b) + " --sigma 0.5 --seed 4")
+                  .code == 0);
+        CHECK(cli("noise " + bunny() + " -o " + test::shell_quote(c) + " --sigma 0.5 --seed 5")
+                  .code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
         CHECK(io::read_file(a) != io::read_file(c));
     }
@@ -162,17 +144,18 @@ TEST_SUITE("Cli")
         const fs::path dir = test::temp_dir();
         const std::string bad = (dir / "bad.obj").string(), out = (dir / "out.obj").string();
         test::write_bytes(bad, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n");
-        const Run r = cli("smooth " + quote(bad) + " -o " + quote(out));
+        const Run r = cli("smooth " + test::shell_quote(bad) + " -o " + test::shell_quote(out));
         CHECK(r.code == 2);
         CHECK(r.err.find(bad + ":4:7: vertex index 4 is past the last vertex") !=
               std::string::npos);
         CHECK_FALSE(fs::exists(out));
 
-        const Run missing = cli("info " + quote((dir / "none.obj").string()));
+        const Run missing = cli("info " + test::shell_quote((dir / "none.obj").string()));
         CHECK(missing.code == 2);
         CHECK(missing.err.find("cannot open") != std::string::npos);
 
-        const Run format = cli("smooth " + bunny() + " -o " + quote((dir / "o.xyz").string()));
+        const Run format =
+            cli("smooth " + bunny() + " -o " + test::shell_quote((dir / "o.xyz").string()));
         CHECK(format.code == 2);
         CHECK(format.err.find("unknown mesh format '.xyz'") != std::string::npos);
     }
@@ -182,12 +165,14 @@ TEST_SUITE("Cli")
         const fs::path dir = test::temp_dir();
         const std::string recipe = (dir / "r.json").string(), out = (dir / "o.obj").string();
         test::write_bytes(recipe, R"({"soft": {"vertices": [1, 40000]}})");
-        const Run r = cli("smooth " + bunny() + " -o " + quote(out) + " --recipe " + quote(recipe));
+        const Run r = cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --recipe " +
+                          test::shell_quote(recipe));
         CHECK(r.code == 2);
         CHECK(r.err.find("soft.vertices[1]: vertex 40000 is out of range") != std::string::npos);
         CHECK(r.err.find(recipe) != std::string::npos);
         CHECK_FALSE(fs::exists(out));
-        CHECK(cli("smooth " + bunny() + " -o " + quote(out) + " --lambda fast").code == 2);
+        CHECK(cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --lambda fast").code ==
+              2);
         CHECK_FALSE(fs::exists(out));
     }
 
@@ -196,7 +181,8 @@ TEST_SUITE("Cli")
         const fs::path dir = test::temp_dir();
         const std::string in = (dir / "m.obj").string(), out = (dir / "m.stl").string();
         test::write_bytes(in, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nf 1 2 3\n");
-        const Run r = cli("smooth " + quote(in) + " -o " + quote(out) + " -q");
+        const Run r =
+            cli("smooth " + test::shell_quote(in) + " -o " + test::shell_quote(out) + " -q");
         CHECK(r.code == 0);
         CHECK(r.err.find("1 of them are not in") != std::string::npos);
         CHECK(io::read_mesh(out).vertex_count() == 3);
@@ -205,24 +191,27 @@ TEST_SUITE("Cli")
     TEST_CASE("an unwritable output exits 3 and leaves the existing file intact")
     {
         const fs::path dir = test::temp_dir();
-        const Run r =
-            cli("smooth " + bunny() + " -o " + quote((dir / "no" / "such" / "dir.obj").string()));
+        const Run r = cli("smooth " + bunny() + " -o " +
+                          test::shell_quote((dir / "no" / "such" / "dir.obj").string()));
         CHECK(r.code == 3);
         CHECK(r.err.find("cannot write") != std::string::npos);
         // A directory in the way of the output.
         fs::create_directories(dir / "taken.obj");
-        CHECK(cli("smooth " + bunny() + " -o " + quote((dir / "taken.obj").string())).code == 3);
+        CHECK(cli("smooth " + bunny() + " -o " + test::shell_quote((dir / "taken.obj").string()))
+                  .code == 3);
     }
     TEST_CASE("convert writes the same mesh in another format, whatever its coordinates")
     {
         const fs::path dir = test::temp_dir();
         const fs::path in = dir / "far.off", out = dir / "far.ply";
         test::write_bytes(in, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 1e300\n3 0 1 2\n");
-        const Run r = cli("convert " + quote(in.string()) + " -o " + quote(out.string()));
+        const Run r = cli("convert " + test::shell_quote(in.string()) + " -o " +
+                          test::shell_quote(out.string()));
         CHECK(r.code == 0);
         CHECK(io::read_mesh(out.string()) == io::read_mesh(in.string()));
         // Smoothing the same mesh is refused, naming it: its squares would overflow.
-        const Run s = cli("smooth " + quote(in.string()) + " -o " + quote(out.string()));
+        const Run s = cli("smooth " + test::shell_quote(in.string()) + " -o " +
+                          test::shell_quote(out.string()));
         CHECK(s.code == 2);
         CHECK(s.err.find("'" + in.string() + "': vertex 2 has the coordinate 1e+300") !=
               std::string::npos);
@@ -241,9 +230,9 @@ TEST_SUITE("Cli")
         const std::vector<std::string> names = {"bunny.obj", "bad.obj", "tri.off"};
         std::string files;
         for (const std::string& name : names)
-            files += " " + quote((in / name).string());
-        const Run r = cli("batch" + files + " --recipe " + quote(recipe) + " --out-dir " +
-                          quote(out.string()) + " --jobs 2");
+            files += " " + test::shell_quote((in / name).string());
+        const Run r = cli("batch" + files + " --recipe " + test::shell_quote(recipe) +
+                          " --out-dir " + test::shell_quote(out.string()) + " --jobs 2");
         CHECK(r.code == 2); // one input rejected
         CHECK(r.err.find("1 of 3 files failed") != std::string::npos);
         // One JSON line per file, in any order; the index says which.
@@ -268,14 +257,16 @@ TEST_SUITE("Cli")
         {
             CAPTURE(name);
             const fs::path single = dir / ("single-" + name);
-            REQUIRE(cli("smooth " + quote((in / name).string()) + " -o " + quote(single.string()) +
-                        " --recipe " + quote(recipe) + " -q")
+            REQUIRE(cli("smooth " + test::shell_quote((in / name).string()) + " -o " +
+                        test::shell_quote(single.string()) + " --recipe " +
+                        test::shell_quote(recipe) + " -q")
                         .code == 0);
             CHECK(io::read_file((out / name).string()) == io::read_file(single.string()));
         }
         // --format changes the outputs' extension; all good files: exit 0.
-        const Run ply = cli("batch " + quote((in / "tri.off").string()) + " --recipe " +
-                            quote(recipe) + " --out-dir " + quote(out.string()) + " --format ply");
+        const Run ply = cli("batch " + test::shell_quote((in / "tri.off").string()) + " --recipe " +
+                            test::shell_quote(recipe) + " --out-dir " +
+                            test::shell_quote(out.string()) + " --format ply");
         CHECK(ply.code == 0);
         CHECK(io::read_mesh((out / "tri.ply").string()).vertex_count() == 4);
     }
@@ -289,17 +280,18 @@ TEST_SUITE("Cli")
         fs::copy_file(test::assets_dir() / "bunny.obj", dir / "b" / "m.obj");
         const std::string recipe = (test::assets_dir() / "recipes" / "combined.json").string();
         const fs::path out = dir / "out";
-        const Run twice = cli("batch " + quote((dir / "a" / "m.obj").string()) + " " +
-                              quote((dir / "b" / "m.obj").string()) + " --recipe " + quote(recipe) +
-                              " --out-dir " + quote(out.string()));
+        const Run twice =
+            cli("batch " + test::shell_quote((dir / "a" / "m.obj").string()) + " " +
+                test::shell_quote((dir / "b" / "m.obj").string()) + " --recipe " +
+                test::shell_quote(recipe) + " --out-dir " + test::shell_quote(out.string()));
         CHECK(twice.code == 2);
         CHECK(twice.err.find("would both be written to") != std::string::npos);
         CHECK_FALSE(fs::exists(out));
         const std::string bad = (dir / "r.json").string();
         test::write_bytes(bad, R"({"lambda": "fast"})");
         const Run recipe_error =
-            cli("batch " + quote((dir / "a" / "m.obj").string()) + " --recipe " + quote(bad) +
-                " --out-dir " + quote(out.string()));
+            cli("batch " + test::shell_quote((dir / "a" / "m.obj").string()) + " --recipe " +
+                test::shell_quote(bad) + " --out-dir " + test::shell_quote(out.string()));
         CHECK(recipe_error.code == 2);
         CHECK(recipe_error.err.find("lambda") != std::string::npos);
         CHECK_FALSE(fs::exists(out));
@@ -321,10 +313,11 @@ TEST_SUITE("Cli")
         const std::string traced =
             "ASAN_OPTIONS=\"$ASAN_OPTIONS:detect_leaks=0\" strace -f -qq -e "
             "trace=open,openat,openat2,creat -o " +
-            quote(log.string()) + " " + quote(MESHFAIR_CLI) + " ";
-        const std::string args = "smooth " + quote(mesh.string()) + " --recipe " +
-                                 quote(recipe.string()) + " -o " + quote(out.string()) +
-                                 " --report " + quote((dir / "report.json").string()) + " -q";
+            test::shell_quote(log.string()) + " " + test::shell_quote(MESHFAIR_CLI) + " ";
+        const std::string args = "smooth " + test::shell_quote(mesh.string()) + " --recipe " +
+                                 test::shell_quote(recipe.string()) + " -o " +
+                                 test::shell_quote(out.string()) + " --report " +
+                                 test::shell_quote((dir / "report.json").string()) + " -q";
         const int status = std::system((traced + args + " 2>/dev/null").c_str());
         INFO("strace must be installed (.ci/setup.sh test installs it)");
         REQUIRE(WIFEXITED(status));

@@ -19,40 +19,18 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Run
-{
-    int code = -1;
-    std::string out, err;
-};
-
-std::string quote(const std::string& s)
-{
-    std::string q = "'";
-    for (const char c : s)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
+using Run = test::CommandRun;
 
 // Runs meshfair with `args` (already quoted), without a display unless `env` says more.
 Run editor(const std::string& args, const std::string& env = "env -u DISPLAY")
 {
-    static int counter = 0;
-    const fs::path dir = test::temp_dir();
-    const fs::path out = dir / ("out" + std::to_string(counter)),
-                   err = dir / ("err" + std::to_string(counter++));
-    const std::string command = env + " GALLIUM_DRIVER=llvmpipe " + quote(MESHFAIR_EDITOR) + " " +
-                                args + " >" + quote(out.string()) + " 2>" + quote(err.string());
-    const int status = std::system(command.c_str());
-    Run r;
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    r.out = io::read_file(out.string());
-    r.err = io::read_file(err.string());
-    return r;
+    return test::run_command(env + " GALLIUM_DRIVER=llvmpipe " +
+                             test::shell_quote(MESHFAIR_EDITOR) + " " + args);
 }
 
 std::string bunny()
 {
-    return quote((test::assets_dir() / "bunny.obj").string());
+    return test::shell_quote((test::assets_dir() / "bunny.obj").string());
 }
 
 } // namespace
@@ -64,8 +42,8 @@ TEST_SUITE("meshfair")
         const fs::path dir = test::temp_dir();
         const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
         const std::string common = "--offscreen " + bunny() + " --size 320x200 --mode flat,wire";
-        REQUIRE(editor(common + " --screenshot " + quote(a)).code == 0);
-        REQUIRE(editor(common + " --screenshot " + quote(b)).code == 0);
+        REQUIRE(editor(common + " --screenshot " + test::shell_quote(a)).code == 0);
+        REQUIRE(editor(common + " --screenshot " + test::shell_quote(b)).code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
         const app::Image image = app::read_png(a);
         CHECK(image.width == 320);
@@ -77,11 +55,11 @@ TEST_SUITE("meshfair")
         const fs::path dir = test::temp_dir();
         const std::string view = (dir / "view.json").string();
         const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
-        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " + quote(a) +
-                       " --save-view " + quote(view))
+        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " +
+                       test::shell_quote(a) + " --save-view " + test::shell_quote(view))
                     .code == 0);
-        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " + quote(b) +
-                       " --view " + quote(view))
+        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " +
+                       test::shell_quote(b) + " --view " + test::shell_quote(view))
                     .code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
     }
@@ -90,7 +68,7 @@ TEST_SUITE("meshfair")
     {
         const fs::path dir = test::temp_dir();
         const std::string shot = (dir / "shot.png").string();
-        const Run r = editor(bunny() + " --size 200x160 --screenshot " + quote(shot));
+        const Run r = editor(bunny() + " --size 200x160 --screenshot " + test::shell_quote(shot));
         CHECK(r.code == 0);
         CHECK(r.err.find("meshfair: no display") == 0);
         CHECK(r.err.find("rendering offscreen to " + shot + " instead") != std::string::npos);
@@ -104,7 +82,8 @@ TEST_SUITE("meshfair")
         const fs::path bad_mesh = dir / "bad.obj";
         test::write_bytes(bad_mesh, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n");
         test::write_bytes(shot, "the previous screenshot");
-        Run r = editor("--offscreen " + quote(bad_mesh.string()) + " --screenshot " + quote(shot));
+        Run r = editor("--offscreen " + test::shell_quote(bad_mesh.string()) + " --screenshot " +
+                       test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err == "meshfair: " + bad_mesh.string() +
                            ":4:7: vertex index 9 is past the last vertex (the file defines 3)\n");
@@ -112,23 +91,25 @@ TEST_SUITE("meshfair")
 
         const fs::path bad_view = dir / "view.json";
         test::write_bytes(bad_view, "{\"distance\": 0}");
-        r = editor("--offscreen " + bunny() + " --view " + quote(bad_view.string()) +
-                   " --screenshot " + quote(shot));
+        r = editor("--offscreen " + bunny() + " --view " + test::shell_quote(bad_view.string()) +
+                   " --screenshot " + test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err ==
               "meshfair: '" + bad_view.string() + "': view field 'distance' must be positive\n");
 
-        r = editor("--offscreen " + bunny() + " --mode sketchy --screenshot " + quote(shot));
+        r = editor("--offscreen " + bunny() + " --mode sketchy --screenshot " +
+                   test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err.find("unknown mode 'sketchy'") != std::string::npos);
-        r = editor("--offscreen " + bunny() + " --size 12x4000 --screenshot " + quote(shot));
+        r = editor("--offscreen " + bunny() + " --size 12x4000 --screenshot " +
+                   test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err.find("'12x4000' is not WxH") != std::string::npos);
         r = editor("--offscreen " + bunny());
         CHECK(r.code == 2);
         CHECK(r.err == "meshfair: --offscreen needs --screenshot OUT.png\n");
-        r = editor("--offscreen " + quote((dir / "missing.obj").string()) + " --screenshot " +
-                   quote(shot));
+        r = editor("--offscreen " + test::shell_quote((dir / "missing.obj").string()) +
+                   " --screenshot " + test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err.find("missing.obj': cannot open") != std::string::npos);
         CHECK(io::read_file(shot) == "the previous screenshot");
@@ -138,7 +119,7 @@ TEST_SUITE("meshfair")
     {
         const fs::path dir = test::temp_dir();
         const Run r = editor("--offscreen " + bunny() + " --size 64x64 --screenshot " +
-                             quote((dir / "no" / "such" / "dir.png").string()));
+                             test::shell_quote((dir / "no" / "such" / "dir.png").string()));
         CHECK(r.code == 3);
         CHECK(r.err.find("dir.png': cannot create a temporary file beside it") !=
               std::string::npos);
