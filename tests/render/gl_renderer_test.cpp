@@ -67,6 +67,33 @@ TEST_SUITE("GlRenderer")
         }
     }
 
+    TEST_CASE("a view inside a larger framebuffer picks in its own pixels")
+    {
+        // The view is the right 300 x 150 of a 400 x 200 framebuffer, 50 rows down.
+        test::offscreen_context(kWidth, kHeight);
+        const ViewRect rect{kWidth, kHeight, 100, 50, 300, 150};
+        Document d = make_document(test::open_grid(2, 1), "two_quads.obj");
+        Camera c;
+        c.projection = Projection::Orthographic;
+        c.frame(d.box, double(rect.width) / rect.height);
+        GlRenderer r;
+        r.set_mesh(d.mesh, d.draw_data);
+        r.draw(c, DisplayOptions{}, rect);
+        const glm::dvec3 w = c.project({1.5, 0.5, 0}, rect.width, rect.height);
+        const PickResult p = r.pick(c, rect, int(w.x), int(w.y));
+        REQUIRE(p.hit);
+        CHECK(p.face == 1);
+        CHECK(p.point.x == doctest::Approx(1.5).epsilon(0.02));
+        // The frame shows the mesh there too: that pixel of the framebuffer is the surface.
+        const Image image = r.read_pixels(kWidth, kHeight);
+        const size_t at = 4 * (size_t(rect.y + int(w.y)) * kWidth + size_t(rect.x + int(w.x)));
+        const DisplayOptions o;
+        CHECK(std::abs(int(image.rgba[at]) - int(o.background[0] * 255)) > 40);
+        // ...and left of the view, where nothing is drawn, the background.
+        CHECK(std::abs(int(image.rgba[4 * (size_t(100) * kWidth + 20)]) -
+                       int(o.background[0] * 255 + 0.5f)) <= 1);
+    }
+
     TEST_CASE("updating positions re-uploads without reallocating, and the picture follows")
     {
         test::offscreen_context(kWidth, kHeight);

@@ -114,7 +114,30 @@ TEST_SUITE("Golden images")
     TEST_CASE("the whole interface at 1280 x 800")
     {
         const DisplayOptions o;
-        test::check_golden(
-            "ui_full", test::render_frame(bunny(), framed(bunny(), 1280, 800), o, 1280, 800, true));
+        test::check_golden("ui_full", test::render_frame(bunny(), framed(bunny(), 1280, 800), o,
+                                                         1280, 800, {.ui = true}));
+    }
+
+    TEST_CASE("the help overlay lists the bindings over the interface")
+    {
+        const DisplayOptions o;
+        test::check_golden("ui_help", test::render_frame(bunny(), framed(bunny(), 1280, 800), o,
+                                                         1280, 800, {.ui = true, .help = true}));
+    }
+
+    TEST_CASE("the per-vertex colour overlay, here the height of an open grid")
+    {
+        const Document grid = warped_grid();
+        std::vector<float> colors;
+        for (size_t i = 0; i < grid.mesh.positions.size(); i += 3)
+        {
+            const float t = static_cast<float>(0.5 + 0.6 * grid.mesh.positions[i + 2]);
+            colors.insert(colors.end(), {t, 0.3f, 1.0f - t});
+        }
+        DisplayOptions o;
+        o.vertex_colors = true;
+        test::check_golden("open_grid_vertex_colors",
+                           test::render_frame(grid, three_quarters(grid, 560, 420), o, 560, 420,
+                                              {.vertex_colors = colors}));
     }
 }

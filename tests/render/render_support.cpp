@@ -28,12 +28,15 @@ void offscreen_context(int width, int height)
 }
 
 app::Image render_frame(const app::Document& document, const app::Camera& camera,
-                        const app::DisplayOptions& display, int width, int height, bool ui)
+                        const app::DisplayOptions& display, int width, int height,
+                        const FrameExtras& extras)
 {
     offscreen_context(width, height);
     app::GlRenderer renderer;
     renderer.set_mesh(document.mesh, document.draw_data);
-    if (!ui)
+    if (!extras.vertex_colors.empty())
+        renderer.set_vertex_colors(extras.vertex_colors);
+    if (!extras.ui)
     {
         renderer.draw(camera, display, app::ViewRect::whole(width, height));
         return renderer.read_pixels(width, height);
@@ -44,6 +47,7 @@ app::Image render_frame(const app::Document& document, const app::Camera& camera
     state.display = display;
     state.renderer_name = "llvmpipe"; // not the LLVM version: the golden must not depend on it
     state.offscreen = true;
+    state.show_help = extras.help;
     editor.prepare_offscreen(layer, document, state, camera, width, height);
     const app::ViewRect rect = app::EditorUi::view_rect(width, height, state);
     app::Camera fitted = camera;

@@ -6,6 +6,7 @@
 // the golden images of tests/golden/.
 
 #include <string>
+#include <vector>
 
 #include "app/editor/document.h"
 #include "app/render/gl_renderer.h"
@@ -21,9 +22,18 @@ inline constexpr double kGoldenPixelFraction = 0.005;
 //! The process's offscreen context, made current at `width` x `height`.
 void offscreen_context(int width, int height);
 
-//! One frame of `document` (UI panels over it when `ui`).
+//! What a frame draws besides the mesh.
+struct FrameExtras
+{
+    bool ui = false;                    //!< the editor's panels (the camera refitted to its view)
+    bool help = false;                  //!< with the help overlay open
+    std::vector<float> vertex_colors{}; //!< the colour overlay, 3 #V
+};
+
+//! One frame of `document`.
 app::Image render_frame(const app::Document& document, const app::Camera& camera,
-                        const app::DisplayOptions& display, int width, int height, bool ui = false);
+                        const app::DisplayOptions& display, int width, int height,
+                        const FrameExtras& extras = {});
 
 //! \brief Compares `image` with tests/golden/NAME.png (see the tolerances above). On a
 //! failure writes NAME-actual.png and NAME-diff.png into the build's render-failures/
