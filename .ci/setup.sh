@@ -25,10 +25,11 @@ packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libc
     libimgui-dev libstb-dev xvfb xauth)
 # Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
 # and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
-# save tests and the files-opened check), xdotool, x11-apps and imagemagick (the editor's
-# real-window test: synthetic keys, a screenshot taken from outside, its pixels).
+# save tests and the files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the
+# editor's real-window test: synthetic keys, a screenshot taken from outside, its pixels,
+# a close request sent as a window manager sends it).
 [ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
-    strace xdotool x11-apps imagemagick)
+    strace xdotool x11-apps imagemagick libx11-dev)
 
 missing=()
 for p in "${packages[@]}"; do

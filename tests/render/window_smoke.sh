@@ -3,14 +3,15 @@
 # The editor in real windows under Xvfb, on meshes of every format and kind (OBJ, OFF,
 # binary PLY and STL, quads and a pentagon, an open grid, a non-manifold fan): each
 # opens, draws a first frame that a screenshot taken by the X server shows (not blank),
-# and quits with exit code 0 on Ctrl+Q typed as real key events.
-#   window_smoke.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
+# and quits with exit code 0, every other one on Ctrl+Q typed as real key events and the
+# rest on a close request from outside (what a window manager's close button sends).
+#   window_smoke.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR SEND_CLOSE
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     export MESHFAIR_IN_XVFB=1
     exec xvfb-run -a -s "-screen 0 1024x768x24" "$0" "$@"
 fi
-meshfair=$1 cli=$2 bunny=$3 work=$4
+meshfair=$1 cli=$2 bunny=$3 work=$4 send_close=$5
 rm -rf "$work"
 mkdir -p "$work"
 export GALLIUM_DRIVER=llvmpipe
@@ -74,6 +75,7 @@ end_header
 3 0 1 4
 MESH
 
+count=0
 for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
     "$work/polygons.obj" "$work/open_grid.off" "$work/nonmanifold_fan.ply"; do
     name=$(basename "$mesh")
@@ -102,14 +104,20 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
         exit 1
     fi
     window=$(xdotool search --sync --name "MeshFair - $name" | head -1)
-    xdotool windowfocus --sync "$window"
-    xdotool key --clearmodifiers ctrl+q
+    if [ $((count++ % 2)) = 0 ]; then
+        how="Ctrl+Q"
+        xdotool windowfocus --sync "$window"
+        xdotool key --clearmodifiers ctrl+q
+    else
+        how="a close request"
+        "$send_close" "$window"
+    fi
     for _ in $(seq 1 100); do
         kill -0 "$pid" 2>/dev/null || break
         sleep 0.1
     done
     if kill -0 "$pid" 2>/dev/null; then
-        echo "FAIL $name: still running 10 s after Ctrl+Q"
+        echo "FAIL $name: still running 10 s after $how"
         kill "$pid"
         exit 1
     fi
@@ -124,5 +132,5 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
         echo "FAIL $name: not in the recent files"
         exit 1
     fi
-    echo "ok $name: $(head -1 "$log"), screenshot deviation $deviation, exit 0"
+    echo "ok $name: $(head -1 "$log"), screenshot deviation $deviation, exit 0 on $how"
 done
