@@ -327,8 +327,14 @@ Mesh read_obj_in_ranges(std::string_view data, const std::string& name, ReadRepo
                 other[k] = std::current_exception(); // out of memory: nothing to retry
             }
         };
-        detail::parallel_for_threads(static_cast<Index>(pieces.size()),
-                                     static_cast<int>(pieces.size()), parse);
+        // The parts on at most thread_count() threads; one thread parses them in turn.
+        const auto parts_count = static_cast<Index>(pieces.size());
+        const int threads = std::min(static_cast<int>(parts_count), thread_count());
+        if (threads > 1)
+            detail::parallel_for_threads(parts_count, threads, parse);
+        else
+            for (Index k = 0; k < parts_count; ++k)
+                parse(k);
         for (const std::exception_ptr& e : other)
             if (e)
                 std::rethrow_exception(e);
