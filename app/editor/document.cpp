@@ -21,7 +21,22 @@ Document make_document(Mesh mesh, std::string path)
     d.topology = build_topology(d.mesh, TopologyParts::Edges | TopologyParts::Corners);
     d.draw_data = mesh_draw_data(d.mesh, d.topology);
     d.box = bounding_box(d.mesh.positions);
+    d.selected_vertices.assign(static_cast<size_t>(d.mesh.vertex_count()), 0);
+    d.selected_faces.assign(static_cast<size_t>(d.mesh.face_count()), 0);
     return d;
+}
+
+Box3 selection_box(const Document& d)
+{
+    SelectionMask vertices = vertices_of_faces(d.mesh, d.selected_faces);
+    for (size_t i = 0; i < vertices.size(); ++i)
+        vertices[i] = vertices[i] || d.selected_vertices[i];
+    Box3 box;
+    for (size_t i = 0; i < vertices.size(); ++i)
+        if (vertices[i])
+            box.add({d.mesh.positions[3 * i], d.mesh.positions[3 * i + 1],
+                     d.mesh.positions[3 * i + 2]});
+    return box.empty() ? d.box : box;
 }
 
 Box3 bounding_box(std::span<const Scalar> x)

@@ -8,6 +8,7 @@
 #include "app/render/mesh_draw_data.h"
 #include "core/io/io.h"
 #include "core/mesh/mesh.h"
+#include "core/select/mesh_select.h"
 #include "core/topology/topology.h"
 
 namespace meshfair::app {
@@ -23,7 +24,9 @@ struct Document
     Topology topology;
     MeshDrawData draw_data;
     Box3 box;
-    bool modified = false; //!< changed since it was read or saved
+    SelectionMask selected_vertices; //!< #V flags
+    SelectionMask selected_faces;    //!< #F flags
+    bool modified = false;           //!< changed since it was read or saved
 };
 
 //! \brief Reads a mesh file into a document.
@@ -35,6 +38,10 @@ Document make_document(Mesh mesh, std::string path);
 
 //! The box around the positions (3 #V values).
 Box3 bounding_box(std::span<const Scalar> positions);
+
+//! \brief The box around the selected vertices and the vertices of the selected faces, for
+//! "frame selection"; the whole mesh's box when nothing is selected.
+Box3 selection_box(const Document& document);
 
 //! "34,835 vertices" style thousands separators for the status bar.
 std::string with_separators(std::int64_t n);

@@ -92,6 +92,8 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
     {
         if (ImGui::MenuItem("Frame all", "Home"))
             r.frame_all = true;
+        if (ImGui::MenuItem("Frame selection", "F"))
+            r.frame_selection = true;
         for (StandardView v : {StandardView::Front, StandardView::Right, StandardView::Top,
                                StandardView::Back, StandardView::Left, StandardView::Bottom})
             if (ImGui::MenuItem(view_name(v)))

@@ -37,6 +37,7 @@ struct UiRequests
     std::optional<std::string> save_path;
     std::optional<StandardView> view;
     bool frame_all = false;
+    bool frame_selection = false;
     bool toggle_projection = false;
     bool screenshot = false;
     bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them

@@ -125,6 +125,8 @@ struct Editor
     {
         if (r.frame_all)
             camera.frame(document.box, aspect());
+        if (r.frame_selection)
+            camera.frame(selection_box(document), document.box, aspect());
         if (r.view)
             camera.set_view(*r.view);
         if (r.toggle_projection)
@@ -173,8 +175,10 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
             break;
         case GLFW_KEY_HOME:
         case GLFW_KEY_KP_DECIMAL:
-        case GLFW_KEY_F: // no selection yet: the selection is everything
             r.frame_all = true;
+            break;
+        case GLFW_KEY_F:
+            r.frame_selection = true;
             break;
         case GLFW_KEY_KP_1:
         case GLFW_KEY_1:

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair::app {
 
@@ -127,6 +128,13 @@ void Camera::frame(const Box3& box, double aspect)
     }
 }
 
+void Camera::frame(const Box3& part, const Box3& scene, double aspect)
+{
+    frame(part, aspect);
+    scene_center = scene.empty() ? glm::dvec3(0.0) : scene.center();
+    scene_radius = scene.radius();
+}
+
 void Camera::set_view(StandardView view)
 {
     const glm::dvec3 y{0, 1, 0}, x{1, 0, 0};
@@ -192,6 +200,28 @@ void Camera::zoom(double factor, double x_px, double y_px, int width, int height
         target + ((x_px - 0.5 * width) * right() + (0.5 * height - y_px) * up()) * per_px;
     distance *= factor;
     target = under_cursor + (target - under_cursor) * factor;
+}
+
+std::vector<ScreenPoint> project_points(const Camera& camera, std::span<const float> positions,
+                                        int width, int height)
+{
+    // One matrix for all: project() would rebuild it for every point.
+    const glm::dmat4 m =
+        camera.projection_matrix(double(width) / std::max(height, 1)) * camera.view_matrix();
+    std::vector<ScreenPoint> out(positions.size() / 3);
+    parallel_for(static_cast<Index>(out.size()), [&](Index i) {
+        const size_t k = 3 * static_cast<size_t>(i);
+        const glm::dvec4 clip = m * glm::dvec4(positions[k], positions[k + 1], positions[k + 2], 1);
+        if (clip.w <= 0)
+        {
+            out[static_cast<size_t>(i)] = {0, 0, -1}; // behind the eye
+            return;
+        }
+        const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+        out[static_cast<size_t>(i)] = {(ndc.x + 1) * 0.5 * width, (1 - ndc.y) * 0.5 * height,
+                                       (ndc.z + 1) * 0.5};
+    });
+    return out;
 }
 
 std::string to_json(const Camera& c)

@@ -2,10 +2,14 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <span>
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+
+#include "core/select/screen_select.h"
 
 namespace meshfair::app {
 
@@ -90,6 +94,9 @@ struct Camera
     //! bounding sphere fit the narrower side of the window with a 5 % margin; the
     //! direction is kept. The box also becomes the scene (near and far).
     void frame(const Box3& box, double aspect);
+    //! \brief Looks at `part` of the scene (a selection) as frame does, while near and far
+    //! still contain the whole `scene`.
+    void frame(const Box3& part, const Box3& scene, double aspect);
     //! Looks along a standard view's axis (the distance and target are kept).
     void set_view(StandardView view);
 
@@ -104,6 +111,11 @@ struct Camera
     //! target's depth, fixed on screen (zoom to cursor).
     void zoom(double factor, double x_px, double y_px, int width, int height);
 };
+
+//! \brief Every point of `positions` (3 n coordinates) in window pixels and depth, as
+//! Camera::project gives them, computed on the threads.
+std::vector<ScreenPoint> project_points(const Camera& camera, std::span<const float> positions,
+                                        int width, int height);
 
 //! The camera as JSON (target, distance, rotation as w x y z, projection, fov, radius).
 std::string to_json(const Camera& camera);

@@ -11,6 +11,7 @@
 #include "app/render/gl_functions.h"
 #include "app/render/gl_program.h"
 #include "app/render/render_error.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair::app {
 
@@ -310,14 +311,8 @@ Image GlRenderer::read_pixels(int width, int height)
     return image;
 }
 
-PickResult GlRenderer::pick(const Camera& camera, const ViewRect& rect, int x, int y)
+void GlRenderer::render_ids(const Camera& camera, int width, int height)
 {
-    PickResult result;
-    const int width = rect.width, height = rect.height;
-    if (x < 0 || y < 0 || x >= width || y >= height)
-        return result;
-    GLint previous_framebuffer = 0;
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
     gl_->prepare_pick_target(width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, gl_->pick_framebuffer);
     glViewport(0, 0, width, height);
@@ -339,6 +334,17 @@ PickResult GlRenderer::pick(const Camera& camera, const ViewRect& rect, int x, i
                    nullptr);
     glBindVertexArray(0);
     glUseProgram(0);
+}
+
+PickResult GlRenderer::pick(const Camera& camera, const ViewRect& rect, int x, int y)
+{
+    PickResult result;
+    const int width = rect.width, height = rect.height;
+    if (x < 0 || y < 0 || x >= width || y >= height)
+        return result;
+    GLint previous_framebuffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    render_ids(camera, width, height);
     GLuint ids[2] = {0, 0};
     GLfloat depth = 1.0f;
     const int row = height - 1 - y;
@@ -353,6 +359,54 @@ PickResult GlRenderer::pick(const Camera& camera, const ViewRect& rect, int x, i
     result.vertex = static_cast<Index>(ids[1] - 1);
     result.point = camera.unproject({x + 0.5, y + 0.5, depth}, width, height);
     return result;
+}
+
+Visibility GlRenderer::visibility(const Camera& camera, const ViewRect& rect)
+{
+    const int width = std::max(rect.width, 1), height = std::max(rect.height, 1);
+    GLint previous_framebuffer = 0;
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &previous_framebuffer);
+    render_ids(camera, width, height);
+    const size_t pixels = size_t(width) * height;
+    std::vector<GLuint> ids(2 * pixels);
+    std::vector<GLfloat> depth(pixels);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, width, height, GL_RG_INTEGER, GL_UNSIGNED_INT, ids.data());
+    glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(previous_framebuffer));
+    check("visibility");
+
+    Visibility v;
+    v.faces.assign(data_.face_count, 0);
+    for (size_t p = 0; p < pixels; ++p)
+        if (ids[2 * p] != 0)
+            v.faces[ids[2 * p] - 1] = 1;
+    v.projected = project_points(camera, positions_, width, height);
+    v.vertices.assign(data_.vertex_count, 0);
+    parallel_for(static_cast<Index>(data_.vertex_count), [&](Index i) {
+        const ScreenPoint& s = v.projected[static_cast<size_t>(i)];
+        if (!(s.depth >= 0 && s.depth <= 1 && s.x >= 0 && s.y >= 0 && s.x < width && s.y < height))
+            return;
+        // Not behind the surface drawn around the vertex's pixel: the farthest surface depth
+        // of the 3 x 3 pixels there, since a pixel's centre is up to 0.7 px from the vertex
+        // and a steep (silhouette) surface changes depth fast across a pixel. Background
+        // pixels do not count, or every vertex just behind a silhouette would pass; with
+        // only background around, nothing hides the vertex.
+        const int px = static_cast<int>(s.x), row = height - 1 - static_cast<int>(s.y);
+        float farthest = -1;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+            {
+                const int x = std::clamp(px + dx, 0, width - 1);
+                const int y = std::clamp(row + dy, 0, height - 1);
+                const float d = depth[size_t(y) * width + size_t(x)];
+                if (d < 1.0f)
+                    farthest = std::max(farthest, d);
+            }
+        v.vertices[static_cast<size_t>(i)] =
+            farthest < 0 || s.depth <= farthest + kVisibilityDepthMargin;
+    });
+    return v;
 }
 
 } // namespace meshfair::app

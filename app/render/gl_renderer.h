@@ -29,6 +29,7 @@ public:
     void draw(const Camera& camera, const DisplayOptions& options, const ViewRect& view) override;
     Image read_pixels(int width, int height) override;
     PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) override;
+    Visibility visibility(const Camera& camera, const ViewRect& view) override;
 
     //! How many times set_mesh and update_positions uploaded buffers (for tests: an update
     //! must not reallocate).
@@ -36,6 +37,8 @@ public:
 
 private:
     struct Gl; // the GL objects, defined where GL is included
+    //! Draws the ID buffer of a `width` x `height` view into the pick framebuffer, left bound.
+    void render_ids(const Camera& camera, int width, int height);
     std::unique_ptr<Gl> gl_;
     Mesh connectivity_; // the faces of the mesh set last (positions not kept)
     MeshDrawData data_;

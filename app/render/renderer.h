@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -12,6 +13,7 @@
 #include "app/render/image.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/mesh/mesh.h"
+#include "core/select/screen_select.h"
 
 namespace meshfair::app {
 
@@ -59,6 +61,19 @@ struct PickResult
     glm::dvec3 point{0.0};
 };
 
+//! \brief What a view shows, for the selection tools' "front-facing only": every vertex
+//! projected into the view's pixels, and flags of the vertices and faces not hidden.
+struct Visibility
+{
+    std::vector<ScreenPoint> projected; //!< one per vertex, in the view's pixels
+    std::vector<char> vertices;         //!< 1: in the view and not behind the surface
+    std::vector<char> faces;            //!< 1: covers at least one pixel of the view
+};
+
+//! How much farther than the surface drawn around it (in window depth) a vertex may lie
+//! and still count as visible: the depth buffer's resolution.
+inline constexpr double kVisibilityDepthMargin = 2e-4;
+
 //! \brief The viewer's drawing interface, free of GL types: the same calls draw in a
 //! window, into an OSMesa buffer or into a recording for tests.
 //!
@@ -82,6 +97,8 @@ public:
     //! \brief Renders the ID buffer (face and nearest vertex per pixel) of the view on
     //! demand and reads pixel (x, y) of the view, (0, 0) being its top-left one.
     virtual PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) = 0;
+    //! \brief Renders the ID buffer on demand and tells which vertices and faces it shows.
+    virtual Visibility visibility(const Camera& camera, const ViewRect& view) = 0;
 };
 
 } // namespace meshfair::app

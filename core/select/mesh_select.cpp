@@ -110,57 +110,49 @@ SelectionMask shrink_faces(const Mesh& mesh, const Topology& t, const SelectionM
     });
 }
 
+namespace {
+
+// Every element reachable from the seeds; neighbours(e, visit) calls visit on each
+// neighbour of e.
+template <class Neighbours>
+SelectionMask flood(size_t n, std::span<const Index> seeds, Neighbours neighbours)
+{
+    SelectionMask seen(n, 0);
+    std::vector<Index> queue;
+    const auto visit = [&](Index e) {
+        if (!seen[static_cast<size_t>(e)])
+        {
+            seen[static_cast<size_t>(e)] = 1;
+            queue.push_back(e);
+        }
+    };
+    for (const Index s : seeds)
+        visit(s);
+    for (size_t head = 0; head < queue.size(); ++head)
+        neighbours(queue[head], visit);
+    return seen;
+}
+
+} // namespace
+
 SelectionMask connected_vertices(const Topology& t, std::span<const Index> seeds)
 {
-    SelectionMask seen(static_cast<size_t>(t.vertex_count), 0);
-    std::vector<Index> queue;
-    for (const Index s : seeds)
-        if (!seen[static_cast<size_t>(s)])
-        {
-            seen[static_cast<size_t>(s)] = 1;
-            queue.push_back(s);
-        }
-    for (size_t head = 0; head < queue.size(); ++head)
-        for (Index k = t.vertex_offsets[queue[head]]; k < t.vertex_offsets[queue[head] + 1]; ++k)
-        {
-            const Index j = t.vertex_neighbors[k];
-            if (!seen[static_cast<size_t>(j)])
-            {
-                seen[static_cast<size_t>(j)] = 1;
-                queue.push_back(j);
-            }
-        }
-    return seen;
+    return flood(static_cast<size_t>(t.vertex_count), seeds, [&](Index i, const auto& visit) {
+        for (Index k = t.vertex_offsets[i]; k < t.vertex_offsets[i + 1]; ++k)
+            visit(t.vertex_neighbors[k]);
+    });
 }
 
 SelectionMask connected_faces(const Mesh& mesh, const Topology& t, std::span<const Index> seeds)
 {
-    SelectionMask seen(static_cast<size_t>(mesh.face_count()), 0);
-    std::vector<Index> queue;
-    for (const Index s : seeds)
-        if (!seen[static_cast<size_t>(s)])
-        {
-            seen[static_cast<size_t>(s)] = 1;
-            queue.push_back(s);
-        }
-    for (size_t head = 0; head < queue.size(); ++head)
-    {
-        const Index f = queue[head];
+    return flood(static_cast<size_t>(mesh.face_count()), seeds, [&](Index f, const auto& visit) {
         for (Index c = mesh.face_offsets[f]; c < mesh.face_offsets[f + 1]; ++c)
         {
             const Index e = t.corner_edge[c];
             for (Index k = t.edge_face_offsets[e]; k < t.edge_face_offsets[e + 1]; ++k)
-            {
-                const Index g = t.edge_faces[k];
-                if (!seen[static_cast<size_t>(g)])
-                {
-                    seen[static_cast<size_t>(g)] = 1;
-                    queue.push_back(g);
-                }
-            }
+                visit(t.edge_faces[k]);
         }
-    }
-    return seen;
+    });
 }
 
 SelectionMask boundary_vertices(const Topology& t)

@@ -77,6 +77,52 @@ TEST_SUITE("Camera")
                 }
     }
 
+    TEST_CASE("framing a part shows the part and keeps the whole scene between near and far")
+    {
+        Box3 scene = unit_box();
+        Box3 part;
+        part.add({2.5, 1.0, -0.2});
+        part.add({2.9, 1.4, -0.1});
+        Camera c;
+        c.frame(part, scene, 1.5);
+        CHECK(c.scene_radius == doctest::Approx(scene.radius()));
+        CHECK(glm::length(c.target - part.center()) < 1e-12);
+        for (int k = 0; k < 8; ++k)
+        {
+            const glm::dvec3 corner{k & 1 ? part.hi.x : part.lo.x, k & 2 ? part.hi.y : part.lo.y,
+                                    k & 4 ? part.hi.z : part.lo.z};
+            const glm::dvec3 s = c.project(corner, 900, 600);
+            CHECK(s.x > 0);
+            CHECK(s.x < 900);
+            CHECK(s.y > 0);
+            CHECK(s.y < 600);
+        }
+        // The far end of the scene, seen through the part, is not cut off by the far plane.
+        CHECK(c.far_plane() >=
+              glm::dot(scene.center() - c.eye(), c.forward()) + scene.radius() - 1e-9);
+    }
+
+    TEST_CASE("project_points gives what project gives, for every point")
+    {
+        Camera c;
+        c.frame(unit_box(), 1.6);
+        c.orbit(OrbitStyle::Trackball, 10, 10, 90, 40, 800, 500);
+        const std::vector<float> p{0.3f, 0.2f, -1.1f, 2.9f, 1.4f, -0.1f, -0.9f, -0.4f, -1.9f};
+        const std::vector<ScreenPoint> s = project_points(c, p, 800, 500);
+        REQUIRE(s.size() == 3);
+        for (size_t i = 0; i < 3; ++i)
+        {
+            const glm::dvec3 w = c.project({p[3 * i], p[3 * i + 1], p[3 * i + 2]}, 800, 500);
+            CHECK(s[i].x == doctest::Approx(w.x).epsilon(1e-12));
+            CHECK(s[i].y == doctest::Approx(w.y).epsilon(1e-12));
+            CHECK(s[i].depth == doctest::Approx(w.z).epsilon(1e-12));
+        }
+        // Behind the eye: a depth outside [0, 1], which no tool selects.
+        const glm::dvec3 behind = c.eye() - c.forward();
+        const std::vector<float> q{float(behind.x), float(behind.y), float(behind.z)};
+        CHECK(project_points(c, q, 800, 500)[0].depth < 0);
+    }
+
     TEST_CASE("the standard views look along the axes, with +y up except from above")
     {
         Camera c;

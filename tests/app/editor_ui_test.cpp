@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "app/editor/document.h"
 #include "app/editor/file_browser.h"
 #include "core/io/io.h"
 #include "tests/helpers.h"
@@ -48,6 +49,17 @@ TEST_SUITE("EditorUi")
         CHECK(load_recent((dir / "none.txt").string()).empty());
         CHECK_FALSE(save_recent("", recent));
         CHECK_FALSE(save_recent("/proc/no/such/recent.txt", recent));
+    }
+
+    TEST_CASE("the selection's box: selected vertices and the vertices of selected faces")
+    {
+        Document d = make_document(test::open_grid(4, 4), "grid.obj");
+        CHECK(glm::length(selection_box(d).hi - d.box.hi) == 0); // nothing selected: all
+        d.selected_vertices[0] = 1;                              // (0, 0)
+        d.selected_faces[5] = 1;                                 // the quad (1, 1) - (2, 2)
+        const Box3 b = selection_box(d);
+        CHECK(glm::length(b.lo - glm::dvec3(0, 0, 0)) == 0);
+        CHECK(glm::length(b.hi - glm::dvec3(2, 2, 0)) == 0);
     }
 
     TEST_CASE("the file browser lists folders first, then mesh files, by name")

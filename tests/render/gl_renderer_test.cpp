@@ -6,6 +6,8 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+
 #include "app/render/render_error.h"
 #include "tests/helpers.h"
 #include "tests/render/render_support.h"
@@ -92,6 +94,83 @@ TEST_SUITE("GlRenderer")
         // ...and left of the view, where nothing is drawn, the background.
         CHECK(std::abs(int(image.rgba[4 * (size_t(100) * kWidth + 20)]) -
                        int(o.background[0] * 255 + 0.5f)) <= 1);
+    }
+
+    TEST_CASE(
+        "visibility: a sphere's vertices in front of its silhouette are shown, the others not")
+    {
+        test::offscreen_context(kWidth, kHeight);
+        const Document sphere = make_document(test::icosphere(3), "sphere.obj");
+        Camera c;
+        c.frame(sphere.box, double(kWidth) / kHeight); // front view: the eye on +z
+        GlRenderer r;
+        r.set_mesh(sphere.mesh, sphere.draw_data);
+        const Visibility v = r.visibility(c, ViewRect::whole(kWidth, kHeight));
+        REQUIRE(v.vertices.size() == static_cast<size_t>(sphere.mesh.vertex_count()));
+        REQUIRE(v.projected.size() == v.vertices.size());
+        // Seen from distance d, a unit sphere's silhouette is the circle z = 1 / d: the eye
+        // sees less than the front half.
+        const double silhouette = 1 / c.distance;
+        int near_shown = 0, near = 0, far_shown = 0, far = 0;
+        for (size_t i = 0; i < v.vertices.size(); ++i)
+        {
+            const double z = sphere.mesh.positions[3 * i + 2];
+            if (z > silhouette + 0.1)
+            {
+                ++near;
+                near_shown += v.vertices[i];
+            }
+            if (z < silhouette - 0.1)
+            {
+                ++far;
+                far_shown += v.vertices[i];
+            }
+        }
+        CHECK(far > 200);
+        CHECK(near > 100);
+        CHECK(near_shown == near);
+        CHECK(far_shown == 0);
+        // Faces: those facing the eye are in the ID buffer, those facing away are not.
+        int facing_shown = 0, facing = 0, away_shown = 0;
+        for (Index f = 0; f < sphere.mesh.face_count(); ++f)
+        {
+            double z = 0;
+            for (const Index i : sphere.mesh.face(f))
+                z += sphere.mesh.positions[3 * static_cast<size_t>(i) + 2] / 3;
+            if (z > silhouette + 0.1)
+            {
+                ++facing;
+                facing_shown += v.faces[static_cast<size_t>(f)];
+            }
+            if (z < silhouette - 0.1)
+                away_shown += v.faces[static_cast<size_t>(f)];
+        }
+        CHECK(facing_shown == facing);
+        CHECK(away_shown == 0);
+    }
+
+    TEST_CASE("visibility: a vertex hidden behind a nearer face is not shown")
+    {
+        test::offscreen_context(kWidth, kHeight);
+        // A big quad at z = 1 in front of a small one at z = 0 (the eye on +z).
+        const Document d = make_document(test::make_mesh({{-2, -2, 1},
+                                                          {2, -2, 1},
+                                                          {2, 2, 1},
+                                                          {-2, 2, 1},
+                                                          {-0.5, -0.5, 0},
+                                                          {0.5, -0.5, 0},
+                                                          {0.5, 0.5, 0},
+                                                          {-0.5, 0.5, 0}},
+                                                         {{0, 1, 2, 3}, {4, 5, 6, 7}}),
+                                         "layers.obj");
+        Camera c;
+        c.frame(d.box, double(kWidth) / kHeight);
+        GlRenderer r;
+        r.set_mesh(d.mesh, d.draw_data);
+        const Visibility v = r.visibility(c, ViewRect::whole(kWidth, kHeight));
+        CHECK(std::count(v.vertices.begin(), v.vertices.begin() + 4, 1) == 4);
+        CHECK(std::count(v.vertices.begin() + 4, v.vertices.end(), 1) == 0);
+        CHECK(v.faces == std::vector<char>{1, 0});
     }
 
     TEST_CASE("updating positions re-uploads without reallocating, and the picture follows")
