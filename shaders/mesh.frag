@@ -12,17 +12,14 @@ uniform bool u_back_tint;
 uniform bool u_orthographic;
 uniform usamplerBuffer u_triangle_face;
 uniform samplerBuffer u_face_area;
+uniform usamplerBuffer u_face_selected;
 
 out vec4 frag_color;
 
 void main()
 {
-    vec3 n = v_normal_view;
-    if (u_flat)
-    {
-        int f = int(texelFetch(u_triangle_face, gl_PrimitiveID).r);
-        n = mat3(u_view) * texelFetch(u_face_area, f).xyz;
-    }
+    int f = int(texelFetch(u_triangle_face, gl_PrimitiveID).r);
+    vec3 n = u_flat ? mat3(u_view) * texelFetch(u_face_area, f).xyz : v_normal_view;
     float len = length(n);
     n = len > 0.0 ? n / len : vec3(0.0, 0.0, 1.0);
     vec3 to_eye = u_orthographic ? vec3(0.0, 0.0, 1.0) : normalize(-v_position_view);
@@ -31,6 +28,8 @@ void main()
     vec3 base = v_color;
     if (!gl_FrontFacing && u_back_tint)
         base = mix(base, vec3(0.22, 0.36, 0.80), 0.65);
+    if (texelFetch(u_face_selected, f).r != 0u)
+        base = mix(base, vec3(1.0, 0.50, 0.08), 0.60); // a selected face
     float diffuse = max(dot(n, to_eye), 0.0);
     float specular = pow(diffuse, 48.0);
     frag_color = vec4(base * (0.20 + 0.80 * diffuse) + vec3(0.16) * specular, 1.0);

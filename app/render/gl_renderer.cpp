@@ -55,7 +55,7 @@ struct GlRenderer::Gl
     gl::Program surface{"mesh",
                         false,
                         {"u_view", "u_projection", "u_flat", "u_back_tint", "u_orthographic",
-                         "u_triangle_face", "u_face_area"}};
+                         "u_triangle_face", "u_face_area", "u_face_selected"}};
     gl::Program lines{
         "lines",
         true,
@@ -70,6 +70,9 @@ struct GlRenderer::Gl
     GLuint edges = 0, boundary = 0, singular = 0;
     GLuint triangle_face = 0, face_area = 0; // buffers behind the textures
     GLuint triangle_face_texture = 0, face_area_texture = 0;
+    GLuint face_selected = 0, face_selected_texture = 0; // one byte per face
+    GLuint selected_points = 0;                          // indices of the selected vertices
+    GLsizei selected_point_count = 0;
     GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
     int pick_width = 0, pick_height = 0;
 
@@ -81,8 +84,11 @@ struct GlRenderer::Gl
                              &boundary,  &singular, &triangle_face, &face_area};
         for (GLuint* b : buffers)
             glGenBuffers(1, b);
+        glGenBuffers(1, &face_selected);
+        glGenBuffers(1, &selected_points);
         glGenTextures(1, &triangle_face_texture);
         glGenTextures(1, &face_area_texture);
+        glGenTextures(1, &face_selected_texture);
         glBindVertexArray(surface_vao);
         glBindBuffer(GL_ARRAY_BUFFER, positions);
         glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -99,13 +105,16 @@ struct GlRenderer::Gl
         glEnableVertexAttribArray(kPosition);
         glBindVertexArray(0);
         // A buffer name exists only once bound; the textures need existing buffers.
-        for (GLuint b : {triangle_face, face_area, edges, boundary, singular})
+        for (GLuint b :
+             {triangle_face, face_area, face_selected, edges, boundary, singular, selected_points})
             glBindBuffer(GL_TEXTURE_BUFFER, b);
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
         glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, triangle_face);
         glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, face_area);
+        glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, face_selected);
         glBindTexture(GL_TEXTURE_BUFFER, 0);
     }
 
@@ -116,8 +125,11 @@ struct GlRenderer::Gl
         const GLuint buffers[] = {positions, normals,  colors,        triangles, edges,
                                   boundary,  singular, triangle_face, face_area};
         glDeleteBuffers(9, buffers);
+        glDeleteBuffers(1, &face_selected);
+        glDeleteBuffers(1, &selected_points);
         glDeleteTextures(1, &triangle_face_texture);
         glDeleteTextures(1, &face_area_texture);
+        glDeleteTextures(1, &face_selected_texture);
         glDeleteFramebuffers(1, &pick_framebuffer);
         glDeleteRenderbuffers(1, &pick_ids);
         glDeleteRenderbuffers(1, &pick_depth);
@@ -129,6 +141,8 @@ struct GlRenderer::Gl
         glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
         glActiveTexture(GL_TEXTURE1);
         glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
+        glActiveTexture(GL_TEXTURE2);
+        glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
         glActiveTexture(GL_TEXTURE0);
     }
 
@@ -177,6 +191,9 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     upload(GL_ARRAY_BUFFER, gl_->normals, normals_);
     upload(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_);
     upload(GL_TEXTURE_BUFFER, gl_->triangle_face, data_.triangle_face);
+    upload(GL_TEXTURE_BUFFER, gl_->face_selected,
+           std::vector<std::uint8_t>(static_cast<size_t>(data_.face_count), 0));
+    gl_->selected_point_count = 0;
     upload(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data_.edges);
     upload(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data_.boundary_edges);
     upload(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data_.singular_edges);
@@ -220,6 +237,28 @@ void GlRenderer::set_vertex_colors(std::span<const float> rgb)
     check("set_vertex_colors");
 }
 
+void GlRenderer::set_selection(std::span<const char> vertices, std::span<const char> faces)
+{
+    if (vertices.size() != data_.vertex_count || faces.size() != data_.face_count)
+        throw RenderError("GlRenderer::set_selection: " + std::to_string(vertices.size()) +
+                          " vertex and " + std::to_string(faces.size()) +
+                          " face flags for a mesh of " + std::to_string(data_.vertex_count) +
+                          " and " + std::to_string(data_.face_count));
+    // The face flags go into their buffer in place; the selected vertices' list is rebuilt
+    // (its length changes with the selection, which changes far less often than frames).
+    glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_selected);
+    glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(faces.size()), faces.data());
+    std::vector<std::uint32_t> selected;
+    for (size_t i = 0; i < vertices.size(); ++i)
+        if (vertices[i])
+            selected.push_back(static_cast<std::uint32_t>(i));
+    glBindVertexArray(gl_->lines_vao);
+    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points, selected);
+    glBindVertexArray(0);
+    gl_->selected_point_count = static_cast<GLsizei>(selected.size());
+    check("set_selection");
+}
+
 void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewRect& rect)
 {
     const int width = std::max(rect.width, 1), height = std::max(rect.height, 1);
@@ -245,6 +284,7 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     glUniform1i(gl_->surface["u_orthographic"], camera.projection == Projection::Orthographic);
     glUniform1i(gl_->surface["u_triangle_face"], 0);
     glUniform1i(gl_->surface["u_face_area"], 1);
+    glUniform1i(gl_->surface["u_face_selected"], 2);
     gl_->bind_face_textures();
     glBindVertexArray(gl_->surface_vao);
     if (o.vertex_colors && has_colors_)
@@ -292,6 +332,18 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         glUniform1f(gl_->points["u_depth_bias"], 4e-5f);
         glUniform4f(gl_->points["u_color"], 0.10f, 0.20f, 0.55f, 1.0f);
         glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(data_.vertex_count));
+    }
+    if (gl_->selected_point_count > 0)
+    {
+        // Selected vertices: larger orange dots over everything else drawn on the surface.
+        gl_->points.use();
+        set_matrices(gl_->points, view, projection);
+        glUniform2f(gl_->points["u_viewport_px"], float(width), float(height));
+        glUniform1f(gl_->points["u_size_px"], o.point_size_px + 3);
+        glUniform1f(gl_->points["u_depth_bias"], 6e-5f);
+        glUniform4f(gl_->points["u_color"], 1.0f, 0.62f, 0.10f, 1.0f);
+        glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points);
+        glDrawElements(GL_POINTS, gl_->selected_point_count, GL_UNSIGNED_INT, nullptr);
     }
     glBindVertexArray(0);
     glUseProgram(0);

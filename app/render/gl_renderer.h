@@ -26,6 +26,7 @@ public:
     void set_mesh(const Mesh& mesh, const MeshDrawData& data) override;
     void update_positions(std::span<const Scalar> positions) override;
     void set_vertex_colors(std::span<const float> rgb) override;
+    void set_selection(std::span<const char> vertices, std::span<const char> faces) override;
     void draw(const Camera& camera, const DisplayOptions& options, const ViewRect& view) override;
     Image read_pixels(int width, int height) override;
     PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) override;

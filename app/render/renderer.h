@@ -89,6 +89,9 @@ public:
     virtual void update_positions(std::span<const Scalar> positions) = 0;
     //! RGB in [0, 1], 3 #V floats; empty clears the overlay.
     virtual void set_vertex_colors(std::span<const float> rgb) = 0;
+    //! \brief Shows a selection: selected faces tinted orange, selected vertices as orange
+    //! dots; one flag per vertex and per face (all 0 hides it).
+    virtual void set_selection(std::span<const char> vertices, std::span<const char> faces) = 0;
     //! Clears the current framebuffer and draws the mesh into the view's rectangle.
     virtual void draw(const Camera& camera, const DisplayOptions& options,
                       const ViewRect& view) = 0;

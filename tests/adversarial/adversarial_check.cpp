@@ -509,6 +509,24 @@ int main(int argc, char** argv)
                 fs::remove(path);
             }
             // Process start-up is in both times, so a linear reader shows a ratio under 4.
+            // A ratio over 8 is timed twice more, each size keeping its fastest run: one
+            // slow run on a loaded machine is the scheduler's, a superlinear reader is
+            // slow every time.
+            for (int retry = 0; retry < 2 && seconds[1] > 8 * seconds[0] && seconds[1] > 0.05;
+                 ++retry)
+                for (int k = 0; k < 2; ++k)
+                {
+                    const fs::path path = scratch / shape.name;
+                    {
+                        std::ofstream file(path, std::ios::binary);
+                        const std::string data = shape.make((k == 0 ? 1 : 4) * kMiB);
+                        file.write(data.data(), static_cast<std::streamsize>(data.size()));
+                    }
+                    Run r;
+                    seconds[k] = std::min(
+                        seconds[k], seconds_of({cli, "info", path.string()}, scratch, scratch, &r));
+                    fs::remove(path);
+                }
             if (seconds[1] > 8 * seconds[0] && seconds[1] > 0.05)
                 fail(shape.name, "time grows faster than linearly: 1 MiB in " +
                                      std::to_string(seconds[0]) + " s, 4 MiB in " +

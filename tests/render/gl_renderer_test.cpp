@@ -208,5 +208,7 @@ TEST_SUITE("GlRenderer")
         CHECK_THROWS_AS(r.update_positions(short_positions), RenderError);
         const std::vector<float> colors(7, 0.5f);
         CHECK_THROWS_AS(r.set_vertex_colors(colors), RenderError);
+        const std::vector<char> flags(3, 1);
+        CHECK_THROWS_AS(r.set_selection(flags, flags), RenderError);
     }
 }

@@ -125,6 +125,25 @@ TEST_SUITE("Golden images")
                                                          1280, 800, {.ui = true, .help = true}));
     }
 
+    TEST_CASE("a selection: faces tinted, vertices as dots")
+    {
+        const Document grid = warped_grid(); // 12 x 8 quads, 13 x 9 vertices
+        std::vector<char> faces(static_cast<size_t>(grid.mesh.face_count()), 0);
+        std::vector<char> vertices(static_cast<size_t>(grid.mesh.vertex_count()), 0);
+        for (int y = 2; y < 5; ++y)
+            for (int x = 3; x < 7; ++x)
+                faces[static_cast<size_t>(y * 12 + x)] = 1;
+        for (int x = 0; x < 13; ++x)
+            vertices[static_cast<size_t>(7 * 13 + x)] = 1; // the row y = 7
+        DisplayOptions o;
+        o.wireframe = true;
+        Camera c = framed(grid, 560, 420); // from the front, tilted a little
+        c.orbit(OrbitStyle::Turntable, 0, 0, -0.1 * 420, -0.1 * 420, 560, 420);
+        test::check_golden("selection_overlay", test::render_frame(grid, c, o, 560, 420,
+                                                                   {.selected_vertices = vertices,
+                                                                    .selected_faces = faces}));
+    }
+
     TEST_CASE("the per-vertex colour overlay, here the height of an open grid")
     {
         const Document grid = warped_grid();

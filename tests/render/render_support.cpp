@@ -36,6 +36,8 @@ app::Image render_frame(const app::Document& document, const app::Camera& camera
     renderer.set_mesh(document.mesh, document.draw_data);
     if (!extras.vertex_colors.empty())
         renderer.set_vertex_colors(extras.vertex_colors);
+    if (!extras.selected_vertices.empty())
+        renderer.set_selection(extras.selected_vertices, extras.selected_faces);
     if (!extras.ui)
     {
         renderer.draw(camera, display, app::ViewRect::whole(width, height));

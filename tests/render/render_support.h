@@ -28,6 +28,8 @@ struct FrameExtras
     bool ui = false;                    //!< the editor's panels (the camera refitted to its view)
     bool help = false;                  //!< with the help overlay open
     std::vector<float> vertex_colors{}; //!< the colour overlay, 3 #V
+    std::vector<char> selected_vertices{}; //!< #V flags (empty: no selection shown)
+    std::vector<char> selected_faces{};    //!< #F flags
 };
 
 //! One frame of `document`.
