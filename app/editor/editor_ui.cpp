@@ -9,7 +9,7 @@
 
 #include <imgui.h>
 
-#include "app/editor/imgui_layer.h"
+#include "app/editor/interface_context.h"
 #include "core/io/io.h"
 
 namespace meshfair::app {
@@ -378,8 +378,8 @@ ViewRect EditorUi::view_rect(int width, int height, const EditorState& state)
         width, height, 0, top, std::max(width - right, 16), std::max(height - top - bottom, 16)};
 }
 
-void EditorUi::prepare_offscreen(ImGuiLayer& layer, const Document& document, EditorState& state,
-                                 const Camera& camera, int width, int height)
+void EditorUi::prepare_offscreen(InterfaceContext& layer, const Document& document,
+                                 EditorState& state, const Camera& camera, int width, int height)
 {
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(width), float(height));

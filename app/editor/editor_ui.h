@@ -14,7 +14,7 @@
 
 namespace meshfair::app {
 
-class ImGuiLayer;
+class InterfaceContext;
 
 //! The interaction state the editor owns (the document holds the data).
 struct EditorState
@@ -66,7 +66,7 @@ public:
     //! \brief Lays out the interface for a `width` x `height` frame without a window (the
     //! offscreen screenshot's --ui): afterwards view_rect is known and layer.draw() draws
     //! the panels over the scene.
-    void prepare_offscreen(ImGuiLayer& layer, const Document& document, EditorState& state,
+    void prepare_offscreen(InterfaceContext& layer, const Document& document, EditorState& state,
                            const Camera& camera, int width, int height);
 
     //! \brief The part of a `width` x `height` framebuffer the 3D view gets: all of it but

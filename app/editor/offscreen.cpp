@@ -6,7 +6,7 @@
 
 #include "app/editor/document.h"
 #include "app/editor/editor_ui.h"
-#include "app/editor/imgui_layer.h"
+#include "app/editor/interface_context.h"
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
@@ -25,11 +25,11 @@ void render_screenshot(const ScreenshotRequest& request)
     GlRenderer renderer;
     renderer.set_mesh(document.mesh, document.draw_data);
     ViewRect rect = ViewRect::whole(request.width, request.height);
-    std::unique_ptr<ImGuiLayer> layer;
+    std::unique_ptr<InterfaceContext> layer;
     if (request.ui)
     {
         // The panels first: they decide the rectangle left to the view.
-        layer = std::make_unique<ImGuiLayer>();
+        layer = std::make_unique<InterfaceContext>();
         EditorUi ui;
         EditorState state;
         state.display = request.display;

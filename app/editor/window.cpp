@@ -16,7 +16,7 @@
 
 #include "app/editor/document.h"
 #include "app/editor/editor_ui.h"
-#include "app/editor/imgui_layer.h"
+#include "app/editor/interface_context.h"
 #include "app/editor/navigation.h"
 #include "app/render/gl_loader.h"
 #include "app/render/gl_renderer.h"
@@ -341,7 +341,7 @@ void run_window(const WindowOptions& options)
     glfwSetDropCallback(window, on_drop);
     glfwSetWindowCloseCallback(window, on_close);
 
-    ImGuiLayer layer;
+    InterfaceContext layer;
     // Installed after MeshFair's callbacks, ImGui's chain to them.
     ImGui_ImplGlfw_InitForOpenGL(window, true);
     struct Shutdown

@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "app/editor/editor_ui.h"
-#include "app/editor/imgui_layer.h"
+#include "app/editor/interface_context.h"
 #include "app/render/osmesa_context.h"
 
 namespace meshfair::test {
@@ -43,7 +43,7 @@ app::Image render_frame(const app::Document& document, const app::Camera& camera
         renderer.draw(camera, display, app::ViewRect::whole(width, height));
         return renderer.read_pixels(width, height);
     }
-    app::ImGuiLayer layer;
+    app::InterfaceContext layer;
     app::EditorUi editor;
     app::EditorState state;
     state.display = display;

@@ -8,13 +8,13 @@ namespace meshfair::app {
 //! No imgui.ini is read or written (the layout is fixed, and screenshots must not depend on
 //! a file in the working directory).
 //! \pre an OpenGL 3.3 context is current and the GL table loaded.
-class ImGuiLayer
+class InterfaceContext
 {
 public:
-    ImGuiLayer();
-    ~ImGuiLayer();
-    ImGuiLayer(const ImGuiLayer&) = delete;
-    ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+    InterfaceContext();
+    ~InterfaceContext();
+    InterfaceContext(const InterfaceContext&) = delete;
+    InterfaceContext& operator=(const InterfaceContext&) = delete;
 
     //! Starts a frame (after the platform backend's NewFrame, or io set by hand).
     void new_frame();

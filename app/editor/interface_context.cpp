@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-#include "app/editor/imgui_layer.h"
+#include "app/editor/interface_context.h"
 
 #include <imgui.h>
 
@@ -10,7 +10,7 @@
 
 namespace meshfair::app {
 
-ImGuiLayer::ImGuiLayer()
+InterfaceContext::InterfaceContext()
 {
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -25,24 +25,24 @@ ImGuiLayer::ImGuiLayer()
     }
 }
 
-ImGuiLayer::~ImGuiLayer()
+InterfaceContext::~InterfaceContext()
 {
     ImGui_ImplOpenGL3_Shutdown();
     ImGui::DestroyContext();
 }
 
-void ImGuiLayer::new_frame()
+void InterfaceContext::new_frame()
 {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
 }
 
-void ImGuiLayer::end_frame()
+void InterfaceContext::end_frame()
 {
     ImGui::Render();
 }
 
-void ImGuiLayer::draw()
+void InterfaceContext::draw()
 {
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 }
