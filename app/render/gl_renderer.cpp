@@ -34,9 +34,11 @@ enum Attribute : GLuint
     kColor = 2
 };
 
+// Every buffer allocation goes through here, and is counted.
 template <class T>
-void upload(GLenum target, GLuint buffer, const std::vector<T>& data)
+void upload(GLenum target, GLuint buffer, std::span<const T> data, int& allocations)
 {
+    ++allocations;
     glBindBuffer(target, buffer);
     glBufferData(target, static_cast<GLsizeiptr>(data.size() * sizeof(T)),
                  data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
@@ -183,25 +185,34 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     connectivity_.positions.clear();
     connectivity_.face_offsets = mesh.face_offsets;
     connectivity_.face_vertices = mesh.face_vertices;
-    data_ = data;
+    // After the upload the renderer needs the counts and the faces around each vertex
+    // (for the normals), not the index lists, which live in GPU buffers.
+    vertex_count_ = data.vertex_count;
+    face_count_ = data.face_count;
+    vertex_face_offsets_ = data.vertex_face_offsets;
+    vertex_faces_ = data.vertex_faces;
+    triangle_indices_ = static_cast<GLsizei>(data.triangles.size());
+    edge_indices_ = static_cast<GLsizei>(data.edges.size());
+    boundary_indices_ = static_cast<GLsizei>(data.boundary_edges.size());
+    singular_indices_ = static_cast<GLsizei>(data.singular_edges.size());
     positions_.assign(3 * static_cast<size_t>(mesh.vertex_count()), 0.0f);
     normals_.assign(positions_.size(), 0.0f);
     face_areas_.assign(3 * static_cast<size_t>(mesh.face_count()), 0.0f);
-    upload(GL_ARRAY_BUFFER, gl_->positions, positions_);
-    upload(GL_ARRAY_BUFFER, gl_->normals, normals_);
-    upload(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_);
-    upload(GL_TEXTURE_BUFFER, gl_->triangle_face, data_.triangle_face);
-    upload(GL_TEXTURE_BUFFER, gl_->face_selected,
-           std::vector<std::uint8_t>(static_cast<size_t>(data_.face_count), 0));
+    int& n = buffer_allocations_;
+    upload<float>(GL_ARRAY_BUFFER, gl_->positions, positions_, n);
+    upload<float>(GL_ARRAY_BUFFER, gl_->normals, normals_, n);
+    upload<float>(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_, n);
+    upload<std::uint32_t>(GL_TEXTURE_BUFFER, gl_->triangle_face, data.triangle_face, n);
+    upload<std::uint8_t>(GL_TEXTURE_BUFFER, gl_->face_selected,
+                         std::vector<std::uint8_t>(static_cast<size_t>(face_count_), 0), n);
     gl_->selected_point_count = 0;
-    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data_.edges);
-    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data_.boundary_edges);
-    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data_.singular_edges);
+    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data.edges, n);
+    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data.boundary_edges, n);
+    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data.singular_edges, n);
     // The triangles' index buffer belongs to the surface's vertex array.
     glBindVertexArray(gl_->surface_vao);
-    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->triangles, data_.triangles);
+    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->triangles, data.triangles, n);
     glBindVertexArray(0);
-    ++buffer_allocations_;
     has_colors_ = false;
     update_positions(mesh.positions);
     check("set_mesh");
@@ -214,7 +225,7 @@ void GlRenderer::update_positions(std::span<const Scalar> positions)
                           " coordinates for a mesh of " + std::to_string(positions_.size()));
     positions_to_float(positions, positions_);
     face_area_vectors(positions, connectivity_, face_areas_);
-    vertex_normals(data_, face_areas_, normals_);
+    vertex_normals(vertex_face_offsets_, vertex_faces_, face_areas_, normals_);
     const auto sub = [](GLenum target, GLuint buffer, const std::vector<float>& v) {
         glBindBuffer(target, buffer);
         glBufferSubData(target, 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
@@ -231,19 +242,17 @@ void GlRenderer::set_vertex_colors(std::span<const float> rgb)
     if (has_colors_ && rgb.size() != positions_.size())
         throw RenderError("GlRenderer::set_vertex_colors: " + std::to_string(rgb.size()) +
                           " values for " + std::to_string(positions_.size() / 3) + " vertices");
-    glBindBuffer(GL_ARRAY_BUFFER, gl_->colors);
-    glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(rgb.size() * sizeof(float)),
-                 rgb.empty() ? nullptr : rgb.data(), GL_DYNAMIC_DRAW);
+    upload<float>(GL_ARRAY_BUFFER, gl_->colors, rgb, buffer_allocations_);
     check("set_vertex_colors");
 }
 
 void GlRenderer::set_selection(std::span<const char> vertices, std::span<const char> faces)
 {
-    if (vertices.size() != data_.vertex_count || faces.size() != data_.face_count)
+    if (vertices.size() != vertex_count_ || faces.size() != face_count_)
         throw RenderError("GlRenderer::set_selection: " + std::to_string(vertices.size()) +
                           " vertex and " + std::to_string(faces.size()) +
-                          " face flags for a mesh of " + std::to_string(data_.vertex_count) +
-                          " and " + std::to_string(data_.face_count));
+                          " face flags for a mesh of " + std::to_string(vertex_count_) + " and " +
+                          std::to_string(face_count_));
     // The face flags go into their buffer in place; the selected vertices' list is rebuilt
     // (its length changes with the selection, which changes far less often than frames).
     glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_selected);
@@ -253,7 +262,8 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
         if (vertices[i])
             selected.push_back(static_cast<std::uint32_t>(i));
     glBindVertexArray(gl_->lines_vao);
-    upload(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points, selected);
+    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points, selected,
+                          buffer_allocations_);
     glBindVertexArray(0);
     gl_->selected_point_count = static_cast<GLsizei>(selected.size());
     check("set_selection");
@@ -296,8 +306,7 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     }
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(data_.triangles.size()), GL_UNSIGNED_INT,
-                   nullptr);
+    glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
     glDisable(GL_POLYGON_OFFSET_FILL);
 
     glBindVertexArray(gl_->lines_vao);
@@ -315,12 +324,12 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     glUniform2f(gl_->lines["u_viewport_px"], float(width), float(height));
     glUniform1f(gl_->lines["u_depth_bias"], 2e-5f);
     if (o.wireframe)
-        draw_edges(gl_->edges, data_.edges.size(), o.edge_width_px, {0.08f, 0.08f, 0.10f, 1});
+        draw_edges(gl_->edges, edge_indices_, o.edge_width_px, {0.08f, 0.08f, 0.10f, 1});
     if (o.boundary_edges)
     {
-        draw_edges(gl_->boundary, data_.boundary_edges.size(), 2.5f * o.edge_width_px,
+        draw_edges(gl_->boundary, boundary_indices_, 2.5f * o.edge_width_px,
                    {1.0f, 0.55f, 0.05f, 1});
-        draw_edges(gl_->singular, data_.singular_edges.size(), 2.5f * o.edge_width_px,
+        draw_edges(gl_->singular, singular_indices_, 2.5f * o.edge_width_px,
                    {0.95f, 0.10f, 0.85f, 1});
     }
     if (o.vertex_points)
@@ -331,7 +340,7 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         glUniform1f(gl_->points["u_size_px"], o.point_size_px);
         glUniform1f(gl_->points["u_depth_bias"], 4e-5f);
         glUniform4f(gl_->points["u_color"], 0.10f, 0.20f, 0.55f, 1.0f);
-        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(data_.vertex_count));
+        glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(vertex_count_));
     }
     if (gl_->selected_point_count > 0)
     {
@@ -382,8 +391,7 @@ void GlRenderer::render_ids(const Camera& camera, int width, int height)
     glUniform2f(gl_->ids["u_viewport_px"], float(width), float(height));
     gl_->bind_face_textures();
     glBindVertexArray(gl_->surface_vao);
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(data_.triangles.size()), GL_UNSIGNED_INT,
-                   nullptr);
+    glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
     glUseProgram(0);
 }
@@ -429,13 +437,13 @@ Visibility GlRenderer::visibility(const Camera& camera, const ViewRect& rect)
     check("visibility");
 
     Visibility v;
-    v.faces.assign(data_.face_count, 0);
+    v.faces.assign(face_count_, 0);
     for (size_t p = 0; p < pixels; ++p)
         if (ids[2 * p] != 0)
             v.faces[ids[2 * p] - 1] = 1;
     v.projected = project_points(camera, positions_, width, height);
-    v.vertices.assign(data_.vertex_count, 0);
-    parallel_for(static_cast<Index>(data_.vertex_count), [&](Index i) {
+    v.vertices.assign(vertex_count_, 0);
+    parallel_for(static_cast<Index>(vertex_count_), [&](Index i) {
         const ScreenPoint& s = v.projected[static_cast<size_t>(i)];
         if (!(s.depth >= 0 && s.depth <= 1 && s.x >= 0 && s.y >= 0 && s.x < width && s.y < height))
             return;

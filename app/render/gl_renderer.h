@@ -32,8 +32,8 @@ public:
     PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) override;
     Visibility visibility(const Camera& camera, const ViewRect& view) override;
 
-    //! How many times set_mesh and update_positions uploaded buffers (for tests: an update
-    //! must not reallocate).
+    //! How many GPU buffers were (re)allocated, counted at the one place that allocates them
+    //! (for tests: updating positions must not).
     int buffer_allocations() const { return buffer_allocations_; }
 
 private:
@@ -42,7 +42,9 @@ private:
     void render_ids(const Camera& camera, int width, int height);
     std::unique_ptr<Gl> gl_;
     Mesh connectivity_; // the faces of the mesh set last (positions not kept)
-    MeshDrawData data_;
+    std::uint32_t vertex_count_ = 0, face_count_ = 0;
+    std::vector<Index> vertex_face_offsets_, vertex_faces_; // the faces around each vertex
+    int triangle_indices_ = 0, edge_indices_ = 0, boundary_indices_ = 0, singular_indices_ = 0;
     std::vector<float> positions_, normals_, face_areas_; // staging, sized by set_mesh
     bool has_colors_ = false;
     int buffer_allocations_ = 0;

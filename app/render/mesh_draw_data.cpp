@@ -63,13 +63,15 @@ void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<fl
     });
 }
 
-void vertex_normals(const MeshDrawData& d, std::span<const float> areas, std::span<float> out)
+void vertex_normals(std::span<const Index> offsets, std::span<const Index> faces,
+                    std::span<const float> areas, std::span<float> out)
 {
-    parallel_for(static_cast<Index>(d.vertex_count), [&](Index i) {
+    const auto n_vertices = static_cast<Index>(offsets.empty() ? 0 : offsets.size() - 1);
+    parallel_for(n_vertices, [&](Index i) {
         float n[3] = {0, 0, 0};
-        for (Index k = d.vertex_face_offsets[i]; k < d.vertex_face_offsets[i + 1]; ++k)
+        for (Index k = offsets[i]; k < offsets[i + 1]; ++k)
             for (int a = 0; a < 3; ++a)
-                n[a] += areas[3 * static_cast<size_t>(d.vertex_faces[k]) + a];
+                n[a] += areas[3 * static_cast<size_t>(faces[k]) + a];
         const float len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
         const float s = len > 0 ? 1 / len : 0;
         for (int a = 0; a < 3; ++a)

@@ -43,8 +43,14 @@ void face_area_vectors(std::span<const Scalar> positions, const Mesh& mesh, std:
 //! \brief Unit vertex normals, 3 #V: the normalized sum of the area vectors of the faces
 //! around each vertex (area-weighted), (0, 0, 0) where that sum vanishes (isolated or
 //! degenerate). Each vertex gathers its own sum, so any thread count gives the same bits.
-void vertex_normals(const MeshDrawData& data, std::span<const float> face_areas,
-                    std::span<float> out);
+void vertex_normals(std::span<const Index> vertex_face_offsets, std::span<const Index> vertex_faces,
+                    std::span<const float> face_areas, std::span<float> out);
+//! The same, from the draw data's faces around each vertex.
+inline void vertex_normals(const MeshDrawData& data, std::span<const float> face_areas,
+                           std::span<float> out)
+{
+    vertex_normals(data.vertex_face_offsets, data.vertex_faces, face_areas, out);
+}
 
 //! Positions as floats for the GPU, converted on the threads.
 void positions_to_float(std::span<const Scalar> positions, std::span<float> out);
