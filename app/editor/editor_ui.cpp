@@ -22,7 +22,6 @@ constexpr KeyBinding kBindings[] = {
     {"Right drag, Shift + middle drag", "pan"},
     {"Wheel", "zoom to the cursor"},
     {"Ctrl + middle drag", "zoom (drag up: closer)"},
-    {"Double-click", "centre the view on the surface point under the cursor"},
     {"Home, numpad .", "frame all"},
     {"F", "frame the selection (all when nothing is selected)"},
     {"Numpad 1 / 3 / 7 (or 1 / 3 / 7)", "front / right / top view"},

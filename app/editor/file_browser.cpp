@@ -59,6 +59,7 @@ void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file
     directory_ = fs::absolute(directory_, ec);
     file_name_ = file_name;
     error_.clear();
+    listed_.clear(); // read the folder afresh each time the dialog opens
     open_ = true;
     just_opened_ = true;
 }
@@ -82,7 +83,13 @@ std::optional<std::string> FileBrowser::draw()
     ImGui::SameLine();
     ImGui::TextUnformatted(directory_.string().c_str());
     ImGui::BeginChild("entries", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 2), true);
-    for (const fs::directory_entry& entry : listing(directory_))
+    // Listed once per directory, not once per frame.
+    if (listed_ != directory_)
+    {
+        entries_ = listing(directory_);
+        listed_ = directory_;
+    }
+    for (const fs::directory_entry& entry : entries_)
     {
         const bool folder = entry.is_directory();
         const std::string label =

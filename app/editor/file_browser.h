@@ -35,6 +35,8 @@ private:
     bool open_ = false;
     bool just_opened_ = false;
     std::filesystem::path directory_;
+    std::filesystem::path listed_; // the directory `entries_` lists
+    std::vector<std::filesystem::directory_entry> entries_;
     std::string file_name_;
     std::string error_;
 };

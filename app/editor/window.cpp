@@ -3,6 +3,7 @@
 #include "app/editor/window.h"
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -242,13 +243,6 @@ void on_mouse_button(GLFWwindow* window, int button, int action, int mods)
     e.navigator.press(
         b, {bool(mods & GLFW_MOD_SHIFT), bool(mods & GLFW_MOD_CONTROL), bool(mods & GLFW_MOD_ALT)},
         x, y);
-    if (b == MouseButton::Left && ImGui::IsMouseDoubleClicked(0))
-    {
-        // Centre the view on the surface point under the cursor (MeshLab's double click).
-        const PickResult p = e.renderer->pick(e.camera, e.view, int(x), int(y));
-        if (p.hit)
-            e.camera.target = p.point;
-    }
 }
 
 void on_cursor(GLFWwindow* window, double /*x*/, double /*y*/)
@@ -356,11 +350,12 @@ void run_window(const WindowOptions& options)
     using Clock = std::chrono::steady_clock;
     while (!glfwWindowShouldClose(window))
     {
-        const auto start = Clock::now();
         // Nothing animates yet: sleep until an event, but redraw at least twice a second.
-        if (!first)
+        if (first)
+            glfwPollEvents();
+        else
             glfwWaitEventsTimeout(0.5);
-        glfwPollEvents();
+        const auto start = Clock::now(); // the frame's time, not the wait's
         Editor& e = *editor;
         ImGui_ImplGlfw_NewFrame();
         layer.new_frame();
