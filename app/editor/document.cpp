@@ -18,7 +18,8 @@ Document make_document(Mesh mesh, std::string path)
     Document d;
     d.path = std::move(path);
     d.mesh = std::move(mesh);
-    d.topology = build_topology(d.mesh, TopologyParts::Edges | TopologyParts::Corners);
+    d.topology = build_topology(
+        d.mesh, TopologyParts::Neighbors | TopologyParts::Edges | TopologyParts::Corners);
     d.draw_data = mesh_draw_data(d.mesh, d.topology);
     d.box = bounding_box(d.mesh.positions);
     d.selected_vertices.assign(static_cast<size_t>(d.mesh.vertex_count()), 0);

@@ -3,6 +3,7 @@
 #include "app/editor/editor_ui.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,7 +18,20 @@ namespace meshfair::app {
 namespace {
 
 constexpr KeyBinding kBindings[] = {
-    {"Left drag", "orbit (turntable or trackball, see T)"},
+    {"Left drag", "the active tool; with Navigate, orbit (turntable or trackball, see T)"},
+    {"Alt + left drag", "orbit, whatever the tool"},
+    {"Shift + tool", "add to the selection"},
+    {"Ctrl + tool", "take away from the selection"},
+    {"N / K / C / R / L", "tool: navigate / click / brush / rectangle / lasso"},
+    {"V", "select vertices / faces"},
+    {"[ / ]", "brush radius smaller / larger"},
+    {"Ctrl + A, Alt + A", "select all, select none"},
+    {"Ctrl + I", "invert the selection"},
+    {"Ctrl + = / Ctrl + -", "grow / shrink the selection by a ring"},
+    {"Ctrl + L", "select the connected components of the selection"},
+    {"Ctrl + B", "select the boundary"},
+    {"Ctrl + Z", "undo"},
+    {"Ctrl + Shift + Z, Ctrl + Y", "redo"},
     {"Middle drag", "orbit"},
     {"Right drag, Shift + middle drag", "pan"},
     {"Wheel", "zoom to the cursor"},
@@ -41,6 +55,121 @@ constexpr KeyBinding kBindings[] = {
 };
 
 constexpr float kSidePanelWidth = 300;
+
+struct CommandItem
+{
+    SelectionCommand command;
+    const char* label;
+    const char* keys;
+};
+constexpr CommandItem kCommandItems[] = {
+    {SelectionCommand::All, "All", "Ctrl+A"},
+    {SelectionCommand::Clear, "None", "Alt+A"},
+    {SelectionCommand::Invert, "Invert", "Ctrl+I"},
+    {SelectionCommand::Grow, "Grow", "Ctrl+="},
+    {SelectionCommand::Shrink, "Shrink", "Ctrl+-"},
+    {SelectionCommand::Connected, "Connected", "Ctrl+L"},
+    {SelectionCommand::Boundary, "Boundary", "Ctrl+B"},
+};
+
+struct ToolItem
+{
+    ToolKind tool;
+    const char* label;
+};
+constexpr ToolItem kToolItems[] = {{ToolKind::Navigate, "navigate (N)"},
+                                   {ToolKind::Click, "click (K)"},
+                                   {ToolKind::Brush, "brush (C)"},
+                                   {ToolKind::Rectangle, "rectangle (R)"},
+                                   {ToolKind::Lasso, "lasso (L)"}};
+
+std::string megabytes(std::size_t bytes)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / double(1 << 20));
+    return text;
+}
+
+void select_section(EditorState& state, UiRequests& r)
+{
+    if (!ImGui::CollapsingHeader("Select", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    int tool = static_cast<int>(state.tool);
+    for (size_t k = 0; k < std::size(kToolItems); ++k)
+    {
+        if (k % 2 == 1)
+            ImGui::SameLine(150);
+        if (ImGui::RadioButton(kToolItems[k].label, &tool, static_cast<int>(kToolItems[k].tool)))
+            r.tool = kToolItems[k].tool;
+    }
+    int elements = state.tools.elements == ElementKind::Vertices ? 0 : 1;
+    if (ImGui::RadioButton("vertices", &elements, 0))
+        r.elements = ElementKind::Vertices;
+    ImGui::SameLine(150);
+    if (ImGui::RadioButton("faces (V)", &elements, 1))
+        r.elements = ElementKind::Faces;
+    ImGui::Checkbox("through the surface", &state.tools.through);
+    float radius = static_cast<float>(state.tools.brush_radius_px);
+    if (ImGui::SliderFloat("brush radius", &radius, 2.0f, 200.0f, "%.0f px"))
+        state.tools.brush_radius_px = radius;
+    ImGui::Text("selected: %s vertices, %s faces",
+                with_separators(static_cast<std::int64_t>(state.selected_vertices)).c_str(),
+                with_separators(static_cast<std::int64_t>(state.selected_faces)).c_str());
+    int column = 0;
+    for (const auto& [command, label, keys] : kCommandItems)
+    {
+        if (column++ % 4 != 0)
+            ImGui::SameLine();
+        if (ImGui::Button(label))
+            r.command = command;
+    }
+    const HistoryStatus& h = state.history;
+    ImGui::Text("history: %zu step%s, %s of %s", h.undo_count, h.undo_count == 1 ? "" : "s",
+                megabytes(h.bytes).c_str(), megabytes(h.limit).c_str());
+    if (h.dropped > 0)
+        ImGui::Text("(%zu oldest steps dropped to stay within it)", h.dropped);
+}
+
+// The active tool's ring, rectangle or lasso line, under the panels.
+void tool_overlay(const EditorState& state)
+{
+    const ToolOverlay& o = state.overlay;
+    if (o.shape == ToolOverlay::Shape::None || o.points.empty())
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+    const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+    auto at = [&](const ScreenPoint& p) { return ImVec2(float(p.x) / sx, float(p.y) / sy); };
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ImU32 color = IM_COL32(255, 160, 40, 230);
+    switch (o.shape)
+    {
+        case ToolOverlay::Shape::Circle:
+            draw->AddCircle(at(o.points[0]), float(o.radius) / sx, color, 48, 1.5f);
+            break;
+        case ToolOverlay::Shape::Rectangle:
+            if (o.points.size() == 2)
+            {
+                const ImVec2 a = at(o.points[0]), b = at(o.points[1]);
+                draw->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
+                                    ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                                    IM_COL32(255, 160, 40, 40));
+                draw->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
+                              ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)), color, 0, 0, 1.5f);
+            }
+            break;
+        case ToolOverlay::Shape::Polyline:
+        {
+            std::vector<ImVec2> line;
+            for (const ScreenPoint& p : o.points)
+                line.push_back(at(p));
+            draw->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, 1.5f);
+            break;
+        }
+        case ToolOverlay::Shape::None:
+            break;
+    }
+}
 
 const char* view_name(StandardView v)
 {
@@ -85,6 +214,23 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
         ImGui::Separator();
         if (ImGui::MenuItem("Quit", "Ctrl+Q"))
             ui.ask_to_quit(document, r);
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Edit"))
+    {
+        const HistoryStatus& h = state.history;
+        const std::string undo = "Undo " + h.undo_label, redo = "Redo " + h.redo_label;
+        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.undo_count > 0))
+            r.undo = true;
+        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.redo_count > 0))
+            r.redo = true;
+        ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Select"))
+    {
+        for (const auto& [command, label, keys] : kCommandItems)
+            if (ImGui::MenuItem(label, keys))
+                r.command = command;
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View"))
@@ -137,6 +283,7 @@ void side_panel(const Document& document, EditorState& state, const Camera& came
     ImGui::Begin("##side", nullptr,
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoCollapse);
+    select_section(state, r);
     if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
     {
         const Topology& t = document.topology;
@@ -329,6 +476,7 @@ UiRequests EditorUi::build(const Document& document, EditorState& state, const C
     if (state.show_side_panel)
         side_panel(document, state, camera, r);
     status_bar(document, state);
+    tool_overlay(state);
     help_overlay(state);
     if (const std::optional<std::string> chosen = browser_.draw())
     {

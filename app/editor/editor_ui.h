@@ -11,14 +11,29 @@
 #include "app/editor/file_browser.h"
 #include "app/render/camera.h"
 #include "app/render/renderer.h"
+#include "app/tools/selection_commands.h"
+#include "app/tools/selection_tool.h"
 
 namespace meshfair::app {
 
 class InterfaceContext;
 
+//! What the interface shows of the history (the Edit menu, the side panel).
+struct HistoryStatus
+{
+    std::size_t undo_count = 0, redo_count = 0;
+    std::string undo_label, redo_label;
+    std::size_t bytes = 0, limit = 0, dropped = 0;
+};
+
 //! The interaction state the editor owns (the document holds the data).
 struct EditorState
 {
+    ToolKind tool = ToolKind::Navigate;
+    ToolSettings tools;
+    ToolOverlay overlay;   //!< what the active tool draws now, in framebuffer pixels
+    HistoryStatus history; //!< refreshed by the session before each frame of the interface
+    std::size_t selected_vertices = 0, selected_faces = 0; //!< counts, refreshed likewise
     DisplayOptions display;
     OrbitStyle orbit = OrbitStyle::Turntable;
     bool show_help = false;
@@ -40,6 +55,11 @@ struct UiRequests
     bool frame_selection = false;
     bool toggle_projection = false;
     bool screenshot = false;
+    std::optional<ToolKind> tool;
+    std::optional<ElementKind> elements;
+    std::optional<SelectionCommand> command;
+    bool undo = false;
+    bool redo = false;
     bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them
 };
 

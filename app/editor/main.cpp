@@ -69,7 +69,7 @@ int main(int argc, char** argv)
     CLI::App app{"meshfair: select, constrain and smooth polygon meshes"};
     std::string mesh = MESHFAIR_DEFAULT_MESH;
     bool offscreen = false, ui = false;
-    std::string view, screenshot, save_view, size = "1280x800";
+    std::string view, screenshot, save_view, script, size = "1280x800";
     std::vector<std::string> modes;
     int threads = 0;
     app.add_option("MESH", mesh, "Mesh to open (OBJ, OFF, PLY, STL; default: the bundled bunny)");
@@ -79,6 +79,8 @@ int main(int argc, char** argv)
     app.add_option("--screenshot", screenshot,
                    "PNG to write: the offscreen frame, or where F12 writes in the window");
     app.add_option("--save-view", save_view, "Write the offscreen frame's camera as JSON");
+    app.add_option("--script", script,
+                   "Offscreen: play a scripted session (JSON, docs/editor.md) before the frame");
     app.add_option("--size", size, "Frame size WxH (default 1280x800)");
     app.add_option("--mode", modes,
                    "Display: flat|smooth, and any of wire, points, boundary, no-boundary, "
@@ -105,6 +107,11 @@ int main(int argc, char** argv)
 
     try
     {
+        if (!script.empty() && !offscreen)
+        {
+            std::cerr << "meshfair: --script needs --offscreen\n";
+            return kExitInput;
+        }
         if (!offscreen)
         {
             try
@@ -125,7 +132,7 @@ int main(int argc, char** argv)
             std::cerr << "meshfair: --offscreen needs --screenshot OUT.png\n";
             return kExitInput;
         }
-        render_screenshot({mesh, view, screenshot, save_view, width, height, display, ui});
+        render_screenshot({mesh, view, screenshot, save_view, script, width, height, display, ui});
         return 0;
     }
     catch (const WriteError& e)

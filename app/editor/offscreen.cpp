@@ -3,49 +3,95 @@
 #include "app/editor/offscreen.h"
 
 #include <memory>
+#include <optional>
 
 #include "app/editor/document.h"
+#include "app/editor/editor_session.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/interface_context.h"
+#include "app/editor/script.h"
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
 
 namespace meshfair::app {
 
+namespace {
+
+// The offscreen frame: the session's view, and the panels when asked for.
+class OffscreenHost final : public ScriptHost
+{
+public:
+    OffscreenHost(EditorSession& session, int width, int height, bool ui)
+        : session_(session), width_(width), height_(height)
+    {
+        if (ui)
+            layer_ = std::make_unique<InterfaceContext>();
+    }
+
+    void layout() override
+    {
+        if (!layer_)
+        {
+            session_.set_view_rect(ViewRect::whole(width_, height_));
+            return;
+        }
+        // The panels first: they decide the rectangle left to the view.
+        session_.prepare_ui();
+        ui_.prepare_offscreen(*layer_, session_.document(), session_.state(), session_.camera(),
+                              width_, height_);
+        session_.set_view_rect(EditorUi::view_rect(width_, height_, session_.state()));
+    }
+
+    void screenshot(const std::string& path) override
+    {
+        layout();
+        session_.draw();
+        if (layer_)
+            layer_->draw();
+        write_png(renderer().read_pixels(width_, height_), path);
+    }
+
+    Renderer& renderer() { return session_.renderer(); }
+
+private:
+    EditorSession& session_;
+    int width_, height_;
+    std::unique_ptr<InterfaceContext> layer_;
+    EditorUi ui_;
+};
+
+} // namespace
+
 void render_screenshot(const ScreenshotRequest& request)
 {
     // Everything that can be refused is read before any context exists.
-    const Document document = load_document(request.mesh_path);
-    Camera camera;
+    Document document = load_document(request.mesh_path);
+    std::optional<Camera> camera;
     if (!request.view_path.empty())
         camera = camera_from_json(io::read_file(request.view_path), request.view_path);
+    std::optional<Script> script;
+    if (!request.script_path.empty())
+        script = read_script(request.script_path);
 
     OsmesaContext context(request.width, request.height);
     GlRenderer renderer;
-    renderer.set_mesh(document.mesh, document.draw_data);
-    ViewRect rect = ViewRect::whole(request.width, request.height);
-    std::unique_ptr<InterfaceContext> layer;
-    if (request.ui)
-    {
-        // The panels first: they decide the rectangle left to the view.
-        layer = std::make_unique<InterfaceContext>();
-        EditorUi ui;
-        EditorState state;
-        state.display = request.display;
-        state.renderer_name = context.renderer_name();
-        state.offscreen = true;
-        ui.prepare_offscreen(*layer, document, state, camera, request.width, request.height);
-        rect = EditorUi::view_rect(request.width, request.height, state);
-    }
-    if (request.view_path.empty())
-        camera.frame(document.box, double(rect.width) / rect.height);
-    renderer.draw(camera, request.display, rect);
-    if (layer)
-        layer->draw();
-    write_png(renderer.read_pixels(request.width, request.height), request.screenshot_path);
+    EditorSession session(std::move(document), renderer);
+    EditorState& state = session.state();
+    state.display = request.display;
+    state.renderer_name = context.renderer_name();
+    state.offscreen = true;
+    OffscreenHost host(session, request.width, request.height, request.ui);
+    host.layout();
+    if (camera)
+        session.camera() = *camera;
+    else
+        session.camera().frame(session.document().box, session.aspect());
+    if (script)
+        play_script(*script, session, host);
+    host.screenshot(request.screenshot_path);
     if (!request.save_view_path.empty())
-        io::write_file_atomically(request.save_view_path, to_json(camera));
+        io::write_file_atomically(request.save_view_path, to_json(session.camera()));
 }
 
 } // namespace meshfair::app

@@ -15,13 +15,15 @@ struct ScreenshotRequest
     std::string view_path; //!< a camera saved as JSON; empty: frame the mesh, front view
     std::string screenshot_path;
     std::string save_view_path; //!< where to write the camera used; empty: nowhere
+    std::string script_path;    //!< a scripted session to play first; empty: none
     int width = 1280;
     int height = 800;
     DisplayOptions display;
     bool ui = false; //!< draw the editor's panels too
 };
 
-//! \brief Renders one frame through OSMesa (no display, no GLFW) and writes it as PNG.
+//! \brief Renders one frame through OSMesa (no display, no GLFW) and writes it as PNG,
+//! after playing the script, if any, through an EditorSession.
 //! \throw InvalidInputError for a bad mesh or view file, WriteError when the PNG cannot be
 //! written (an existing file is kept whole), RenderError when there is no usable OpenGL.
 void render_screenshot(const ScreenshotRequest& request);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <utility>
 
 #define GLFW_INCLUDE_NONE
@@ -16,6 +17,7 @@
 #include <backends/imgui_impl_glfw.h>
 
 #include "app/editor/document.h"
+#include "app/editor/editor_session.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/interface_context.h"
 #include "app/editor/navigation.h"
@@ -45,25 +47,18 @@ void* glfw_proc_address(const char* name)
 struct Editor
 {
     GLFWwindow* window = nullptr;
-    Document document;
-    EditorState state;
     EditorUi ui;
-    Camera camera;
-    Navigator navigator;
     std::unique_ptr<GlRenderer> renderer;
+    std::unique_ptr<EditorSession> session; // after the renderer: it draws with it
     UiRequests pending; // requests from keys and callbacks, merged with the UI's
     std::string screenshot_path;
     int screenshots = 0;
 
-    ViewRect view; // where the 3D view is, from the interface's last frame
-
-    int width() const { return view.width; }
-    int height() const { return view.height; }
-    double aspect() const { return double(view.width) / std::max(view.height, 1); }
     //! The cursor in the view's pixels.
     void cursor(double& x, double& y) const
     {
         // Window coordinates to framebuffer pixels (they differ on scaled displays).
+        const ViewRect& view = session->view_rect();
         int ww = 0, wh = 0;
         glfwGetWindowSize(window, &ww, &wh);
         glfwGetCursorPos(window, &x, &y);
@@ -71,73 +66,26 @@ struct Editor
         y = y * view.framebuffer_height / std::max(wh, 1) - view.y;
     }
 
-    void open(const std::string& path)
-    {
-        try
-        {
-            Document next = load_document(path);
-            renderer->set_mesh(next.mesh, next.draw_data);
-            document = std::move(next);
-            camera.frame(document.box, aspect());
-            remember_recent(state.recent, path);
-            save_recent(recent_files_path(), state.recent);
-            state.message = "opened " + path;
-        }
-        catch (const InvalidInputError& e)
-        {
-            state.message = e.what(); // the document on screen stays as it was
-        }
-    }
-
-    void save(const std::string& path)
-    {
-        try
-        {
-            io::write_mesh(document.mesh, path);
-            document.path = path;
-            document.modified = false;
-            remember_recent(state.recent, path);
-            save_recent(recent_files_path(), state.recent);
-            state.message = "saved " + path;
-        }
-        catch (const std::exception& e)
-        {
-            state.message = e.what();
-        }
-    }
-
     void screenshot()
     {
         std::string path = screenshot_path;
         if (path.empty())
             path = "meshfair-screenshot-" + std::to_string(++screenshots) + ".png";
+        const ViewRect& view = session->view_rect();
         try
         {
             write_png(renderer->read_pixels(view.framebuffer_width, view.framebuffer_height), path);
-            state.message = "screenshot " + path;
+            session->state().message = "screenshot " + path;
         }
         catch (const std::exception& e)
         {
-            state.message = e.what();
+            session->state().message = e.what();
         }
     }
 
     void carry_out(const UiRequests& r)
     {
-        if (r.frame_all)
-            camera.frame(document.box, aspect());
-        if (r.frame_selection)
-            camera.frame(selection_box(document), document.box, aspect());
-        if (r.view)
-            camera.set_view(*r.view);
-        if (r.toggle_projection)
-            camera.projection = camera.projection == Projection::Perspective
-                                    ? Projection::Orthographic
-                                    : Projection::Perspective;
-        if (r.open_path)
-            open(*r.open_path);
-        if (r.save_path)
-            save(*r.save_path);
+        session->carry_out(r);
         if (r.quit)
             glfwSetWindowShouldClose(window, GLFW_TRUE);
     }
@@ -155,24 +103,83 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
     Editor& e = editor_of(window);
     if (ImGui::GetIO().WantCaptureKeyboard)
         return;
-    const bool ctrl = mods & GLFW_MOD_CONTROL, shift = mods & GLFW_MOD_SHIFT;
+    const bool ctrl = mods & GLFW_MOD_CONTROL, shift = mods & GLFW_MOD_SHIFT,
+               alt = mods & GLFW_MOD_ALT;
     UiRequests& r = e.pending;
-    DisplayOptions& d = e.state.display;
+    EditorState& state = e.session->state();
+    DisplayOptions& d = state.display;
+    const Document& document = e.session->document();
     switch (key)
     {
         case GLFW_KEY_Q:
             if (ctrl)
-                e.ui.ask_to_quit(e.document, r);
+                e.ui.ask_to_quit(document, r);
             break;
         case GLFW_KEY_O:
             if (ctrl)
-                e.ui.open_file_dialog(e.document);
+                e.ui.open_file_dialog(document);
             break;
         case GLFW_KEY_S:
             if (ctrl && shift)
-                e.ui.save_file_dialog(e.document);
+                e.ui.save_file_dialog(document);
             else if (!ctrl)
                 d.shading = d.shading == Shading::Smooth ? Shading::Flat : Shading::Smooth;
+            break;
+        case GLFW_KEY_Z:
+            if (ctrl)
+                (shift ? r.redo : r.undo) = true;
+            break;
+        case GLFW_KEY_Y:
+            if (ctrl)
+                r.redo = true;
+            break;
+        case GLFW_KEY_A:
+            if (ctrl)
+                r.command = SelectionCommand::All;
+            else if (alt)
+                r.command = SelectionCommand::Clear;
+            break;
+        case GLFW_KEY_I:
+            if (ctrl)
+                r.command = SelectionCommand::Invert;
+            break;
+        case GLFW_KEY_EQUAL:
+        case GLFW_KEY_KP_ADD:
+            if (ctrl)
+                r.command = SelectionCommand::Grow;
+            break;
+        case GLFW_KEY_MINUS:
+        case GLFW_KEY_KP_SUBTRACT:
+            if (ctrl)
+                r.command = SelectionCommand::Shrink;
+            break;
+        case GLFW_KEY_L:
+            if (ctrl)
+                r.command = SelectionCommand::Connected;
+            else
+                r.tool = ToolKind::Lasso;
+            break;
+        case GLFW_KEY_N:
+            r.tool = ToolKind::Navigate;
+            break;
+        case GLFW_KEY_K:
+            r.tool = ToolKind::Click;
+            break;
+        case GLFW_KEY_C:
+            r.tool = ToolKind::Brush;
+            break;
+        case GLFW_KEY_R:
+            r.tool = ToolKind::Rectangle;
+            break;
+        case GLFW_KEY_V:
+            r.elements = state.tools.elements == ElementKind::Vertices ? ElementKind::Faces
+                                                                       : ElementKind::Vertices;
+            break;
+        case GLFW_KEY_LEFT_BRACKET:
+            state.tools.brush_radius_px = std::max(2.0, state.tools.brush_radius_px / 1.25);
+            break;
+        case GLFW_KEY_RIGHT_BRACKET:
+            state.tools.brush_radius_px = std::min(400.0, state.tools.brush_radius_px * 1.25);
             break;
         case GLFW_KEY_HOME:
         case GLFW_KEY_KP_DECIMAL:
@@ -198,24 +205,27 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
             r.toggle_projection = true;
             break;
         case GLFW_KEY_T:
-            e.state.orbit = e.state.orbit == OrbitStyle::Turntable ? OrbitStyle::Trackball
-                                                                   : OrbitStyle::Turntable;
+            state.orbit = state.orbit == OrbitStyle::Turntable ? OrbitStyle::Trackball
+                                                               : OrbitStyle::Turntable;
             break;
         case GLFW_KEY_W:
             d.wireframe = !d.wireframe;
             break;
         case GLFW_KEY_B:
-            d.boundary_edges = !d.boundary_edges;
+            if (ctrl)
+                r.command = SelectionCommand::Boundary;
+            else
+                d.boundary_edges = !d.boundary_edges;
             break;
         case GLFW_KEY_P:
             d.vertex_points = !d.vertex_points;
             break;
         case GLFW_KEY_TAB:
-            e.state.show_side_panel = !e.state.show_side_panel;
+            state.show_side_panel = !state.show_side_panel;
             break;
         case GLFW_KEY_F1:
         case GLFW_KEY_H:
-            e.state.show_help = !e.state.show_help;
+            state.show_help = !state.show_help;
             break;
         case GLFW_KEY_F12:
             r.screenshot = true;
@@ -231,16 +241,16 @@ void on_mouse_button(GLFWwindow* window, int button, int action, int mods)
     const MouseButton b = button == GLFW_MOUSE_BUTTON_LEFT     ? MouseButton::Left
                           : button == GLFW_MOUSE_BUTTON_MIDDLE ? MouseButton::Middle
                                                                : MouseButton::Right;
+    double x = 0, y = 0;
+    e.cursor(x, y);
     if (action == GLFW_RELEASE)
     {
-        e.navigator.release(b);
+        e.session->mouse_release(b, x, y);
         return;
     }
     if (ImGui::GetIO().WantCaptureMouse)
         return;
-    double x = 0, y = 0;
-    e.cursor(x, y);
-    e.navigator.press(
+    e.session->mouse_press(
         b, {bool(mods & GLFW_MOD_SHIFT), bool(mods & GLFW_MOD_CONTROL), bool(mods & GLFW_MOD_ALT)},
         x, y);
 }
@@ -250,7 +260,7 @@ void on_cursor(GLFWwindow* window, double /*x*/, double /*y*/)
     Editor& e = editor_of(window);
     double x = 0, y = 0;
     e.cursor(x, y);
-    e.navigator.move(e.camera, e.state.orbit, x, y, e.width(), e.height());
+    e.session->mouse_move(x, y);
 }
 
 void on_scroll(GLFWwindow* window, double /*dx*/, double dy)
@@ -260,7 +270,7 @@ void on_scroll(GLFWwindow* window, double /*dx*/, double dy)
         return;
     double x = 0, y = 0;
     e.cursor(x, y);
-    e.navigator.scroll(e.camera, dy, x, y, e.width(), e.height());
+    e.session->scroll(dy, x, y);
 }
 
 void on_drop(GLFWwindow* window, int count, const char** paths)
@@ -272,10 +282,10 @@ void on_drop(GLFWwindow* window, int count, const char** paths)
 void on_close(GLFWwindow* window)
 {
     Editor& e = editor_of(window);
-    if (e.document.modified)
+    if (e.session->document().modified)
     {
         glfwSetWindowShouldClose(window, GLFW_FALSE);
-        e.ui.ask_to_quit(e.document, e.pending);
+        e.ui.ask_to_quit(e.session->document(), e.pending);
     }
 }
 
@@ -286,14 +296,11 @@ void run_window(const WindowOptions& options)
     // The first document and view are read before any window opens, so that a bad file
     // is reported like the command-line tool reports it.
     auto editor = std::make_unique<Editor>();
-    editor->document = load_document(options.mesh_path);
+    Document document = load_document(options.mesh_path);
+    std::optional<Camera> camera;
     if (!options.view_path.empty())
-        editor->camera = camera_from_json(io::read_file(options.view_path), options.view_path);
-    editor->state.display = options.display;
+        camera = camera_from_json(io::read_file(options.view_path), options.view_path);
     editor->screenshot_path = options.screenshot_path;
-    editor->state.recent = load_recent(recent_files_path());
-    remember_recent(editor->state.recent, options.mesh_path);
-    save_recent(recent_files_path(), editor->state.recent);
 
     glfwSetErrorCallback(remember_glfw_error);
     if (!glfwInit())
@@ -323,10 +330,14 @@ void run_window(const WindowOptions& options)
     struct ReleaseGl
     {
         Editor& e;
-        ~ReleaseGl() { e.renderer.reset(); }
+        ~ReleaseGl()
+        {
+            e.session.reset();
+            e.renderer.reset();
+        }
     } release_gl{*editor};
     editor->window = window;
-    editor->state.renderer_name = gl::load_functions(glfw_proc_address);
+    const std::string renderer_name = gl::load_functions(glfw_proc_address);
     glfwSetWindowUserPointer(window, editor.get());
     glfwSetKeyCallback(window, on_key);
     glfwSetMouseButtonCallback(window, on_mouse_button);
@@ -344,7 +355,17 @@ void run_window(const WindowOptions& options)
     } shutdown;
 
     editor->renderer = std::make_unique<GlRenderer>();
-    editor->renderer->set_mesh(editor->document.mesh, editor->document.draw_data);
+    editor->session = std::make_unique<EditorSession>(std::move(document), *editor->renderer);
+    {
+        EditorState& state = editor->session->state();
+        state.renderer_name = renderer_name;
+        state.display = options.display;
+        state.recent = load_recent(recent_files_path());
+        remember_recent(state.recent, options.mesh_path);
+        save_recent(recent_files_path(), state.recent);
+        if (camera)
+            editor->session->camera() = *camera;
+    }
 
     bool first = true;
     using Clock = std::chrono::steady_clock;
@@ -357,29 +378,32 @@ void run_window(const WindowOptions& options)
             glfwWaitEventsTimeout(0.5);
         const auto start = Clock::now(); // the frame's time, not the wait's
         Editor& e = *editor;
+        EditorSession& session = *e.session;
         ImGui_ImplGlfw_NewFrame();
         layer.new_frame();
-        UiRequests r = e.ui.build(e.document, e.state, e.camera);
+        session.prepare_ui();
+        UiRequests r = e.ui.build(session.document(), session.state(), session.camera());
         layer.end_frame();
         int fb_width = 0, fb_height = 0;
         glfwGetFramebufferSize(window, &fb_width, &fb_height);
-        e.view = EditorUi::view_rect(fb_width, fb_height, e.state);
-        if (first && options.view_path.empty())
-            e.camera.frame(e.document.box, e.aspect());
+        session.set_view_rect(EditorUi::view_rect(fb_width, fb_height, session.state()));
+        if (first && !camera)
+            session.camera().frame(session.document().box, session.aspect());
         // Keys and callbacks of this frame, then the interface's own requests.
         const UiRequests keys = std::exchange(e.pending, UiRequests{});
         e.carry_out(keys);
         e.carry_out(r);
-        e.renderer->draw(e.camera, e.state.display, e.view);
+        session.draw();
         if (keys.screenshot || r.screenshot)
             e.screenshot(); // the view without the panels
         layer.draw();
         glfwSwapBuffers(window);
-        e.state.frame_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+        session.state().frame_ms =
+            std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         if (first)
         {
             std::printf("meshfair: window open, %dx%d, %s\n", fb_width, fb_height,
-                        e.state.renderer_name.c_str());
+                        session.state().renderer_name.c_str());
             std::fflush(stdout);
             first = false;
         }

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "app/editor/editor_ui.h"
+#include "app/editor/history.h"
 #include "app/editor/interface_context.h"
 #include "app/render/osmesa_context.h"
 
@@ -50,6 +51,7 @@ app::Image render_frame(const app::Document& document, const app::Camera& camera
     state.renderer_name = "llvmpipe"; // not the LLVM version: the golden must not depend on it
     state.offscreen = true;
     state.show_help = extras.help;
+    state.history.limit = app::History().limit(); // what a session shows before any step
     editor.prepare_offscreen(layer, document, state, camera, width, height);
     const app::ViewRect rect = app::EditorUi::view_rect(width, height, state);
     app::Camera fitted = camera;

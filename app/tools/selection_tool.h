@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "app/render/camera.h"
+#include "app/render/renderer.h"
+#include "core/mesh/mesh.h"
+#include "core/select/screen_select.h"
+
+namespace meshfair::app {
+
+//! What the selection tools select: vertices, or faces (a face counts where its
+//! centroid projects).
+enum class ElementKind
+{
+    Vertices,
+    Faces
+};
+
+//! The tool the left mouse button uses.
+enum class ToolKind
+{
+    Navigate,  //!< left drag orbits
+    Click,     //!< ClickTool
+    Brush,     //!< BrushTool
+    Rectangle, //!< RectangleTool
+    Lasso      //!< LassoTool
+};
+
+//! "navigate", "click", "brush", "rectangle", "lasso".
+std::string_view tool_name(ToolKind tool);
+std::optional<ToolKind> tool_named(std::string_view name);
+
+//! The view a gesture starts in. The camera does not move during a gesture.
+struct ToolView
+{
+    const Mesh* mesh = nullptr;
+    Renderer* renderer = nullptr;
+    const Camera* camera = nullptr;
+    ViewRect view;
+};
+
+//! The settings the tools share (the side panel's "Select" section).
+struct ToolSettings
+{
+    ElementKind elements = ElementKind::Vertices;
+    //! Select through the surface: hidden elements too (default: what is seen only).
+    bool through = false;
+    double brush_radius_px = 24;
+};
+
+//! \brief The elements of one kind as a view shows them: where each projects (window
+//! pixels of the view) and, unless the tool selects through the surface, which ones the
+//! ID buffer shows (a face: it covers a pixel; a vertex: not behind the surface drawn
+//! around it, see Renderer::visibility). `visible` is empty when every element counts.
+struct ScreenElements
+{
+    std::vector<ScreenPoint> points;
+    std::vector<char> visible;
+};
+
+//! \brief Projects the vertices or the face centroids of `view`'s mesh and, when
+//! `settings.through` is false, renders the ID buffer once to tell which are visible.
+//! Linear in the mesh, on the threads; the one ID-buffer pass of a gesture.
+ScreenElements screen_elements(const ToolView& view, const ToolSettings& settings);
+
+//! What a tool draws over the view while it is in use, in the view's pixels.
+struct ToolOverlay
+{
+    enum class Shape
+    {
+        None,
+        Circle,    //!< points[0] the centre, radius
+        Rectangle, //!< points[0] and points[1] opposite corners
+        Polyline   //!< an open line through points (the lasso being drawn)
+    };
+    Shape shape = Shape::None;
+    std::vector<ScreenPoint> points;
+    double radius = 0;
+};
+
+//! \brief A selection gesture: a press, drags, a release, each returning the elements it
+//! covers (indices into the mesh's vertices or faces). The editor applies them to the
+//! selection with the modifiers' operation (Shift adds, Ctrl subtracts), as they come:
+//! a brush selects while it paints, a rectangle when it is released.
+//! Points are in the view's pixels, (0, 0) its top-left corner.
+class SelectionTool
+{
+public:
+    virtual ~SelectionTool() = default;
+    //! \pre view.mesh, view.renderer and view.camera are set and outlive the gesture.
+    virtual std::vector<Index> press(const ToolView& view, const ToolSettings& settings,
+                                     ScreenPoint at) = 0;
+    virtual std::vector<Index> drag(ScreenPoint to) = 0;
+    virtual std::vector<Index> release(ScreenPoint at) = 0;
+    //! What to draw with the cursor at `cursor` (pressed or not).
+    virtual ToolOverlay overlay(ScreenPoint cursor) const = 0;
+};
+
+} // namespace meshfair::app

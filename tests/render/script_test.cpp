@@ -1,0 +1,160 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// Scripted sessions through the meshfair executable: tool strokes, undo and redo, and
+// screenshots compared with golden images; scripts that are refused, and why.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "app/editor/script.h"
+#include "app/render/image.h"
+#include "core/errors.h"
+#include "core/io/io.h"
+#include "tests/helpers.h"
+#include "tests/render/render_support.h"
+
+using namespace meshfair;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Plays `script` (JSON text) on the bunny offscreen; returns the run and the screenshot.
+test::CommandRun play(const std::string& script, const fs::path& png,
+                      const std::string& options = "--size 480x360")
+{
+    const fs::path path = png.parent_path() / (png.stem().string() + ".json");
+    test::write_bytes(path, script);
+    return test::run_command(
+        "env -u DISPLAY GALLIUM_DRIVER=llvmpipe " + test::shell_quote(MESHFAIR_EDITOR) +
+        " --offscreen " + test::shell_quote((test::assets_dir() / "bunny.obj").string()) + " " +
+        options + " --script " + test::shell_quote(path.string()) + " --screenshot " +
+        test::shell_quote(png.string()));
+}
+
+// A stroke across the bunny's flank; a zoom onto its haunch and a lasso there (480 x 360).
+const char* kBrushStroke =
+    R"({"tool": "brush"}, {"brush_radius": 14},
+       {"drag": [[190, 170], [230, 185], [270, 200], [300, 230], [310, 260]]})";
+const char* kLassoFaces =
+    R"({"scroll": 6, "at": [280, 240]}, {"tool": "lasso"}, {"elements": "faces"},
+       {"drag": [[200, 170], [300, 140], [370, 200], [340, 290], [250, 300], [230, 240]]})";
+// The same lasso without the zoom (the camera is not part of the history).
+const char* kLassoInPlace =
+    R"({"tool": "lasso"}, {"elements": "faces"},
+       {"drag": [[200, 170], [300, 140], [370, 200], [340, 290], [250, 300], [230, 240]]})";
+
+} // namespace
+
+TEST_SUITE("Scripted sessions")
+{
+    TEST_CASE("a brush stroke's vertices, then a lasso's faces, as golden images")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path brush = dir / "brush.png", lasso = dir / "lasso.png";
+        const test::CommandRun a =
+            play(std::string("[") + kBrushStroke + "]", brush, "--size 480x360 --mode flat");
+        REQUIRE_MESSAGE(a.code == 0, a.err);
+        test::check_golden("script_brush_selection", app::read_png(brush.string()));
+        const test::CommandRun b = play(std::string("[") + kLassoFaces + "]", lasso,
+                                        "--size 480x360 --mode flat,wire");
+        REQUIRE_MESSAGE(b.code == 0, b.err);
+        test::check_golden("script_lasso_faces", app::read_png(lasso.string()));
+    }
+
+    TEST_CASE("undo returns the frame of the untouched mesh; redo the frame after the stroke")
+    {
+        const fs::path dir = test::temp_dir();
+        REQUIRE(play("[]", dir / "plain.png").code == 0);
+        REQUIRE(play(std::string("[") + kBrushStroke + "]", dir / "stroke.png").code == 0);
+        REQUIRE(play(std::string("[") + kBrushStroke + "," + kLassoInPlace + R"(, {"undo": 2}])",
+                     dir / "undone.png")
+                    .code == 0);
+        REQUIRE(play(std::string("[") + kBrushStroke + "," + kLassoInPlace +
+                         R"(, {"undo": 2}, {"redo": 1}])",
+                     dir / "redone.png")
+                    .code == 0);
+        const std::string plain = io::read_file((dir / "plain.png").string());
+        const std::string stroke = io::read_file((dir / "stroke.png").string());
+        CHECK(plain != stroke); // the stroke shows
+        CHECK(io::read_file((dir / "undone.png").string()) == plain);
+        CHECK(io::read_file((dir / "redone.png").string()) == stroke);
+    }
+
+    TEST_CASE("a screenshot and a saved mesh in the middle of a script")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path mid = dir / "mid.png", saved = dir / "saved.off";
+        const std::string script = std::string("[") + kBrushStroke + R"(, {"screenshot": ")" +
+                                   mid.string() + R"("}, {"select": "clear"}, {"save_mesh": ")" +
+                                   saved.string() + R"("}])";
+        REQUIRE(play(script, dir / "end.png").code == 0);
+        REQUIRE(play(std::string("[") + kBrushStroke + "]", dir / "stroke.png").code == 0);
+        CHECK(io::read_file(mid.string()) == io::read_file((dir / "stroke.png").string()));
+        const Mesh bunny = io::read_mesh((test::assets_dir() / "bunny.obj").string());
+        const Mesh copy = io::read_mesh(saved.string());
+        CHECK(copy.positions == bunny.positions);
+        CHECK(copy.face_count() == bunny.face_count());
+    }
+
+    TEST_CASE("scripts are refused with the file and the action named, before anything runs")
+    {
+        using app::parse_script;
+        const auto message = [](const std::string& text) {
+            try
+            {
+                parse_script(text, "s.json");
+            }
+            catch (const InvalidInputError& e)
+            {
+                return std::string(e.what());
+            }
+            return std::string("accepted");
+        };
+        CHECK(message(R"({"actions": [{"tool": "brush"}, {"tool": "spray"}]})") ==
+              "'s.json': actions[1].tool: 'spray' is not navigate, click, brush, rectangle or "
+              "lasso");
+        CHECK(message("[{\"drag\": [[1, 2]]}]") ==
+              "'s.json': actions[0].drag: must be a list of at least 2 points [x, y]");
+        CHECK(message("[{\"click\": [1, 2], \"undo\": 1}]") ==
+              "'s.json': actions[0]: has two actions ('click' and 'undo')");
+        CHECK(message("[{\"undo\": 0}]") == "'s.json': actions[0].undo: must be a count from 1 "
+                                            "to 100000");
+        CHECK(message("[{\"select\": \"grow\", \"modifiers\": [\"shift\"]}]") ==
+              "'s.json': actions[0].modifiers: only a drag or a click takes modifiers");
+        CHECK(message("[{\"drag\": [[0, 0], [1, 1]], \"modifiers\": [\"hyper\"]}]") ==
+              "'s.json': actions[0].modifiers: 'hyper' is not shift, ctrl or alt");
+        CHECK(message("[{\"scroll\": 2}]") == "'s.json': actions[0].scroll: needs 'at': the "
+                                              "cursor [x, y]");
+        CHECK(message("[{\"click\": [1e300, 2]}]").find("actions[0].click: must be a number") !=
+              std::string::npos);
+        CHECK(message("{\"steps\": []}") ==
+              "'s.json': steps: is unknown (a script is {\"actions\": [...]})");
+        CHECK(message("[3]") == "'s.json': actions[0]: an action must be a JSON object");
+        CHECK(message("[{}]") == "'s.json': actions[0]: names no action");
+        CHECK(message("[\n{\"tool\": \"brush\"},\n{\"tool\" \"x\"}]") ==
+              "'s.json':3:11: not valid JSON: syntax error while parsing object separator - "
+              "unexpected string literal; expected ':'");
+        CHECK(message(R"([{"view": "front"}, {"projection": "orthographic"}, {"scroll": 1,
+                          "at": [3, 4]}, {"select": "connected"}, {"elements": "faces"},
+                          {"through": true}, {"brush_radius": 3}])") == "accepted");
+    }
+
+    TEST_CASE("the executable: exit code 2 for a bad script, 3 for an output it cannot write")
+    {
+        const fs::path dir = test::temp_dir();
+        const test::CommandRun bad = play("[{\"tool\": \"spray\"}]", dir / "bad.png");
+        CHECK(bad.code == 2);
+        CHECK(bad.err.find("bad.json': actions[0].tool") != std::string::npos);
+        CHECK_FALSE(fs::exists(dir / "bad.png"));
+        const test::CommandRun unwritable =
+            play(R"([{"save_mesh": "/nonexistent/dir/x.obj"}])", dir / "unwritable.png");
+        CHECK(unwritable.code == 3);
+        CHECK(unwritable.err.find("actions[0]") != std::string::npos);
+        const test::CommandRun window = test::run_command(
+            "env -u DISPLAY " + test::shell_quote(MESHFAIR_EDITOR) + " --script x.json");
+        CHECK(window.code == 2);
+        CHECK(window.err.find("--script needs --offscreen") != std::string::npos);
+    }
+}
