@@ -96,7 +96,12 @@ void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, do
             std::fill(mask.begin(), mask.end(), 0);
             selection_changed();
         }
-        const ToolView view{&document_.mesh, &renderer_, &camera_, view_};
+        const ToolView view{&document_.mesh,
+                            &renderer_,
+                            &camera_,
+                            view_,
+                            [this]() -> const Visibility& { return visibility(); },
+                            [this] { return face_points(); }};
         apply(gesture_->press(view, state_.tools, cursor_));
         return;
     }
@@ -258,6 +263,8 @@ void EditorSession::remember(const std::string& path)
 
 void EditorSession::reset_for_document()
 {
+    visibility_.reset(); // another mesh
+    face_points_.reset();
     history_.clear();
     step_before_.reset();
     selection_changed();
@@ -307,13 +314,45 @@ void EditorSession::prepare_ui()
     }
 }
 
-void EditorSession::draw()
+EditorSession::VisibilityKey EditorSession::view_key() const
+{
+    return {camera_.view_matrix(), camera_.projection_matrix(aspect()), view_.width, view_.height};
+}
+
+std::span<const ScreenPoint> EditorSession::face_points()
+{
+    const VisibilityKey key = view_key();
+    if (!face_points_ || !(key == face_points_key_))
+    {
+        face_points_ = project_face_centroids(document_.mesh, camera_, view_.width, view_.height);
+        face_points_key_ = key;
+    }
+    return *face_points_;
+}
+
+const Visibility& EditorSession::visibility()
+{
+    const VisibilityKey key = view_key();
+    if (!visibility_ || !(key == visibility_key_))
+    {
+        visibility_ = renderer_.visibility(camera_, view_);
+        visibility_key_ = key;
+    }
+    return *visibility_;
+}
+
+void EditorSession::sync_renderer()
 {
     if (selection_dirty_)
     {
         renderer_.set_selection(document_.selected_vertices, document_.selected_faces);
         selection_dirty_ = false;
     }
+}
+
+void EditorSession::draw()
+{
+    sync_renderer();
     renderer_.draw(camera_, state_.display, view_);
 }
 

@@ -74,7 +74,15 @@ public:
 
     //! Fills the state the interface shows: the tool's overlay, the history, the counts.
     void prepare_ui();
-    //! Sends what changed to the renderer and draws the view.
+    //! \brief What the view shows now (Renderer::visibility), kept until the camera, the
+    //! view's size or the geometry changes, so that gestures from one view render the ID
+    //! buffer once between them.
+    const Visibility& visibility();
+    //! The face centroids projected into the view, kept likewise.
+    std::span<const ScreenPoint> face_points();
+    //! Sends what changed since the last frame to the renderer (the selection flags).
+    void sync_renderer();
+    //! sync_renderer, then draws the view.
     void draw();
 
 private:
@@ -106,6 +114,19 @@ private:
     ScreenPoint cursor_;
     bool selection_dirty_ = true;
     bool counts_dirty_ = true;
+
+    // The visibility kept for the camera and view it was computed for.
+    struct VisibilityKey
+    {
+        glm::dmat4 view{0.0}, projection{0.0};
+        int width = 0, height = 0;
+        bool operator==(const VisibilityKey&) const = default;
+    };
+    std::optional<Visibility> visibility_;
+    VisibilityKey visibility_key_;
+    std::optional<std::vector<ScreenPoint>> face_points_;
+    VisibilityKey face_points_key_;
+    VisibilityKey view_key() const;
 };
 
 } // namespace meshfair::app

@@ -54,27 +54,50 @@ std::optional<ToolKind> tool_named(std::string_view name)
     return std::nullopt;
 }
 
+std::vector<ScreenPoint> project_face_centroids(const Mesh& mesh, const Camera& camera, int width,
+                                                int height)
+{
+    return project_points(camera, face_centroids(mesh), width, height);
+}
+
 ScreenElements screen_elements(const ToolView& v, const ToolSettings& settings)
 {
     ScreenElements out;
     const int width = v.view.width, height = v.view.height;
-    if (settings.elements == ElementKind::Vertices)
+    if (settings.elements == ElementKind::Vertices && !settings.through)
     {
-        if (!settings.through)
+        if (v.visibility)
         {
-            Visibility seen = v.renderer->visibility(*v.camera, v.view);
-            out.points = std::move(seen.projected);
-            out.visible = std::move(seen.vertices);
+            const Visibility& seen = v.visibility();
+            out.points = seen.projected;
+            out.visible = seen.vertices;
             return out;
         }
+        Visibility seen = v.renderer->visibility(*v.camera, v.view);
+        out.own_points = std::move(seen.projected);
+        out.own_visible = std::move(seen.vertices);
+    }
+    else if (settings.elements == ElementKind::Vertices)
+    {
         std::vector<float> positions(v.mesh->positions.size());
         positions_to_float(v.mesh->positions, positions);
-        out.points = project_points(*v.camera, positions, width, height);
-        return out;
+        out.own_points = project_points(*v.camera, positions, width, height);
     }
-    out.points = project_points(*v.camera, face_centroids(*v.mesh), width, height);
-    if (!settings.through)
-        out.visible = std::move(v.renderer->visibility(*v.camera, v.view).faces);
+    else
+    {
+        if (v.face_points)
+            out.points = v.face_points();
+        else
+            out.own_points = project_face_centroids(*v.mesh, *v.camera, width, height);
+        if (!settings.through && v.visibility)
+            out.visible = v.visibility().faces;
+        else if (!settings.through)
+            out.own_visible = std::move(v.renderer->visibility(*v.camera, v.view).faces);
+    }
+    if (!out.own_points.empty())
+        out.points = out.own_points;
+    if (!out.own_visible.empty())
+        out.visible = out.own_visible;
     return out;
 }
 

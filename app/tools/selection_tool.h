@@ -2,8 +2,10 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -43,7 +45,17 @@ struct ToolView
     Renderer* renderer = nullptr;
     const Camera* camera = nullptr;
     ViewRect view;
+    //! \brief What the view shows, when the caller keeps it between gestures (the ID
+    //! buffer is the costly part of a press, and strokes from one view can share it);
+    //! empty: the tool asks the renderer.
+    std::function<const Visibility&()> visibility;
+    //! The face centroids projected into the view, kept likewise; empty: projected here.
+    std::function<std::span<const ScreenPoint>()> face_points;
 };
+
+//! The face centroids (the mean of each face's corners) projected into a view.
+std::vector<ScreenPoint> project_face_centroids(const Mesh& mesh, const Camera& camera, int width,
+                                                int height);
 
 //! The settings the tools share (the side panel's "Select" section).
 struct ToolSettings
@@ -58,10 +70,21 @@ struct ToolSettings
 //! pixels of the view) and, unless the tool selects through the surface, which ones the
 //! ID buffer shows (a face: it covers a pixel; a vertex: not behind the surface drawn
 //! around it, see Renderer::visibility). `visible` is empty when every element counts.
+//! The spans view either the arrays held here or a visibility the caller keeps for the
+//! gesture (ToolView::visibility), which is then not copied.
 struct ScreenElements
 {
-    std::vector<ScreenPoint> points;
-    std::vector<char> visible;
+    // Moved, never copied: the spans may point into the vectors (a move keeps their arrays).
+    ScreenElements() = default;
+    ScreenElements(ScreenElements&&) = default;
+    ScreenElements& operator=(ScreenElements&&) = default;
+    ScreenElements(const ScreenElements&) = delete;
+    ScreenElements& operator=(const ScreenElements&) = delete;
+
+    std::span<const ScreenPoint> points;
+    std::span<const char> visible;
+    std::vector<ScreenPoint> own_points;
+    std::vector<char> own_visible;
 };
 
 //! \brief Projects the vertices or the face centroids of `view`'s mesh and, when

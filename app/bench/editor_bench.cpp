@@ -1,0 +1,197 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// meshfair-editor-bench: how interactive the editor's selection tools are on a large
+// mesh. It drives an EditorSession with GlRenderer on OSMesa, as the window does, over a
+// subdivided bunny, and times each part of a frame separately: the tool's work for one
+// mouse event, the upload of the selection to the renderer, the software rasterization
+// (llvmpipe here; a GPU draws the same buffers far faster), and the undo record. See
+// docs/performance.md ("Editor").
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/bench/mesh_generator.h"
+#include "app/editor/editor_session.h"
+#include "app/render/gl_renderer.h"
+#include "app/render/osmesa_context.h"
+#include "core/io/io.h"
+#include "core/solver/parallel.h"
+
+namespace {
+
+using namespace meshfair;
+using namespace meshfair::app;
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start)
+{
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+struct Series
+{
+    std::string name;
+    std::vector<double> ms;
+    double median() const
+    {
+        std::vector<double> s = ms;
+        std::sort(s.begin(), s.end());
+        return s.empty() ? 0 : s[s.size() / 2];
+    }
+    double max() const { return ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end()); }
+};
+
+void print(const Series& s)
+{
+    std::printf("| %s | %zu | %.2f | %.2f |\n", s.name.c_str(), s.ms.size(), s.median(), s.max());
+}
+
+double timed(const std::function<void()>& f)
+{
+    const auto t = Clock::now();
+    f();
+    return ms_since(t);
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{"meshfair-editor-bench: the selection tools' frame times on a large mesh"};
+    std::string mesh_path = MESHFAIR_DEFAULT_MESH;
+    long long min_vertices = 1000000;
+    int width = 1280, height = 800, events = 60, reps = 3, threads = 0;
+    app.add_option("--mesh", mesh_path, "triangle mesh to subdivide")->check(CLI::ExistingFile);
+    app.add_option("--vertices", min_vertices, "at least this many vertices");
+    app.add_option("--events", events, "mouse moves per stroke")->check(CLI::Range(2, 10000));
+    app.add_option("--reps", reps, "strokes and rectangles of each kind")
+        ->check(CLI::Range(1, 100));
+    app.add_option("--threads", threads, "threads (default: all cores)")
+        ->check(CLI::Range(0, 1024));
+    CLI11_PARSE(app, argc, argv);
+    if (threads > 0)
+        set_thread_count(threads);
+
+    const Mesh base = io::read_mesh(mesh_path);
+    const int k = bench::subdivision_factor_for(base, min_vertices);
+    auto t = Clock::now();
+    Document document = make_document(bench::subdivide_triangles(base, k), "subdivided");
+    const double document_ms = ms_since(t);
+    const Index n = document.mesh.vertex_count();
+    std::printf(
+        "mesh: %s subdivided %d-fold: %lld vertices, %lld faces; %d threads; "
+        "%dx%d view\n",
+        mesh_path.c_str(), k, static_cast<long long>(n),
+        static_cast<long long>(document.mesh.face_count()), thread_count(), width, height);
+    std::printf("document (topology, draw data): %.0f ms\n\n", document_ms);
+
+    OsmesaContext context(width, height);
+    GlRenderer renderer;
+    t = Clock::now();
+    EditorSession session(std::move(document), renderer);
+    std::printf("renderer set_mesh: %.0f ms (%s)\n\n", ms_since(t),
+                context.renderer_name().c_str());
+    session.state().offscreen = true;
+    session.set_view_rect(ViewRect::whole(width, height));
+    session.camera().frame(session.document().box, session.aspect());
+    session.draw();
+
+    const char* kinds[2] = {"vertices", "faces"};
+    std::vector<Series> press_moved, press_same, rect_release;
+    for (const char* kind_name : kinds)
+    {
+        press_moved.push_back({std::string("brush press, ") + kind_name + ", after a camera move", {}});
+        press_same.push_back({std::string("brush press, ") + kind_name + ", same view", {}});
+        rect_release.push_back({std::string("rectangle release, ") + kind_name, {}});
+    }
+    Series rect_through{"rectangle release, vertices, through the surface", {}};
+    Series move{"brush move (dabs, selection flags)", {}};
+    Series upload{"selection upload (set_selection)", {}};
+    Series rect_press{"rectangle press, same view", {}};
+    Series record{"undo record at release (compare, keep the masks)", {}};
+    Series undo{"undo", {}};
+    Series raster{"draw (llvmpipe rasterization)", {}};
+    Series ids{"ID buffer render + read back (Renderer::visibility)", {}};
+    std::size_t brushed = 0, rectangled = 0, through = 0;
+    const auto count = [](const SelectionMask& m) {
+        return static_cast<std::size_t>(std::count(m.begin(), m.end(), 1));
+    };
+    const double y = 0.5 * height;
+    // A brush stroke of radius 40 px across the middle of the view, in zigzag.
+    const auto stroke = [&](Series& pressed) {
+        session.set_tool(ToolKind::Brush);
+        session.tool_settings().brush_radius_px = 40;
+        pressed.ms.push_back(
+            timed([&] { session.mouse_press(MouseButton::Left, {}, 0.2 * width, y); }));
+        for (int e = 1; e <= events; ++e)
+        {
+            const double x = (0.2 + 0.6 * e / events) * width;
+            move.ms.push_back(timed([&] { session.mouse_move(x, y + 40 * ((e % 8) - 4)); }));
+            upload.ms.push_back(timed([&] { session.sync_renderer(); }));
+        }
+        record.ms.push_back(
+            timed([&] { session.mouse_release(MouseButton::Left, 0.8 * width, y); }));
+    };
+    // A rectangle over the left half of the view.
+    const auto rectangle = [&](Series& released) {
+        session.set_tool(ToolKind::Rectangle);
+        rect_press.ms.push_back(timed([&] { session.mouse_press(MouseButton::Left, {}, 0, 0); }));
+        session.mouse_move(0.5 * width, height - 1);
+        released.ms.push_back(
+            timed([&] { session.mouse_release(MouseButton::Left, 0.5 * width, height - 1); }));
+        upload.ms.push_back(timed([&] { session.sync_renderer(); }));
+    };
+
+    for (int rep = 0; rep < reps; ++rep)
+    {
+        ids.ms.push_back(
+            timed([&] { (void)renderer.visibility(session.camera(), session.view_rect()); }));
+        for (int kind = 0; kind < 2; ++kind)
+        {
+            session.set_elements(kind == 0 ? ElementKind::Vertices : ElementKind::Faces);
+            session.tool_settings().through = false;
+            // A small orbit first: the first press renders the ID buffer, the next reuse it.
+            session.camera().orbit(OrbitStyle::Turntable, 0, 0, 2, 0, width, height);
+            stroke(press_moved[kind]);
+            stroke(press_same[kind]);
+            brushed = std::max(brushed, count(session.document().selected_vertices));
+            raster.ms.push_back(timed([&] {
+                session.draw();
+                (void)renderer.read_pixels(1, 1); // waits for the frame
+            }));
+            rectangle(rect_release[kind]);
+            rectangled = std::max(rectangled, count(kind == 0 ? session.document().selected_vertices
+                                                              : session.document().selected_faces));
+            undo.ms.push_back(timed([&] { session.undo(); }));
+            session.redo();
+        }
+        session.set_elements(ElementKind::Vertices);
+        session.tool_settings().through = true;
+        rectangle(rect_through);
+        through = std::max(through, count(session.document().selected_vertices));
+    }
+    std::printf(
+        "selected at most: %zu vertices by a stroke, %zu elements by a front-facing "
+        "rectangle, %zu vertices (%.0f %%) by a rectangle through the surface\n\n",
+        brushed, rectangled, through, 100.0 * double(through) / double(n));
+    std::printf("| part | samples | median ms | max ms |\n|---|---|---|---|\n");
+    for (int kind = 0; kind < 2; ++kind)
+    {
+        print(press_moved[kind]);
+        print(press_same[kind]);
+    }
+    for (const Series* s : {&move, &upload, &record, &rect_press, &rect_release[0],
+                            &rect_release[1], &rect_through, &undo, &raster, &ids})
+        print(*s);
+    const double frame = move.median() + upload.median();
+    std::printf(
+        "\nbrush frame without rasterization (move + upload, medians): %.2f ms = %.0f %% "
+        "of a 16.7 ms frame\n",
+        frame, 100 * frame / 16.7);
+    return 0;
+}
