@@ -28,6 +28,7 @@
 #include "core/geometry/face_geometry.h"
 #include "core/geometry/noise.h"
 #include "core/io/io.h"
+#include "core/recipe/locality_run.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
@@ -157,29 +158,24 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
     double setup_seconds = 0, solve_seconds = 0;
     // Solve in the locality numbering (neighbours near each other in memory): the one copy
     // of the mesh is renumbered in place and back before writing, so the output, the
-    // recipe and the report keep the file's numbering.
-    LocalityOrder order = locality_order(mesh);
-    mesh = reorder_mesh(mesh, order);
+    // recipe and the report keep the file's numbering (LocalityRun, as the editor runs).
+    LocalityRun::Released solved;
     {
         // The solver's data lives in this scope only: it is freed before the output is
         // written.
-        const Topology topology = build_topology(mesh, required_topology(recipe));
-        Session session(mesh, topology,
-                        renumber_recipe(recipe, order.vertex_index, order.face_index));
-        session.apply_hard_targets(mesh.positions);
+        LocalityRun run(std::move(mesh), recipe);
         setup_seconds = seconds_since(t_setup);
 
         const auto t_solve = Clock::now();
-        // The session holds the only copy of the positions while it runs.
-        session.adopt_positions(std::move(mesh.positions));
-        const SmoothResult result = run(session);
-        mesh.positions = session.release_positions();
+        const SmoothResult result = meshfair::run(run.session());
         solve_seconds = seconds_since(t_solve);
-        validate_mesh(mesh); // never write garbage: every coordinate is still finite
-        report = cli::smooth_report(mesh, topology, session, result, read_report);
+        solved = std::move(run).release();
+        validate_mesh(solved.mesh); // never write garbage: every coordinate is still finite
+        report =
+            cli::smooth_report(solved.mesh, run.topology(), run.session(), result, read_report);
     }
     const auto t_back = Clock::now();
-    mesh = reorder_mesh(mesh, inverse_order(std::move(order)));
+    mesh = file_order_mesh(std::move(solved));
     solve_seconds += seconds_since(t_back);
 
     const auto t_write = Clock::now();

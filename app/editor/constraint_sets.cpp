@@ -1,0 +1,334 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/constraint_sets.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <utility>
+
+#include "core/geometry/face_geometry.h"
+
+namespace meshfair::app {
+
+namespace {
+
+constexpr std::pair<ConstraintKind, std::string_view> kNames[kConstraintKinds] = {
+    {ConstraintKind::Region, "region"},         {ConstraintKind::Pin, "pin"},
+    {ConstraintKind::Anchor, "anchor"},         {ConstraintKind::Centroid, "centroid"},
+    {ConstraintKind::Normal, "normal"},         {ConstraintKind::HardNormal, "hard_normal"},
+    {ConstraintKind::SoftNormal, "soft_normal"}};
+
+std::string quoted(const ConstraintSet& s)
+{
+    return "'" + s.name + "'";
+}
+
+// The elements of every set of `kind`, in set order, each once (the first set keeps it);
+// `from` says which set each came from.
+std::vector<Index> merged(const std::vector<ConstraintSet>& sets, ConstraintKind kind,
+                          bool vertices, std::vector<const ConstraintSet*>* from = nullptr,
+                          std::vector<size_t>* position = nullptr)
+{
+    std::vector<Index> out;
+    std::unordered_map<Index, bool> seen;
+    for (const ConstraintSet& s : sets)
+    {
+        if (s.kind != kind)
+            continue;
+        const std::vector<Index>& list = vertices ? s.vertices : s.faces;
+        for (size_t k = 0; k < list.size(); ++k)
+            if (seen.emplace(list[k], true).second)
+            {
+                out.push_back(list[k]);
+                if (from)
+                    from->push_back(&s);
+                if (position)
+                    position->push_back(k);
+            }
+    }
+    return out;
+}
+
+bool any_of_kind(const std::vector<ConstraintSet>& sets, ConstraintKind kind)
+{
+    return std::any_of(sets.begin(), sets.end(),
+                       [&](const ConstraintSet& s) { return s.kind == kind; });
+}
+
+std::vector<Index> sorted(std::vector<Index> v)
+{
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+// The first element two sets share, if any (both lists increasing).
+std::optional<Index> shared(const std::vector<Index>& a, const std::vector<Index>& b)
+{
+    size_t i = 0, j = 0;
+    while (i < a.size() && j < b.size())
+    {
+        if (a[i] == b[j])
+            return a[i];
+        a[i] < b[j] ? ++i : ++j;
+    }
+    return std::nullopt;
+}
+
+Vec3 position(const Mesh& mesh, Index v)
+{
+    const size_t k = 3 * static_cast<size_t>(v);
+    return {mesh.positions[k], mesh.positions[k + 1], mesh.positions[k + 2]};
+}
+
+// Per-face normals of the merged faces of `kind` when a set gives its own: the set's, else
+// `fallback(f)`; empty when no set gives any.
+template <class Fallback>
+std::vector<Vec3> merged_normals(const std::vector<ConstraintSet>& sets, ConstraintKind kind,
+                                 Fallback fallback)
+{
+    std::vector<const ConstraintSet*> from;
+    std::vector<size_t> at;
+    const std::vector<Index> faces = merged(sets, kind, false, &from, &at);
+    if (std::none_of(from.begin(), from.end(),
+                     [](const ConstraintSet* s) { return !s->normals.empty(); }))
+        return {};
+    std::vector<Vec3> normals;
+    for (size_t k = 0; k < faces.size(); ++k)
+        normals.push_back(from[k]->normals.empty() ? fallback(faces[k]) : from[k]->normals[at[k]]);
+    return normals;
+}
+
+} // namespace
+
+std::string_view kind_name(ConstraintKind kind)
+{
+    for (const auto& [k, name] : kNames)
+        if (k == kind)
+            return name;
+    return {};
+}
+
+std::optional<ConstraintKind> kind_named(std::string_view name)
+{
+    for (const auto& [k, n] : kNames)
+        if (n == name)
+            return k;
+    return std::nullopt;
+}
+
+bool takes_vertices(ConstraintKind kind)
+{
+    return kind == ConstraintKind::Region || kind == ConstraintKind::Pin ||
+           kind == ConstraintKind::Anchor;
+}
+
+std::array<float, 3> default_color(ConstraintKind kind)
+{
+    switch (kind)
+    {
+        case ConstraintKind::Region:
+            return {0.35f, 0.75f, 0.35f};
+        case ConstraintKind::Pin:
+            return {0.90f, 0.20f, 0.20f};
+        case ConstraintKind::Anchor:
+            return {0.95f, 0.75f, 0.15f};
+        case ConstraintKind::Centroid:
+            return {0.25f, 0.55f, 0.95f};
+        case ConstraintKind::Normal:
+            return {0.70f, 0.35f, 0.90f};
+        case ConstraintKind::HardNormal:
+            return {0.15f, 0.80f, 0.80f};
+        case ConstraintKind::SoftNormal:
+            return {0.55f, 0.90f, 0.90f};
+    }
+    return {1, 1, 1};
+}
+
+std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& sets,
+                                             const SolverSettings& settings)
+{
+    std::vector<std::string> problems;
+    for (const ConstraintSet& s : sets)
+        if (s.vertices.empty() && s.faces.empty())
+            problems.push_back("set " + quoted(s) + " is empty");
+    // Disjoint pairs: a vertex is either hard or soft, a normal either fixed or soft.
+    const auto disjoint = [&](ConstraintKind a, ConstraintKind b, bool vertices, const char* what,
+                              const char* why) {
+        for (const ConstraintSet& s : sets)
+            for (const ConstraintSet& t : sets)
+                if (s.kind == a && t.kind == b)
+                    if (const auto e = shared(vertices ? s.vertices : s.faces,
+                                              vertices ? t.vertices : t.faces))
+                        problems.push_back(std::string(kind_name(a)) + " set " + quoted(s) +
+                                           " and " + std::string(kind_name(b)) + " set " +
+                                           quoted(t) + " share " + what + " " + std::to_string(*e) +
+                                           " (" + why + ")");
+    };
+    disjoint(ConstraintKind::Pin, ConstraintKind::Anchor, true, "vertex",
+             "a vertex is pinned or anchored, not both");
+    disjoint(ConstraintKind::HardNormal, ConstraintKind::SoftNormal, false, "face",
+             "a normal is fixed or soft, not both");
+    const bool normal = any_of_kind(sets, ConstraintKind::Normal);
+    const bool hard_soft = any_of_kind(sets, ConstraintKind::HardNormal) ||
+                           any_of_kind(sets, ConstraintKind::SoftNormal);
+    if (hard_soft && !normal)
+        problems.push_back(
+            "hard and soft normal sets need a normal set (the faces whose "
+            "normals move the surface)");
+    if (hard_soft && normal && settings.normal_source != NormalSource::Smoothed && !settings.joint)
+        problems.push_back(
+            "hard and soft normal sets act while normals are smoothed: choose "
+            "'smoothed' normals or joint mode");
+    if (settings.joint && !normal)
+        problems.push_back("joint mode needs a normal set");
+    const bool custom = std::any_of(sets.begin(), sets.end(), [](const ConstraintSet& s) {
+        return s.kind == ConstraintKind::Normal && !s.normals.empty();
+    });
+    if (custom && (settings.normal_source == NormalSource::Smoothed || settings.joint))
+        problems.push_back(
+            "normal sets with their own directions need the 'initial' source and "
+            "no joint mode for the other normal sets");
+    return problems;
+}
+
+Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
+                    const Mesh& mesh, int iterations)
+{
+    Recipe r;
+    r.iterations = iterations;
+    r.optimal_step = settings.optimal_step;
+    r.lambda = settings.lambda;
+    r.tolerance = settings.tolerance;
+    r.method = Method::Jacobi;
+    if (any_of_kind(sets, ConstraintKind::Region))
+        r.region = Region{sorted(merged(sets, ConstraintKind::Region, true)),
+                          sorted(merged(sets, ConstraintKind::Region, false))};
+    if (any_of_kind(sets, ConstraintKind::Pin))
+    {
+        std::vector<const ConstraintSet*> from;
+        std::vector<size_t> at;
+        HardVertices hard{merged(sets, ConstraintKind::Pin, true, &from, &at), {}};
+        if (std::any_of(from.begin(), from.end(),
+                        [](const ConstraintSet* s) { return !s->targets.empty(); }))
+            for (size_t k = 0; k < hard.vertices.size(); ++k)
+                hard.targets.push_back(from[k]->targets.empty() ? position(mesh, hard.vertices[k])
+                                                                : from[k]->targets[at[k]]);
+        r.hard = std::move(hard);
+    }
+    if (any_of_kind(sets, ConstraintKind::Anchor))
+        r.soft = SoftVertices{
+            {false, merged(sets, ConstraintKind::Anchor, true)}, settings.anchor_mu, {}};
+    if (any_of_kind(sets, ConstraintKind::Centroid))
+        r.centroid = CentroidConstraints{{false, merged(sets, ConstraintKind::Centroid, false)},
+                                         settings.centroid_mu,
+                                         {},
+                                         settings.denominator};
+    const auto input_normal = [&](Index f) { return face_normal(mesh, mesh.positions, f); };
+    if (any_of_kind(sets, ConstraintKind::Normal))
+    {
+        NormalConstraints n{{false, merged(sets, ConstraintKind::Normal, false)},
+                            settings.normal_mu,
+                            settings.normal_source,
+                            merged_normals(sets, ConstraintKind::Normal, input_normal)};
+        if (!n.normals.empty())
+            n.source = NormalSource::Custom;
+        r.normal = std::move(n);
+        if (settings.normal_source == NormalSource::Smoothed || settings.joint)
+        {
+            NormalSmoothing ns;
+            ns.iterations = settings.normal_smoothing_iterations;
+            ns.lambda = settings.normal_smoothing_lambda;
+            ns.hard = {merged(sets, ConstraintKind::HardNormal, false),
+                       merged_normals(sets, ConstraintKind::HardNormal, input_normal)};
+            ns.soft = {merged(sets, ConstraintKind::SoftNormal, false), settings.soft_normal_mu,
+                       merged_normals(sets, ConstraintKind::SoftNormal, input_normal)};
+            r.normal_smoothing = std::move(ns);
+        }
+        if (settings.joint)
+            r.joint = Joint{settings.gamma};
+    }
+    return r;
+}
+
+ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
+{
+    ImportedRecipe out;
+    out.iterations = r.iterations;
+    SolverSettings& s = out.settings;
+    s.optimal_step = r.optimal_step;
+    s.lambda = r.lambda;
+    s.tolerance = r.tolerance;
+    const auto all = [](const IndexSet& set, Index n) {
+        if (!set.all)
+            return set.indices;
+        std::vector<Index> v(static_cast<size_t>(n));
+        for (Index i = 0; i < n; ++i)
+            v[static_cast<size_t>(i)] = i;
+        return v;
+    };
+    const auto add = [&](ConstraintKind kind, std::vector<Index> vertices,
+                         std::vector<Index> faces) -> ConstraintSet& {
+        ConstraintSet set;
+        set.name = std::string(kind_name(kind));
+        set.kind = kind;
+        set.vertices = std::move(vertices);
+        set.faces = std::move(faces);
+        set.color = default_color(kind);
+        out.sets.push_back(std::move(set));
+        return out.sets.back();
+    };
+    if (r.region)
+        add(ConstraintKind::Region, sorted(r.region->vertices), sorted(r.region->faces));
+    if (r.hard)
+        add(ConstraintKind::Pin, r.hard->vertices, {}).targets = r.hard->targets;
+    if (r.soft)
+    {
+        std::vector<Index> v = all(r.soft->vertices, mesh.vertex_count());
+        if (r.soft->vertices.all && r.hard) // "all" = every vertex that is not hard
+        {
+            const std::vector<Index> hard = sorted(r.hard->vertices);
+            std::erase_if(v,
+                          [&](Index i) { return std::binary_search(hard.begin(), hard.end(), i); });
+        }
+        add(ConstraintKind::Anchor, std::move(v), {});
+        s.anchor_mu = r.soft->mu;
+    }
+    if (r.centroid)
+    {
+        add(ConstraintKind::Centroid, {}, all(r.centroid->faces, mesh.face_count()));
+        s.centroid_mu = r.centroid->mu;
+        s.denominator = r.centroid->denominator;
+    }
+    if (r.normal)
+    {
+        ConstraintSet& n = add(ConstraintKind::Normal, {}, all(r.normal->faces, mesh.face_count()));
+        s.normal_mu = r.normal->mu;
+        if (r.normal->source == NormalSource::Custom)
+            n.normals = r.normal->normals;
+        else
+            s.normal_source = r.normal->source;
+    }
+    if (r.normal_smoothing)
+    {
+        s.normal_smoothing_iterations = r.normal_smoothing->iterations;
+        s.normal_smoothing_lambda = r.normal_smoothing->lambda;
+        if (!r.normal_smoothing->hard.faces.empty())
+            add(ConstraintKind::HardNormal, {}, r.normal_smoothing->hard.faces).normals =
+                r.normal_smoothing->hard.normals;
+        if (!r.normal_smoothing->soft.faces.empty())
+        {
+            add(ConstraintKind::SoftNormal, {}, r.normal_smoothing->soft.faces).normals =
+                r.normal_smoothing->soft.normals;
+            s.soft_normal_mu = r.normal_smoothing->soft.mu;
+        }
+    }
+    if (r.joint)
+    {
+        s.joint = true;
+        s.gamma = r.joint->gamma;
+    }
+    return out;
+}
+
+} // namespace meshfair::app

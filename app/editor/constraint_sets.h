@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/mesh/mesh.h"
+#include "core/recipe/recipe.h"
+
+namespace meshfair::app {
+
+//! What a constraint set does, one kind per section of the core's recipe (docs/recipe.md).
+enum class ConstraintKind
+{
+    Region,     //!< what may move (vertices, or faces: their vertices); the rest is fixed
+    Pin,        //!< hard vertex constraints, optionally moved to targets
+    Anchor,     //!< soft vertex constraints (mu)
+    Centroid,   //!< soft face-centroid constraints (mu, denominator)
+    Normal,     //!< face-normal constraints (mu; initial, smoothed or custom normals)
+    HardNormal, //!< normals held fixed while the normals are smoothed
+    SoftNormal  //!< soft normal constraints while the normals are smoothed (mu)
+};
+inline constexpr int kConstraintKinds = 7;
+
+//! "region", "pin", "anchor", "centroid", "normal", "hard_normal", "soft_normal".
+std::string_view kind_name(ConstraintKind kind);
+std::optional<ConstraintKind> kind_named(std::string_view name);
+//! Whether a kind's sets hold vertices (region: vertices or faces).
+bool takes_vertices(ConstraintKind kind);
+
+//! \brief A named set of the editor's recipe: its kind, its elements and what it carries.
+//! Several sets of one kind are merged into the recipe's one section of that kind (their
+//! union, the first set's target winning for an element in two), with the kind's weight.
+struct ConstraintSet
+{
+    std::string name;
+    ConstraintKind kind = ConstraintKind::Region;
+    std::vector<Index> vertices; //!< increasing; Region (from vertex mode), Pin, Anchor
+    std::vector<Index> faces;    //!< increasing; Region (from face mode) and the face kinds
+    //! Pin only: one target per vertex once moved; empty: the vertices stay where they are.
+    std::vector<Vec3> targets;
+    //! Normal kinds: one unit normal per face when set by hand (the gizmo sets them all to
+    //! one direction); empty: the source's normals (Normal) or the input's (the others).
+    std::vector<Vec3> normals;
+    std::array<float, 3> color{1, 1, 1};
+    bool visible = true;
+    bool operator==(const ConstraintSet&) const = default;
+};
+
+//! \brief The weights and iteration settings of the editor's recipe (the solver panel).
+struct SolverSettings
+{
+    bool optimal_step = false; //!< the exact line search instead of lambda
+    Scalar lambda = 0.5;
+    Scalar tolerance = 0;
+    int iterations_per_frame = 1;
+    Scalar anchor_mu = 1;
+    Scalar centroid_mu = 1;
+    CentroidDenominator denominator = CentroidDenominator::Paper;
+    Scalar normal_mu = 1;
+    //! Normals of the Normal sets without normals of their own: Initial or Smoothed.
+    NormalSource normal_source = NormalSource::Initial;
+    int normal_smoothing_iterations = 10;
+    Scalar normal_smoothing_lambda = 0.5;
+    Scalar soft_normal_mu = 1;
+    bool joint = false;
+    Scalar gamma = 1;
+    bool operator==(const SolverSettings&) const = default;
+};
+
+//! \brief What is wrong with a list of sets, one sentence per problem naming the sets
+//! (empty: nothing). Pins and anchors must be disjoint, as must hard and soft normals;
+//! hard and soft normals and joint mode need a normal set; custom normals need the
+//! "initial" source for the other normal sets; no set may be empty.
+std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& sets,
+                                             const SolverSettings& settings);
+
+//! \brief The core recipe of the sets and settings, running `iterations` steps, in the
+//! mesh's (file) numbering; `mesh` supplies the input normals of faces whose set has
+//! custom normals mixed with others.
+//! \pre constraint_problems(sets, settings) is empty.
+Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
+                    const Mesh& mesh, int iterations);
+
+//! The sets and settings of a recipe (Import recipe): one set per section, named by kind.
+struct ImportedRecipe
+{
+    std::vector<ConstraintSet> sets;
+    SolverSettings settings;
+    int iterations = 0;
+};
+//! \pre check_recipe(recipe, mesh) holds.
+ImportedRecipe sets_from_recipe(const Recipe& recipe, const Mesh& mesh);
+
+//! The colour a new set of `kind` gets (each kind its hue, as its glyphs show it).
+std::array<float, 3> default_color(ConstraintKind kind);
+
+} // namespace meshfair::app

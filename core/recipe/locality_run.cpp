@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/recipe/locality_run.h"
+
+#include <utility>
+
+namespace meshfair {
+
+namespace {
+
+// The members are built in order: the numbering, the renumbered mesh, its topology.
+LocalityOrder order_of(const Mesh& mesh)
+{
+    return locality_order(mesh);
+}
+
+} // namespace
+
+LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)
+    : order_(order_of(mesh)),
+      mesh_(reorder_mesh(std::exchange(mesh, Mesh{}), order_)),
+      topology_(build_topology(mesh_, required_topology(recipe))),
+      session_(mesh_, topology_, renumber_recipe(recipe, order_.vertex_index, order_.face_index))
+{
+    session_.apply_hard_targets(mesh_.positions);
+    // The session holds the only copy of the positions while it runs.
+    session_.adopt_positions(std::move(mesh_.positions));
+}
+
+void LocalityRun::file_positions(std::span<Scalar> out) const
+{
+    positions_to_file_order(session_.positions(), order_, out);
+}
+
+LocalityRun::Released LocalityRun::release() &&
+{
+    mesh_.positions = session_.release_positions();
+    return {std::move(mesh_), std::move(order_)};
+}
+
+Mesh file_order_mesh(LocalityRun::Released released)
+{
+    return reorder_mesh(released.mesh, inverse_order(std::move(released.order)));
+}
+
+} // namespace meshfair

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/recipe/session.h"
+#include "core/topology/vertex_order.h"
+
+namespace meshfair {
+
+//! \brief A smoothing run the way MeshFair runs one, for a caller that speaks the file's
+//! numbering: the mesh is renumbered into the locality order (LocalityOrder), the topology
+//! and the Session are built there, the hard vertices moved to their targets, and the
+//! session keeps the positions. meshfair-cli smooth and the editor both run through this
+//! class, so the editor's result after n steps is bit for bit the command line's with
+//! "iterations": n.
+//!
+//! Construction is the precomputation (once per recipe); step() is linear and allocates
+//! nothing.
+class LocalityRun
+{
+public:
+    //! \pre check_recipe(recipe, mesh) holds (file numbering); validate_mesh(mesh) holds.
+    //! Takes the mesh (move it in: the one copy is renumbered in place).
+    LocalityRun(Mesh mesh, const Recipe& recipe);
+
+    //! One step on the kept positions.
+    StepInfo step() { return session_.step(); }
+    TermEnergies energy() const { return session_.energy(); }
+    Session& session() { return session_; }
+    const Session& session() const { return session_; }
+    //! The mesh in the locality numbering (its positions are the session's until released).
+    const Mesh& mesh() const { return mesh_; }
+    const Topology& topology() const { return topology_; }
+    const LocalityOrder& order() const { return order_; }
+
+    //! The current positions in the file's vertex order (3 #V).
+    void file_positions(std::span<Scalar> out) const;
+    //! \brief Ends the run: the renumbered mesh with the current positions, and its order.
+    //! Renumber it back with file_order_mesh once the run is gone, so that the solver's
+    //! arrays are freed before the file-order copy is made.
+    struct Released
+    {
+        Mesh mesh;
+        LocalityOrder order;
+    };
+    Released release() &&;
+
+private:
+    LocalityOrder order_;
+    Mesh mesh_;
+    Topology topology_;
+    Session session_;
+};
+
+//! The released mesh in the file's numbering.
+Mesh file_order_mesh(LocalityRun::Released released);
+
+} // namespace meshfair
