@@ -158,8 +158,8 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& s
         for (const ConstraintSet& s : sets)
             for (const ConstraintSet& t : sets)
                 if (s.kind == a && t.kind == b)
-                    if (const auto e = shared(vertices ? s.vertices : s.faces,
-                                              vertices ? t.vertices : t.faces))
+                    if (const auto e = shared(sorted(vertices ? s.vertices : s.faces),
+                                              sorted(vertices ? t.vertices : t.faces)))
                         problems.push_back(std::string(kind_name(a)) + " set " + quoted(s) +
                                            " and " + std::string(kind_name(b)) + " set " +
                                            quoted(t) + " share " + what + " " + std::to_string(*e) +
@@ -227,10 +227,11 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     const auto input_normal = [&](Index f) { return face_normal(mesh, mesh.positions, f); };
     if (any_of_kind(sets, ConstraintKind::Normal))
     {
-        NormalConstraints n{{false, merged(sets, ConstraintKind::Normal, false)},
-                            settings.normal_mu,
-                            settings.normal_source,
-                            merged_normals(sets, ConstraintKind::Normal, input_normal)};
+        NormalConstraints n;
+        n.faces.indices = merged(sets, ConstraintKind::Normal, false);
+        n.mu = settings.normal_mu;
+        n.source = settings.normal_source;
+        n.normals = merged_normals(sets, ConstraintKind::Normal, input_normal);
         if (!n.normals.empty())
             n.source = NormalSource::Custom;
         r.normal = std::move(n);
@@ -239,10 +240,11 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
             NormalSmoothing ns;
             ns.iterations = settings.normal_smoothing_iterations;
             ns.lambda = settings.normal_smoothing_lambda;
-            ns.hard = {merged(sets, ConstraintKind::HardNormal, false),
-                       merged_normals(sets, ConstraintKind::HardNormal, input_normal)};
-            ns.soft = {merged(sets, ConstraintKind::SoftNormal, false), settings.soft_normal_mu,
-                       merged_normals(sets, ConstraintKind::SoftNormal, input_normal)};
+            ns.hard.faces = merged(sets, ConstraintKind::HardNormal, false);
+            ns.hard.normals = merged_normals(sets, ConstraintKind::HardNormal, input_normal);
+            ns.soft.faces = merged(sets, ConstraintKind::SoftNormal, false);
+            ns.soft.mu = settings.soft_normal_mu;
+            ns.soft.normals = merged_normals(sets, ConstraintKind::SoftNormal, input_normal);
             r.normal_smoothing = std::move(ns);
         }
         if (settings.joint)

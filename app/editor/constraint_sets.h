@@ -39,8 +39,10 @@ struct ConstraintSet
 {
     std::string name;
     ConstraintKind kind = ConstraintKind::Region;
-    std::vector<Index> vertices; //!< increasing; Region (from vertex mode), Pin, Anchor
-    std::vector<Index> faces;    //!< increasing; Region (from face mode) and the face kinds
+    //! Region (from vertex mode), Pin, Anchor: increasing when made from a selection; a
+    //! recipe's order when imported (a pin's targets follow it).
+    std::vector<Index> vertices;
+    std::vector<Index> faces; //!< Region (from face mode) and the face kinds, likewise
     //! Pin only: one target per vertex once moved; empty: the vertices stay where they are.
     std::vector<Vec3> targets;
     //! Normal kinds: one unit normal per face when set by hand (the gizmo sets them all to

@@ -22,6 +22,7 @@ Document make_document(Mesh mesh, std::string path)
         d.mesh, TopologyParts::Neighbors | TopologyParts::Edges | TopologyParts::Corners);
     d.draw_data = mesh_draw_data(d.mesh, d.topology);
     d.box = bounding_box(d.mesh.positions);
+    d.base_positions = d.mesh.positions;
     d.selected_vertices.assign(static_cast<size_t>(d.mesh.vertex_count()), 0);
     d.selected_faces.assign(static_cast<size_t>(d.mesh.face_count()), 0);
     return d;

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "app/editor/constraint_sets.h"
 #include "app/render/camera.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/io/io.h"
@@ -26,6 +27,15 @@ struct Document
     Box3 box;
     SelectionMask selected_vertices; //!< #V flags
     SelectionMask selected_faces;    //!< #F flags
+    //! \brief The shape the recipe starts from: the positions read, until Apply makes the
+    //! current shape the new start. mesh.positions is the current shape.
+    std::vector<Scalar> base_positions;
+    //! Solver steps from the base shape to the current one, and whether they all ran with
+    //! the current recipe (then the exported recipe reproduces the shape).
+    int steps_from_base = 0;
+    bool reproducible = true;
+    std::vector<ConstraintSet> sets; //!< the recipe's constraint sets
+    SolverSettings solver;           //!< the recipe's weights and iteration settings
     bool modified = false;           //!< changed since it was read or saved
 };
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <utility>
 
 #include "app/tools/brush_tool.h"
@@ -12,6 +13,7 @@
 #include "app/tools/rectangle_tool.h"
 #include "core/errors.h"
 #include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
 
 namespace meshfair::app {
 
@@ -55,6 +57,7 @@ EditorSession::EditorSession(Document document, Renderer& renderer)
     tools_[static_cast<int>(ToolKind::Rectangle)] = std::make_unique<RectangleTool>();
     tools_[static_cast<int>(ToolKind::Lasso)] = std::make_unique<LassoTool>();
     renderer_.set_mesh(document_.mesh, document_.draw_data);
+    problems_ = constraint_problems(document_.sets, document_.solver);
 }
 
 EditorSession::~EditorSession() = default;
@@ -157,7 +160,7 @@ void EditorSession::apply(std::span<const Index> elements)
 
 void EditorSession::begin_step()
 {
-    step_before_ = capture(document_);
+    step_before_ = capture(document_, kSelection);
 }
 
 void EditorSession::end_step(std::string label)
@@ -186,20 +189,413 @@ void EditorSession::set_elements(ElementKind kind)
 
 bool EditorSession::undo()
 {
-    if (gesture_ != nullptr || !history_.undo(document_))
+    if (gesture_ != nullptr)
         return false;
-    selection_changed();
+    close_run();
+    const unsigned parts = history_.undo(document_);
+    if (parts == 0)
+        return false;
+    after_history(parts);
     state_.message = "undid " + history_.redo_label();
     return true;
 }
 
 bool EditorSession::redo()
 {
-    if (gesture_ != nullptr || !history_.redo(document_))
+    if (gesture_ != nullptr)
         return false;
-    selection_changed();
+    close_run();
+    const unsigned parts = history_.redo(document_);
+    if (parts == 0)
+        return false;
+    after_history(parts);
     state_.message = "redid " + history_.undo_label();
     return true;
+}
+
+void EditorSession::after_history(unsigned parts)
+{
+    if (parts & kSelection)
+        selection_changed();
+    if (parts & (kSets | kSettings))
+        sets_changed();
+    if (parts & (kPositions | kBasePositions))
+    {
+        positions_changed();
+        recipe_dirty_ = true; // the solver starts again from the restored shape
+        restarted_recipe_.clear();
+    }
+}
+
+void EditorSession::record(const std::string& label, EditState before, bool merge)
+{
+    history_.record(label, std::move(before), document_, merge);
+}
+
+void EditorSession::sets_changed()
+{
+    problems_ = constraint_problems(document_.sets, document_.solver);
+    recipe_dirty_ = true;
+}
+
+void EditorSession::positions_changed()
+{
+    renderer_.update_positions(document_.mesh.positions);
+    ++geometry_;
+    document_.modified = true;
+}
+
+Mesh EditorSession::base_mesh() const
+{
+    Mesh base;
+    base.positions = document_.base_positions;
+    base.face_offsets = document_.mesh.face_offsets;
+    base.face_vertices = document_.mesh.face_vertices;
+    return base;
+}
+
+bool EditorSession::create_set(ConstraintKind kind, std::string name)
+{
+    if (gesture_ != nullptr)
+        return false;
+    const Mesh& mesh = document_.mesh;
+    const bool faces_mode = state_.tools.elements == ElementKind::Faces;
+    ConstraintSet set;
+    set.kind = kind;
+    set.color = default_color(kind);
+    if (kind == ConstraintKind::Region && faces_mode)
+        set.faces = selected_indices(document_.selected_faces);
+    else if (takes_vertices(kind))
+        set.vertices =
+            selected_indices(faces_mode ? vertices_of_faces(mesh, document_.selected_faces)
+                                        : document_.selected_vertices);
+    else
+        set.faces =
+            selected_indices(faces_mode ? document_.selected_faces
+                                        : faces_of_vertices(mesh, document_.selected_vertices));
+    if (set.vertices.empty() && set.faces.empty())
+    {
+        state_.message = "nothing selected for a " + std::string(kind_name(kind)) + " set";
+        return false;
+    }
+    if (name.empty())
+    {
+        int k = 1;
+        do
+            name = std::string(kind_name(kind)) + " " + std::to_string(k++);
+        while (set_named(name));
+    }
+    set.name = std::move(name);
+    EditState before = capture(document_, kSets);
+    state_.message = "set '" + set.name +
+                     "': " + std::to_string(set.vertices.size() + set.faces.size()) +
+                     (set.vertices.empty() ? " faces" : " vertices");
+    document_.sets.push_back(std::move(set));
+    record("new set", std::move(before));
+    sets_changed();
+    return true;
+}
+
+std::optional<size_t> EditorSession::set_named(const std::string& name) const
+{
+    for (size_t k = 0; k < document_.sets.size(); ++k)
+        if (document_.sets[k].name == name)
+            return k;
+    return std::nullopt;
+}
+
+void EditorSession::delete_set(size_t index)
+{
+    if (index >= document_.sets.size())
+        return;
+    EditState before = capture(document_, kSets);
+    document_.sets.erase(document_.sets.begin() + static_cast<std::ptrdiff_t>(index));
+    record("delete set", std::move(before));
+    sets_changed();
+}
+
+void EditorSession::rename_set(size_t index, std::string name)
+{
+    if (index >= document_.sets.size() || name.empty())
+        return;
+    EditState before = capture(document_, kSets);
+    document_.sets[index].name = std::move(name);
+    record("rename set", std::move(before), true);
+    sets_changed();
+}
+
+void EditorSession::set_visible(size_t index, bool visible)
+{
+    if (index >= document_.sets.size())
+        return;
+    EditState before = capture(document_, kSets);
+    document_.sets[index].visible = visible;
+    record(visible ? "show set" : "hide set", std::move(before));
+    sets_changed();
+}
+
+void EditorSession::set_color(size_t index, std::array<float, 3> color)
+{
+    if (index >= document_.sets.size())
+        return;
+    EditState before = capture(document_, kSets);
+    document_.sets[index].color = color;
+    record("set colour", std::move(before), true);
+    sets_changed();
+}
+
+void EditorSession::select_set(size_t index)
+{
+    if (index >= document_.sets.size() || gesture_ != nullptr)
+        return;
+    const ConstraintSet& set = document_.sets[index];
+    EditState before = capture(document_, kSelection);
+    const bool faces = set.vertices.empty();
+    SelectionMask& mask = faces ? document_.selected_faces : document_.selected_vertices;
+    std::fill(mask.begin(), mask.end(), 0);
+    apply_selection(mask, faces ? set.faces : set.vertices, SelectOp::Add);
+    state_.tools.elements = faces ? ElementKind::Faces : ElementKind::Vertices;
+    selection_changed();
+    record("select set", std::move(before));
+}
+
+void EditorSession::set_normal_direction(size_t index, Vec3 d)
+{
+    if (index >= document_.sets.size() || document_.sets[index].faces.empty())
+        return;
+    const Scalar length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(length > 0) || !std::isfinite(length))
+    {
+        state_.message = "a normal direction must not be zero";
+        return;
+    }
+    for (Scalar& c : d)
+        c /= length;
+    EditState before = capture(document_, kSets);
+    ConstraintSet& set = document_.sets[index];
+    set.normals.assign(set.faces.size(), d);
+    record("normal direction", std::move(before), true);
+    sets_changed();
+}
+
+void EditorSession::move_pins(size_t index, Vec3 offset)
+{
+    if (index >= document_.sets.size() || document_.sets[index].kind != ConstraintKind::Pin)
+        return;
+    EditState before = capture(document_, kSets);
+    ConstraintSet& set = document_.sets[index];
+    if (set.targets.empty())
+        for (const Index v : set.vertices)
+        {
+            const size_t k = 3 * static_cast<size_t>(v);
+            set.targets.push_back({document_.base_positions[k], document_.base_positions[k + 1],
+                                   document_.base_positions[k + 2]});
+        }
+    for (Vec3& t : set.targets)
+        for (int a = 0; a < 3; ++a)
+            t[static_cast<size_t>(a)] += offset[static_cast<size_t>(a)];
+    record("move pins", std::move(before), true);
+    sets_changed();
+}
+
+void EditorSession::set_solver_settings(const SolverSettings& settings, bool merge)
+{
+    if (settings == document_.solver)
+        return;
+    EditState before = capture(document_, kSettings);
+    const bool only_pace = [&] {
+        SolverSettings a = settings, b = document_.solver;
+        a.iterations_per_frame = b.iterations_per_frame = 0;
+        return a == b;
+    }();
+    document_.solver = settings;
+    solver_.set_iterations_per_frame(settings.iterations_per_frame);
+    record("solver settings", std::move(before), merge);
+    if (!only_pace) // how many steps a frame runs is not part of the recipe
+        sets_changed();
+}
+
+Recipe EditorSession::current_recipe() const
+{
+    return build_recipe(document_.sets, document_.solver, base_mesh(), document_.steps_from_base);
+}
+
+bool EditorSession::export_recipe(const std::string& path)
+{
+    if (!problems_.empty())
+    {
+        state_.message = "cannot export the recipe: " + problems_.front();
+        return false;
+    }
+    try
+    {
+        io::write_file_atomically(path, recipe_to_json(current_recipe()).dump(2) + "\n");
+        state_.message = "exported " + path +
+                         (document_.reproducible
+                              ? std::string(" (reproduces the shape from the base)")
+                              : std::string(" (the recipe changed during the run: Reset and run "
+                                            "again for a recipe that reproduces the shape)"));
+        return true;
+    }
+    catch (const std::exception& e)
+    {
+        state_.message = e.what();
+        return false;
+    }
+}
+
+bool EditorSession::import_recipe(const std::string& path)
+{
+    try
+    {
+        const Recipe recipe = read_recipe(path);
+        check_recipe(recipe, base_mesh());
+        ImportedRecipe imported = sets_from_recipe(recipe, document_.mesh);
+        close_run();
+        EditState before = capture(document_, kSets | kSettings);
+        imported.settings.iterations_per_frame = document_.solver.iterations_per_frame;
+        document_.sets = std::move(imported.sets);
+        document_.solver = imported.settings;
+        record("import recipe", std::move(before));
+        sets_changed();
+        state_.message = "imported " + path + " (" + std::to_string(imported.iterations) +
+                         " iterations in the file: Step runs them)";
+        return true;
+    }
+    catch (const InvalidInputError& e)
+    {
+        state_.message = e.what();
+        return false;
+    }
+}
+
+void EditorSession::play(int frames)
+{
+    if (run_open_ || gesture_ != nullptr)
+        return;
+    update(); // the recipe restarted if it changed
+    if (!problems_.empty())
+    {
+        state_.message = "cannot solve: " + problems_.front();
+        return;
+    }
+    run_before_ = capture(document_, kPositions);
+    run_open_ = true;
+    solver_.set_playing(true, frames);
+}
+
+void EditorSession::pause()
+{
+    if (!run_open_)
+        return;
+    solver_.set_playing(false);
+    solver_.wait_idle();
+    close_run();
+}
+
+bool EditorSession::take_frame()
+{
+    const bool published = solver_.wait_published();
+    update();
+    return published;
+}
+
+void EditorSession::close_run()
+{
+    if (!run_open_)
+        return;
+    run_open_ = false; // before update(), which closes a converged run
+    solver_.set_playing(false);
+    solver_.wait_idle();
+    update(); // the last frame's positions
+    const int steps = document_.steps_from_base - (run_before_ ? *run_before_->steps_from_base : 0);
+    record("solve " + std::to_string(steps) + " steps", std::move(*run_before_));
+    run_before_.reset();
+}
+
+void EditorSession::step(int n)
+{
+    if (gesture_ != nullptr || n <= 0)
+        return;
+    close_run();
+    update();
+    if (!problems_.empty())
+    {
+        state_.message = "cannot solve: " + problems_.front();
+        return;
+    }
+    EditState before = capture(document_, kPositions);
+    solver_.step_now(n);
+    update();
+    record("step " + std::to_string(n), std::move(before));
+}
+
+void EditorSession::reset_shape()
+{
+    if (gesture_ != nullptr)
+        return;
+    close_run();
+    EditState before = capture(document_, kPositions);
+    document_.mesh.positions = document_.base_positions;
+    document_.steps_from_base = 0;
+    document_.reproducible = true;
+    positions_changed();
+    recipe_dirty_ = true;
+    restarted_recipe_.clear();
+    record("reset shape", std::move(before));
+}
+
+void EditorSession::apply_shape()
+{
+    if (gesture_ != nullptr)
+        return;
+    close_run();
+    EditState before = capture(document_, kPositions | kBasePositions);
+    document_.base_positions = document_.mesh.positions;
+    document_.steps_from_base = 0;
+    document_.reproducible = true;
+    recipe_dirty_ = true;
+    restarted_recipe_.clear();
+    record("apply shape", std::move(before));
+}
+
+void EditorSession::update()
+{
+    if (recipe_dirty_)
+    {
+        recipe_dirty_ = false;
+        if (!problems_.empty())
+        {
+            solver_.clear();
+            restarted_recipe_.clear();
+        }
+        else
+        {
+            const Mesh base = base_mesh();
+            const Recipe recipe = build_recipe(document_.sets, document_.solver, base, 0);
+            const std::string json = recipe_to_json(recipe).dump();
+            if (json != restarted_recipe_)
+            {
+                // From the base (the recipe's input shape), starting at the current positions.
+                const bool at_base = document_.steps_from_base == 0;
+                solver_.restart(base, recipe,
+                                at_base ? std::vector<Scalar>{} : document_.mesh.positions);
+                if (!at_base)
+                    document_.reproducible = false;
+                steps_at_restart_ = document_.steps_from_base;
+                restarted_recipe_ = json;
+                if (run_open_)
+                    solver_.set_playing(true);
+            }
+        }
+    }
+    if (solver_.take(document_.mesh.positions))
+    {
+        document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
+        positions_changed();
+    }
+    if (run_open_ && !solver_.status().playing && solver_.status().ready)
+        close_run(); // converged
 }
 
 void EditorSession::carry_out(const UiRequests& r)
@@ -265,6 +661,12 @@ void EditorSession::reset_for_document()
 {
     visibility_.reset(); // another mesh
     face_points_.reset();
+    run_open_ = false;
+    run_before_.reset();
+    solver_.clear();
+    restarted_recipe_.clear();
+    recipe_dirty_ = true;
+    problems_ = constraint_problems(document_.sets, document_.solver);
     history_.clear();
     step_before_.reset();
     selection_changed();
@@ -316,7 +718,8 @@ void EditorSession::prepare_ui()
 
 EditorSession::VisibilityKey EditorSession::view_key() const
 {
-    return {camera_.view_matrix(), camera_.projection_matrix(aspect()), view_.width, view_.height};
+    return {camera_.view_matrix(), camera_.projection_matrix(aspect()), view_.width, view_.height,
+            geometry_};
 }
 
 std::span<const ScreenPoint> EditorSession::face_points()

@@ -9,6 +9,7 @@
 #include "app/editor/document.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/history.h"
+#include "app/editor/live_solver.h"
 #include "app/editor/navigation.h"
 #include "app/render/renderer.h"
 #include "app/tools/selection_commands.h"
@@ -72,6 +73,63 @@ public:
     //! Saves the mesh (format from the extension, atomic); false and a message on failure.
     bool save(const std::string& path);
 
+    // --- Constraint sets; each change is one undo step.
+    //! \brief Makes a set of `kind` from the selection of the current mode (vertex kinds
+    //! from selected vertices, or the vertices of selected faces; face kinds from selected
+    //! faces, or the faces whose vertices are all selected; a region keeps faces as faces).
+    //! False, with a message, when that gives no element.
+    bool create_set(ConstraintKind kind, std::string name = {});
+    //! The index of the set named `name`, if any.
+    std::optional<size_t> set_named(const std::string& name) const;
+    void delete_set(size_t index);
+    void rename_set(size_t index, std::string name);
+    void set_visible(size_t index, bool visible);
+    void set_color(size_t index, std::array<float, 3> color);
+    //! Replaces the selection with the set's elements (and switches to its mode).
+    void select_set(size_t index);
+    //! Gives every face of a normal set the unit direction of `direction` (not zero).
+    void set_normal_direction(size_t index, Vec3 direction);
+    //! \brief Moves a pin set's targets by `offset` (the view-plane drag of its glyphs):
+    //! the paper's hard constraints moved to targets.
+    void move_pins(size_t index, Vec3 offset);
+    //! \brief New solver settings; with `merge`, a series of changes of one control is one
+    //! undo step.
+    void set_solver_settings(const SolverSettings& settings, bool merge = true);
+    //! Why the sets cannot run as they are (constraint_problems); empty when they can.
+    const std::vector<std::string>& problems() const { return problems_; }
+
+    // --- Solving. The recipe is precomputed on the solver's thread once per change of the
+    // sets or settings, never per frame.
+    //! \brief Starts live solving: steps run on the worker, the view shows the newest
+    //! positions; with `frames` > 0 it pauses by itself after that many frames.
+    void play(int frames = 0);
+    //! Stops: the run since play() is one undo step.
+    void pause();
+    bool playing() const { return run_open_; }
+    //! \brief While playing: waits for the solver's next frame and takes it (update());
+    //! false when playing stopped instead. For scripts, which need no display's pace.
+    bool take_frame();
+    //! Runs `n` steps now (one undo step).
+    void step(int n);
+    //! Back to the base shape (one undo step).
+    void reset_shape();
+    //! Makes the current shape the base the recipe starts from (one undo step).
+    void apply_shape();
+    SolverStatus solver_status() const { return solver_.status(); }
+    std::vector<EnergySample> energies() const { return solver_.energies(); }
+    //! \brief The recipe of the sets and settings with the steps taken from the base shape:
+    //! what `meshfair-cli smooth BASE --recipe R.json` runs to reproduce the current shape
+    //! (bit for bit when document().reproducible).
+    Recipe current_recipe() const;
+    //! Writes current_recipe() as JSON (atomic); false and a message on failure.
+    bool export_recipe(const std::string& path);
+    //! Replaces the sets and settings by a recipe's (one undo step); false and a message when
+    //! it cannot be read or does not fit the mesh.
+    bool import_recipe(const std::string& path);
+    //! \brief Once per frame, before drawing: restarts the solver when the recipe changed,
+    //! takes its newest positions and hands them to the renderer.
+    void update();
+
     //! Fills the state the interface shows: the tool's overlay, the history, the counts.
     void prepare_ui();
     //! \brief What the view shows now (Renderer::visibility), kept until the camera, the
@@ -97,6 +155,13 @@ private:
     }
     void reset_for_document();
     void remember(const std::string& path);
+    //! Records a step of `parts` begun with `before`.
+    void record(const std::string& label, EditState before, bool merge = false);
+    void sets_changed();
+    void after_history(unsigned parts);
+    void positions_changed();
+    void close_run();
+    Mesh base_mesh() const;
 
     Document document_;
     Renderer& renderer_;
@@ -111,6 +176,14 @@ private:
     SelectOp gesture_op_ = SelectOp::Replace;
     ElementKind gesture_elements_ = ElementKind::Vertices;
     std::optional<EditState> step_before_; // the state when the current step began
+    LiveSolver solver_;
+    std::vector<std::string> problems_;
+    bool recipe_dirty_ = true;     // the sets or settings changed since the last restart
+    std::string restarted_recipe_; // the recipe of the last restart, as JSON
+    int steps_at_restart_ = 0;     // steps_from_base when the solver last restarted
+    bool run_open_ = false;        // play() began a run not yet recorded
+    std::optional<EditState> run_before_;
+    std::uint64_t geometry_ = 0; // changes of the positions, for the visibility key
     ScreenPoint cursor_;
     bool selection_dirty_ = true;
     bool counts_dirty_ = true;
@@ -120,6 +193,7 @@ private:
     {
         glm::dmat4 view{0.0}, projection{0.0};
         int width = 0, height = 0;
+        std::uint64_t geometry = 0;
         bool operator==(const VisibilityKey&) const = default;
     };
     std::optional<Visibility> visibility_;

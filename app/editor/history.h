@@ -6,21 +6,39 @@
 #include <deque>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/editor/document.h"
 
 namespace meshfair::app {
 
-//! \brief What undo restores: the parts of a document the user edits. A step keeps only
-//! the parts it changed, so a selection change costs its masks and never the positions.
+//! The parts of a document the user edits, as flags: what a step may change.
+enum EditPart : unsigned
+{
+    kSelection = 1,     //!< the vertex and face selections
+    kSets = 2,          //!< the constraint sets
+    kSettings = 4,      //!< the solver settings
+    kPositions = 8,     //!< the current shape
+    kBasePositions = 16 //!< the shape the recipe starts from (changed by Apply)
+};
+
+//! \brief What undo restores: the parts of a document a step changed, each as it was
+//! before the step. Parts a step did not change are not kept, so a selection change costs
+//! its flags and never the positions.
 struct EditState
 {
     std::optional<SelectionMask> selected_vertices;
     std::optional<SelectionMask> selected_faces;
+    std::optional<std::vector<ConstraintSet>> sets;
+    std::optional<SolverSettings> solver;
+    std::optional<std::vector<Scalar>> positions; //!< with the two below
+    std::optional<int> steps_from_base;
+    std::optional<bool> reproducible;
+    std::optional<std::vector<Scalar>> base_positions;
 };
 
-//! The document's edited parts, all of them.
-EditState capture(const Document& document);
+//! Copies the document's `parts` (EditPart flags).
+EditState capture(const Document& document, unsigned parts);
 
 //! \brief Undo and redo: a list of steps, each the state before it in the parts it
 //! changed. Undo swaps a step's parts with the document's, so the step then holds the
@@ -36,13 +54,14 @@ public:
 
     //! \brief Records that `label` took the document from `before` to its current state.
     //! Parts that did not change are not kept; a step that changed nothing is not recorded
-    //! (returns false). Clears the redo list.
-    bool record(std::string label, EditState before, const Document& now);
+    //! (returns false). Clears the redo list. With `merge`, a step of the same label as the
+    //! newest one joins it (a slider dragged through many values is one step).
+    bool record(std::string label, EditState before, const Document& now, bool merge = false);
 
-    //! Undoes the newest step on `document`; false when there is none.
-    bool undo(Document& document);
-    //! Redoes the step undone last; false when there is none.
-    bool redo(Document& document);
+    //! Undoes the newest step on `document`; returns the parts it changed (0: none).
+    unsigned undo(Document& document);
+    //! Redoes the step undone last; returns the parts it changed (0: none).
+    unsigned redo(Document& document);
 
     std::size_t undo_count() const { return undo_.size(); }
     std::size_t redo_count() const { return redo_.size(); }
@@ -65,7 +84,7 @@ private:
         std::size_t bytes = 0;
     };
     static std::size_t bytes_of(const EditState& state);
-    static void swap_with(EditState& state, Document& document);
+    static unsigned swap_with(EditState& state, Document& document);
     void enforce_limit();
 
     std::deque<Step> undo_, redo_;

@@ -46,6 +46,7 @@ public:
     void screenshot(const std::string& path) override
     {
         layout();
+        session_.update();
         session_.draw();
         if (layer_)
             layer_->draw();

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/script.h"
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -76,13 +77,26 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     a.where = r.where;
     if (!j.is_object())
         fail(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",  "elements",   "through",    "brush_radius", "drag",
-                                        "click", "scroll",     "select",     "undo",         "redo",
-                                        "view",  "projection", "screenshot", "save_mesh"};
+    static const char* const kinds[] = {"tool",         "elements",  "through",
+                                        "brush_radius", "drag",      "click",
+                                        "scroll",       "select",    "undo",
+                                        "redo",         "view",      "projection",
+                                        "screenshot",   "save_mesh", "create_set",
+                                        "delete_set",   "show_set",  "hide_set",
+                                        "select_set",   "move_pins", "normal_direction",
+                                        "solver",       "step",      "play",
+                                        "reset",        "apply",     "export_recipe",
+                                        "import_recipe"};
+    // Options, and the one action each belongs to.
+    static const std::pair<const char*, const char*> options[] = {
+        {"name", "create_set"}, {"offset", "move_pins"}, {"direction", "normal_direction"}};
     std::string kind;
     for (const auto& [key, value] : j.items())
     {
         if (key == "modifiers" || key == "button" || key == "at")
+            continue;
+        if (std::any_of(std::begin(options), std::end(options),
+                        [&](const auto& o) { return key == o.first; }))
             continue;
         if (std::find(std::begin(kinds), std::end(kinds), key) == std::end(kinds))
             r.bad(key, "is not an action or an action's option");
@@ -128,6 +142,21 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     }
     if (j.contains("at") && kind != "scroll")
         r.bad("at", "only a scroll takes 'at'");
+    for (const auto& [option, owner] : options)
+        if (j.contains(option) && kind != owner)
+            r.bad(option, std::string("only ") + owner + " takes '" + option + "'");
+    const auto vector = [&](const char* key) {
+        const Json& x = j[key];
+        if (!x.is_array() || x.size() != 3)
+            r.bad(key, "must be [x, y, z]");
+        return Vec3{r.number(x[0], key, -1e9, 1e9), r.number(x[1], key, -1e9, 1e9),
+                    r.number(x[2], key, -1e9, 1e9)};
+    };
+    const auto count = [&](int lo, int hi) {
+        if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
+            r.bad(kind, "must be a count from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return static_cast<int>(v.get<long long>());
+    };
 
     if (kind == "tool")
     {
@@ -209,14 +238,171 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         if (a.text != "perspective" && a.text != "orthographic")
             r.bad(kind, "must be \"perspective\" or \"orthographic\"");
     }
+    else if (kind == "create_set")
+    {
+        a.kind = Kind::CreateSet;
+        a.text = r.text(v, kind);
+        if (!kind_named(a.text))
+            r.bad(kind, "'" + a.text +
+                            "' is not region, pin, anchor, centroid, normal, "
+                            "hard_normal or soft_normal");
+        if (j.contains("name"))
+            a.name = r.text(j["name"], "name");
+    }
+    else if (kind == "delete_set" || kind == "show_set" || kind == "hide_set" ||
+             kind == "select_set" || kind == "move_pins" || kind == "normal_direction")
+    {
+        a.kind = kind == "delete_set"         ? Kind::DeleteSet
+                 : kind == "select_set"       ? Kind::SelectSet
+                 : kind == "move_pins"        ? Kind::MovePins
+                 : kind == "normal_direction" ? Kind::NormalDirection
+                                              : Kind::ShowSet;
+        a.value = kind == "hide_set" ? 0 : 1;
+        a.name = r.text(v, kind);
+        if (kind == "move_pins")
+        {
+            if (!j.contains("offset"))
+                r.bad(kind, "needs 'offset': [x, y, z]");
+            a.vector = vector("offset");
+        }
+        if (kind == "normal_direction")
+        {
+            if (!j.contains("direction"))
+                r.bad(kind, "needs 'direction': [x, y, z]");
+            a.vector = vector("direction");
+            if (a.vector == Vec3{0, 0, 0})
+                r.bad("direction", "must not be zero");
+        }
+    }
+    else if (kind == "solver")
+    {
+        a.kind = Kind::Solver;
+        if (!v.is_object())
+            r.bad(kind, "must be an object of solver settings");
+        SolverSettings& s = a.settings;
+        for (const auto& [key, value] : v.items())
+        {
+            const std::string k = "solver." + key;
+            a.keys.push_back(key);
+            if (key == "lambda")
+            {
+                if (value.is_string() && value.get<std::string>() == "optimal")
+                    s.optimal_step = true;
+                else
+                    s.lambda = r.number(value, k, 1e-9, 1e3);
+            }
+            else if (key == "iterations_per_frame")
+                s.iterations_per_frame = static_cast<int>(r.number(value, k, 1, 100000));
+            else if (key == "tolerance")
+                s.tolerance = r.number(value, k, 0, 1);
+            else if (key == "anchor_mu")
+                s.anchor_mu = r.number(value, k, 0, 1e12);
+            else if (key == "centroid_mu")
+                s.centroid_mu = r.number(value, k, 0, 1e12);
+            else if (key == "normal_mu")
+                s.normal_mu = r.number(value, k, 0, 1e12);
+            else if (key == "soft_normal_mu")
+                s.soft_normal_mu = r.number(value, k, 0, 1e12);
+            else if (key == "gamma")
+                s.gamma = r.number(value, k, 0, 1e12);
+            else if (key == "normal_smoothing_iterations")
+                s.normal_smoothing_iterations = static_cast<int>(r.number(value, k, 0, 100000));
+            else if (key == "normal_smoothing_lambda")
+                s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
+            else if (key == "joint")
+            {
+                if (!value.is_boolean())
+                    r.bad(k, "must be true or false");
+                s.joint = value.get<bool>();
+            }
+            else if (key == "denominator")
+            {
+                const std::string d = r.text(value, k);
+                if (d != "paper" && d != "exact")
+                    r.bad(k, "must be \"paper\" or \"exact\"");
+                s.denominator =
+                    d == "exact" ? CentroidDenominator::Exact : CentroidDenominator::Paper;
+            }
+            else if (key == "normals")
+            {
+                const std::string n = r.text(value, k);
+                if (n != "initial" && n != "smoothed")
+                    r.bad(k, "must be \"initial\" or \"smoothed\"");
+                s.normal_source = n == "smoothed" ? NormalSource::Smoothed : NormalSource::Initial;
+            }
+            else
+                r.bad(k, "is not a solver setting");
+        }
+    }
+    else if (kind == "step" || kind == "play")
+    {
+        a.kind = kind == "step" ? Kind::Step : Kind::Play;
+        a.count = count(1, 1000000);
+    }
+    else if (kind == "reset" || kind == "apply")
+    {
+        a.kind = kind == "reset" ? Kind::Reset : Kind::Apply;
+        if (!v.is_boolean() || !v.get<bool>())
+            r.bad(kind, "must be true");
+    }
     else
     {
-        a.kind = kind == "screenshot" ? Kind::Screenshot : Kind::SaveMesh;
+        a.kind = kind == "screenshot"      ? Kind::Screenshot
+                 : kind == "save_mesh"     ? Kind::SaveMesh
+                 : kind == "export_recipe" ? Kind::ExportRecipe
+                                           : Kind::ImportRecipe;
         a.text = r.text(v, kind);
         if (a.text.empty())
             r.bad(kind, "must be a file name");
     }
     return a;
+}
+
+// The session's settings with the keys an action gives replaced.
+SolverSettings merged_settings(const ScriptAction& a, SolverSettings s)
+{
+    const SolverSettings& g = a.settings;
+    for (const std::string& key : a.keys)
+    {
+        if (key == "lambda")
+        {
+            s.optimal_step = g.optimal_step;
+            s.lambda = g.optimal_step ? s.lambda : g.lambda;
+        }
+        else if (key == "iterations_per_frame")
+            s.iterations_per_frame = g.iterations_per_frame;
+        else if (key == "tolerance")
+            s.tolerance = g.tolerance;
+        else if (key == "anchor_mu")
+            s.anchor_mu = g.anchor_mu;
+        else if (key == "centroid_mu")
+            s.centroid_mu = g.centroid_mu;
+        else if (key == "normal_mu")
+            s.normal_mu = g.normal_mu;
+        else if (key == "soft_normal_mu")
+            s.soft_normal_mu = g.soft_normal_mu;
+        else if (key == "gamma")
+            s.gamma = g.gamma;
+        else if (key == "normal_smoothing_iterations")
+            s.normal_smoothing_iterations = g.normal_smoothing_iterations;
+        else if (key == "normal_smoothing_lambda")
+            s.normal_smoothing_lambda = g.normal_smoothing_lambda;
+        else if (key == "joint")
+            s.joint = g.joint;
+        else if (key == "denominator")
+            s.denominator = g.denominator;
+        else if (key == "normals")
+            s.normal_source = g.normal_source;
+    }
+    return s;
+}
+
+// Live solving for `frames` frames of the solver's thread, as the window shows them.
+void play_frames(EditorSession& session, int frames)
+{
+    session.play(frames); // the solver pauses by itself after them
+    while (session.playing())
+        session.take_frame();
 }
 
 } // namespace
@@ -249,6 +435,7 @@ Script parse_script(const std::string& text, const std::string& name)
     if (!list->is_array())
         fail(name, "actions", "must be a list of actions");
     Script script;
+    script.name = name;
     for (size_t k = 0; k < list->size(); ++k)
         script.actions.push_back(
             parse_action((*list)[k], Reader{name, "actions[" + std::to_string(k) + "]"}));
@@ -262,6 +449,12 @@ Script read_script(const std::string& path)
 
 void play_script(const Script& script, EditorSession& session, ScriptHost& host)
 {
+    const auto set_index = [&](const ScriptAction& a) {
+        const std::optional<size_t> k = session.set_named(a.name);
+        if (!k)
+            fail(script.name, a.where, "no set named '" + a.name + "'");
+        return *k;
+    };
     // Framebuffer pixels to the view's, as the window's cursor() does.
     auto in_view = [&](const ScreenPoint& p) {
         const ViewRect& v = session.view_rect();
@@ -344,6 +537,61 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
             case Kind::SaveMesh:
                 if (!session.save(a.text))
                     throw WriteError(a.where + ": " + session.state().message);
+                break;
+            case Kind::CreateSet:
+                if (!session.create_set(*kind_named(a.text), a.name))
+                    fail(script.name, a.where, session.state().message);
+                break;
+            case Kind::DeleteSet:
+                session.delete_set(set_index(a));
+                break;
+            case Kind::ShowSet:
+                session.set_visible(set_index(a), a.value != 0);
+                break;
+            case Kind::SelectSet:
+                session.select_set(set_index(a));
+                break;
+            case Kind::MovePins:
+            {
+                const size_t k = set_index(a);
+                if (session.document().sets[k].kind != ConstraintKind::Pin)
+                    fail(script.name, a.where, "set '" + a.name + "' is not a pin set");
+                session.move_pins(k, a.vector);
+                break;
+            }
+            case Kind::NormalDirection:
+            {
+                const size_t k = set_index(a);
+                if (session.document().sets[k].faces.empty())
+                    fail(script.name, a.where, "set '" + a.name + "' has no faces");
+                session.set_normal_direction(k, a.vector);
+                break;
+            }
+            case Kind::Solver:
+                session.set_solver_settings(merged_settings(a, session.document().solver), false);
+                break;
+            case Kind::Step:
+            case Kind::Play:
+                if (!session.problems().empty())
+                    fail(script.name, a.where, "cannot solve: " + session.problems().front());
+                if (a.kind == Kind::Step)
+                    session.step(a.count);
+                else
+                    play_frames(session, a.count);
+                break;
+            case Kind::Reset:
+                session.reset_shape();
+                break;
+            case Kind::Apply:
+                session.apply_shape();
+                break;
+            case Kind::ExportRecipe:
+                if (!session.export_recipe(a.text))
+                    throw WriteError(a.where + ": " + session.state().message);
+                break;
+            case Kind::ImportRecipe:
+                if (!session.import_recipe(a.text))
+                    fail(script.name, a.where, session.state().message);
                 break;
         }
         session.carry_out(r);

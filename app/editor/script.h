@@ -15,20 +15,33 @@ struct ScriptAction
 {
     enum class Kind
     {
-        Tool,        //!< text: a tool name ("brush")
-        Elements,    //!< text: "vertices" or "faces"
-        Through,     //!< value: 1 selects through the surface
-        BrushRadius, //!< value: pixels
-        Drag,        //!< points: press at the first, move through the rest, release at the last
-        Click,       //!< points[0]: press and release there
-        Scroll,      //!< value: wheel notches, points[0] the cursor
-        Select,      //!< text: a selection command ("grow")
-        Undo,        //!< count times
-        Redo,        //!< count times
-        View,        //!< text: a standard view ("front") or "all" / "selection" to frame
-        Projection,  //!< text: "perspective" or "orthographic"
-        Screenshot,  //!< text: a PNG path
-        SaveMesh     //!< text: a mesh path (format from the extension)
+        Tool,            //!< text: a tool name ("brush")
+        Elements,        //!< text: "vertices" or "faces"
+        Through,         //!< value: 1 selects through the surface
+        BrushRadius,     //!< value: pixels
+        Drag,            //!< points: press at the first, move through the rest, release at the last
+        Click,           //!< points[0]: press and release there
+        Scroll,          //!< value: wheel notches, points[0] the cursor
+        Select,          //!< text: a selection command ("grow")
+        Undo,            //!< count times
+        Redo,            //!< count times
+        View,            //!< text: a standard view ("front") or "all" / "selection" to frame
+        Projection,      //!< text: "perspective" or "orthographic"
+        Screenshot,      //!< text: a PNG path
+        SaveMesh,        //!< text: a mesh path (format from the extension)
+        CreateSet,       //!< text: a kind ("pin"); name: the set's name (empty: numbered)
+        DeleteSet,       //!< name
+        ShowSet,         //!< name; value: 1 show, 0 hide
+        SelectSet,       //!< name
+        MovePins,        //!< name; vector: the offset
+        NormalDirection, //!< name; vector: the direction
+        Solver,          //!< settings: the solver panel's values
+        Step,            //!< count steps now
+        Play,            //!< count frames of live solving on the solver's thread, then pause
+        Reset,           //!< back to the base shape
+        Apply,           //!< the current shape becomes the base
+        ExportRecipe,    //!< text: a JSON path
+        ImportRecipe     //!< text: a JSON path
     };
     Kind kind = Kind::Tool;
     std::string where; //!< "actions[3]", for messages
@@ -38,10 +51,15 @@ struct ScriptAction
     std::vector<ScreenPoint> points;
     MouseButton button = MouseButton::Left;
     Modifiers mods;
+    std::string name; //!< a set's name
+    Vec3 vector{0, 0, 0};
+    SolverSettings settings;       //!< Solver: the values given, the others as they were...
+    std::vector<std::string> keys; //!< ...these keys given
 };
 
 struct Script
 {
+    std::string name; //!< the file, for messages
     std::vector<ScriptAction> actions;
 };
 
@@ -64,8 +82,10 @@ public:
 };
 
 //! \brief Plays the actions through the calls the window's mouse and keys make.
-//! \throw WriteError when a screenshot or a mesh cannot be written (files already there
-//! are kept whole).
+//! \throw WriteError when a screenshot, a mesh or a recipe cannot be written (files
+//! already there are kept whole); InvalidInputError naming the action when it names a set
+//! that does not exist, imports a recipe that cannot be read or does not fit, or runs the
+//! solver on sets that cannot run (constraint_problems).
 void play_script(const Script& script, EditorSession& session, ScriptHost& host);
 
 } // namespace meshfair::app

@@ -371,8 +371,9 @@ void run_window(const WindowOptions& options)
     using Clock = std::chrono::steady_clock;
     while (!glfwWindowShouldClose(window))
     {
-        // Nothing animates yet: sleep until an event, but redraw at least twice a second.
-        if (first)
+        // While solving, a frame as soon as the display takes one; else sleep until an
+        // event, but redraw at least twice a second.
+        if (first || editor->session->playing())
             glfwPollEvents();
         else
             glfwWaitEventsTimeout(0.5);
@@ -393,6 +394,7 @@ void run_window(const WindowOptions& options)
         const UiRequests keys = std::exchange(e.pending, UiRequests{});
         e.carry_out(keys);
         e.carry_out(r);
+        session.update();
         session.draw();
         if (keys.screenshot || r.screenshot)
             e.screenshot(); // the view without the panels

@@ -142,7 +142,7 @@ TEST_SUITE("History")
         std::vector<SelectionMask> states{d.selected_vertices};
         for (int k = 0; k < 12; ++k)
         {
-            EditState before = capture(d);
+            EditState before = capture(d, kSelection);
             before.selected_faces.reset(); // as a vertex tool would leave it
             d.selected_vertices[static_cast<size_t>(k)] = 1;
             REQUIRE(h.record("step", std::move(before), d));
@@ -152,16 +152,16 @@ TEST_SUITE("History")
         CHECK(h.undo_count() == 5);
         CHECK(h.dropped() == 7);
         for (int k = 0; k < 5; ++k)
-            REQUIRE(h.undo(d));
-        CHECK_FALSE(h.undo(d));
+            REQUIRE(h.undo(d) != 0);
+        CHECK(h.undo(d) == 0);
         CHECK(d.selected_vertices == states[12 - 5]); // as far back as was kept
         // A step that changed nothing is not recorded; the limit can be lowered later.
-        CHECK_FALSE(h.record("nothing", capture(d), d));
+        CHECK_FALSE(h.record("nothing", capture(d, kSelection), d));
         h.set_limit(2 * mask);
         CHECK(h.bytes() <= 2 * mask);
         // The newest step is kept even when it alone is over the limit.
         History tiny(1);
-        EditState before = capture(d);
+        EditState before = capture(d, kSelection);
         d.selected_faces[0] = 1;
         CHECK(tiny.record("big", std::move(before), d));
         CHECK(tiny.undo_count() == 1);

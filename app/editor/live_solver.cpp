@@ -1,0 +1,258 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/live_solver.h"
+
+#include <chrono>
+#include <utility>
+
+#include "core/solver/solver.h"
+
+namespace meshfair::app {
+
+namespace {
+
+constexpr size_t kMaxEnergySamples = 20000;
+
+// The file-order positions `file` in the run's numbering.
+std::vector<Scalar> internal_positions(const LocalityRun& run, const std::vector<Scalar>& file)
+{
+    const std::vector<Index>& order = run.order().vertex_order;
+    std::vector<Scalar> x(file.size());
+    for (size_t k = 0; k < order.size(); ++k)
+        for (size_t a = 0; a < 3; ++a)
+            x[3 * k + a] = file[3 * static_cast<size_t>(order[k]) + a];
+    return x;
+}
+
+} // namespace
+
+LiveSolver::LiveSolver() : thread_([this] { worker(); }) {}
+
+LiveSolver::~LiveSolver()
+{
+    {
+        std::lock_guard lock(mutex_);
+        quit_ = true;
+    }
+    wake_.notify_all();
+    thread_.join();
+}
+
+void LiveSolver::restart(const Mesh& base, const Recipe& recipe, std::vector<Scalar> start)
+{
+    {
+        std::lock_guard lock(mutex_);
+        restart_ = Restart{base, recipe, std::move(start)};
+        ++generation_;
+        status_.playing = false;
+        status_.ready = false;
+        status_.converged = false;
+        status_.error.clear();
+        status_.steps = 0;
+        energies_.clear();
+        fresh_ = false;
+    }
+    wake_.notify_all();
+}
+
+void LiveSolver::clear()
+{
+    std::unique_lock lock(mutex_);
+    restart_.reset();
+    ++generation_;
+    done_.wait(lock, [&] { return !busy_; });
+    run_.reset();
+    status_ = {};
+    energies_.clear();
+    fresh_ = false;
+}
+
+void LiveSolver::set_playing(bool playing, int frames)
+{
+    {
+        std::lock_guard lock(mutex_);
+        status_.playing = playing && (run_ != nullptr || restart_.has_value());
+        frames_left_ = playing ? std::max(frames, 0) : 0;
+        if (playing)
+            status_.converged = false;
+    }
+    wake_.notify_all();
+}
+
+void LiveSolver::set_iterations_per_frame(int n)
+{
+    std::lock_guard lock(mutex_);
+    iterations_per_frame_ = std::max(1, n);
+}
+
+void LiveSolver::step_now(int n)
+{
+    std::unique_lock lock(mutex_);
+    status_.playing = false;
+    done_.wait(lock, [&] { return !busy_ && !restart_; });
+    if (run_ && n > 0)
+        run_steps(n, lock);
+}
+
+bool LiveSolver::wait_published()
+{
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return fresh_ || (!status_.playing && !busy_ && !restart_); });
+    return fresh_;
+}
+
+void LiveSolver::wait_idle()
+{
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return !busy_ && !restart_; });
+}
+
+bool LiveSolver::take(std::vector<Scalar>& positions)
+{
+    {
+        std::lock_guard lock(mutex_);
+        if (!fresh_)
+            return false;
+        std::swap(positions, published_);
+        fresh_ = false;
+    }
+    wake_.notify_all(); // a playing worker waits for this
+    return true;
+}
+
+SolverStatus LiveSolver::status() const
+{
+    std::lock_guard lock(mutex_);
+    return status_;
+}
+
+std::vector<EnergySample> LiveSolver::energies() const
+{
+    std::lock_guard lock(mutex_);
+    return energies_;
+}
+
+void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
+{
+    busy_ = true;
+    const std::uint64_t generation = generation_;
+    const Scalar tolerance = run_->session().recipe().tolerance;
+    TermEnergies before = energies_.empty() ? run_->energy() : energies_.back().energy;
+    lock.unlock();
+
+    // Outside the lock: the interface keeps drawing while the steps run.
+    const auto t = std::chrono::steady_clock::now();
+    int done = 0;
+    bool converged_now = false;
+    for (; done < n && !converged_now; ++done)
+    {
+        run_->step();
+        if (tolerance > 0) // the command line's rule, step by step
+        {
+            const TermEnergies after = run_->energy();
+            converged_now = converged(before.total(), after.total(), tolerance);
+            before = after;
+        }
+    }
+    const TermEnergies energy = tolerance > 0 ? before : run_->energy();
+    back_.resize(run_->session().positions().size());
+    run_->file_positions(back_);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+
+    lock.lock();
+    busy_ = false;
+    if (generation == generation_)
+    {
+        status_.steps += done;
+        status_.step_ms = ms;
+        status_.converged = converged_now;
+        if (converged_now || (frames_left_ > 0 && --frames_left_ == 0))
+            status_.playing = false;
+        energies_.push_back({status_.steps, energy});
+        if (energies_.size() > kMaxEnergySamples) // keep the whole curve, at half the detail
+        {
+            size_t kept = 0;
+            for (size_t k = 0; k < energies_.size(); k += 2)
+                energies_[kept++] = energies_[k];
+            energies_.resize(kept);
+        }
+        std::swap(back_, published_);
+        fresh_ = true;
+    }
+    done_.notify_all();
+    wake_.notify_all();
+}
+
+void LiveSolver::worker()
+{
+    std::unique_lock lock(mutex_);
+    for (;;)
+    {
+        wake_.wait(lock, [&] {
+            return quit_ || (restart_ && !busy_) ||
+                   (status_.playing && run_ && !fresh_ && !busy_ && !restart_);
+        });
+        if (quit_)
+            return;
+        if (restart_)
+        {
+            Restart r = std::move(*restart_);
+            restart_.reset();
+            busy_ = true;
+            const std::uint64_t generation = generation_;
+            const bool play = status_.playing;
+            lock.unlock();
+
+            const auto t = std::chrono::steady_clock::now();
+            std::unique_ptr<LocalityRun> run;
+            std::string error;
+            TermEnergies energy;
+            std::vector<Scalar> published;
+            try
+            {
+                check_recipe(r.recipe, r.base);
+                run = std::make_unique<LocalityRun>(std::move(r.base), r.recipe);
+                if (!r.start.empty())
+                {
+                    std::vector<Scalar> x = internal_positions(*run, r.start);
+                    run->session().apply_hard_targets(x); // pins where the recipe puts them
+                    run->session().set_positions(x);
+                }
+                energy = run->energy();
+                published.resize(run->session().positions().size());
+                run->file_positions(published);
+            }
+            catch (const std::exception& e)
+            {
+                run.reset();
+                error = e.what();
+            }
+            const double ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)
+                    .count();
+
+            lock.lock();
+            busy_ = false;
+            if (generation == generation_)
+            {
+                run_ = std::move(run);
+                status_.ready = run_ != nullptr;
+                status_.error = error;
+                status_.precompute_ms = ms;
+                status_.playing = play && run_ != nullptr;
+                if (run_)
+                {
+                    energies_ = {{0, energy}};
+                    published_ = std::move(published);
+                    fresh_ = true; // the pins may have moved to their targets
+                }
+            }
+            done_.notify_all();
+            continue;
+        }
+        run_steps(iterations_per_frame_, lock);
+    }
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/recipe/locality_run.h"
+
+namespace meshfair::app {
+
+//! One point of the energy curve: the energy after `step` steps of the current run.
+struct EnergySample
+{
+    int step = 0;
+    TermEnergies energy;
+};
+
+//! What the solver has done, for the solver panel.
+struct SolverStatus
+{
+    bool ready = false;       //!< precomputed for the current recipe
+    bool playing = false;     //!< stepping on the worker thread
+    bool converged = false;   //!< stopped by the recipe's tolerance
+    int steps = 0;            //!< steps of the current run
+    std::string error;        //!< why the last restart failed (the recipe did not fit)
+    double step_ms = 0;       //!< the last frame's steps, on the worker
+    double precompute_ms = 0; //!< the last precomputation
+};
+
+//! \brief The editor's solver: a LocalityRun (the command line's pipeline) of the
+//! document's base shape and recipe, stepped on a worker thread while playing, so that the
+//! interface never waits for it, or on the caller's thread for a step or a script.
+//!
+//! The precomputation runs once per restart (a recipe change), on the worker. While
+//! playing, the worker runs `iterations_per_frame` steps, publishes the positions and waits
+//! until the interface has taken them, so the solver paces itself to the frames shown.
+class LiveSolver
+{
+public:
+    LiveSolver();
+    ~LiveSolver();
+    LiveSolver(const LiveSolver&) = delete;
+    LiveSolver& operator=(const LiveSolver&) = delete;
+
+    //! \brief Starts a run for `base` (file numbering; its positions are the recipe's input
+    //! shape) and `recipe`, from the positions `start` (3 #V, file order; empty: the base).
+    //! Returns at once: the precomputation happens on the worker. Stops playing.
+    void restart(const Mesh& base, const Recipe& recipe, std::vector<Scalar> start);
+    //! No run (no recipe, or one with problems): nothing steps.
+    void clear();
+
+    //! Plays (on the worker) or pauses; with `frames` > 0, pauses by itself after that many.
+    void set_playing(bool playing, int frames = 0);
+    void set_iterations_per_frame(int n);
+    //! \brief Runs `n` steps on the calling thread (waiting for the precomputation and for
+    //! a frame in progress); publishes the result. Stops playing.
+    void step_now(int n);
+    //! \brief Waits until a frame is published or playing stops; true when there is one to
+    //! take. For scripts and tests, which show frames as fast as they come.
+    bool wait_published();
+    //! Waits until the worker is idle (precomputed, not mid-frame); for tests and scripts.
+    void wait_idle();
+
+    //! \brief The newest positions not yet taken, swapped into `positions` (file order);
+    //! false when there are none. Called once per frame by the interface.
+    bool take(std::vector<Scalar>& positions);
+    SolverStatus status() const;
+    //! The energy after each published frame of the current run (step 0 first).
+    std::vector<EnergySample> energies() const;
+
+private:
+    void worker();
+    //! Steps `n` times on the run; `lock` holds mutex_, released while stepping.
+    void run_steps(int n, std::unique_lock<std::mutex>& lock);
+
+    mutable std::mutex mutex_;
+    std::condition_variable wake_; // to the worker: work to do
+    std::condition_variable done_; // to callers: a frame published, a restart finished
+    struct Restart
+    {
+        Mesh base;
+        Recipe recipe;
+        std::vector<Scalar> start;
+    };
+    std::optional<Restart> restart_;   // pending, for the worker
+    std::unique_ptr<LocalityRun> run_; // touched by whoever holds `busy_`
+    bool busy_ = false;                // the worker is precomputing or stepping
+    bool quit_ = false;
+    int iterations_per_frame_ = 1;
+    int frames_left_ = 0;          // > 0: frames to play before pausing
+    std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
+    SolverStatus status_;
+    std::vector<Scalar> published_; // file order, newest
+    std::vector<Scalar> back_;      // file order, being written (while busy_)
+    bool fresh_ = false;            // published_ not yet taken
+    std::vector<EnergySample> energies_;
+    std::thread thread_; // last: started once everything else exists
+};
+
+} // namespace meshfair::app
