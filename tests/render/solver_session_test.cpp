@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// The editor's live solving against the command line: a session's exported recipe run by
+// meshfair-cli on the same mesh gives the editor's positions bit for bit, whether the
+// steps ran on the caller's thread or on the solver's; undo of solver runs and set edits
+// returns exact states.
+#include <doctest/doctest.h>
+
+#include <filesystem>
+#include <random>
+#include <string>
+
+#include "app/editor/editor_session.h"
+#include "app/render/gl_renderer.h"
+#include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
+#include "tests/helpers.h"
+#include "tests/render/render_support.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kWidth = 400, kHeight = 300;
+
+// A noisy bunny written to a file, and a session on it.
+struct NoisyBunny
+{
+    fs::path path;
+    GlRenderer renderer;
+    EditorSession session;
+    explicit NoisyBunny(const fs::path& dir)
+        : path(write_noisy(dir)), renderer((test::offscreen_context(kWidth, kHeight), GlRenderer())),
+          session(load_document(path.string()), renderer)
+    {
+        session.state().offscreen = true;
+        session.set_view_rect(ViewRect::whole(kWidth, kHeight));
+        session.camera().frame(session.document().box, session.aspect());
+    }
+    static fs::path write_noisy(const fs::path& dir)
+    {
+        Mesh m = io::read_mesh((test::assets_dir() / "bunny.obj").string());
+        test::perturb(m, 0.002, 7);
+        const fs::path p = dir / "noisy.obj";
+        io::write_mesh(m, p.string());
+        return p;
+    }
+    void rectangle(double x0, double y0, double x1, double y1, Modifiers mods = {})
+    {
+        session.set_tool(ToolKind::Rectangle);
+        session.mouse_press(MouseButton::Left, mods, x0, y0);
+        session.mouse_move(x1, y1);
+        session.mouse_release(MouseButton::Left, x1, y1);
+    }
+};
+
+// Runs meshfair-cli smooth on `mesh` with the recipe and returns the positions.
+std::vector<Scalar> cli_positions(const fs::path& mesh, const fs::path& recipe)
+{
+    const fs::path out = recipe.parent_path() / "cli.obj";
+    const test::CommandRun run = test::run_command(
+        test::shell_quote(MESHFAIR_CLI) + " smooth " + test::shell_quote(mesh.string()) + " -o " +
+        test::shell_quote(out.string()) + " --recipe " + test::shell_quote(recipe.string()) +
+        " --quiet");
+    REQUIRE_MESSAGE(run.code == 0, run.err);
+    return io::read_mesh(out.string()).positions;
+}
+
+// What undo must restore, compared as a whole.
+struct State
+{
+    SelectionMask v, f;
+    std::vector<ConstraintSet> sets;
+    SolverSettings solver;
+    std::vector<Scalar> positions, base;
+};
+bool same(const State& a, const State& b)
+{
+    return a.v == b.v && a.f == b.f && a.sets == b.sets && a.solver == b.solver &&
+           a.positions == b.positions && a.base == b.base;
+}
+
+} // namespace
+
+TEST_SUITE("Live solving")
+{
+    TEST_CASE("the exported recipe reproduces the editor's shape through meshfair-cli")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        // A region, pins inside it moved away, anchors, centroids and normals on faces.
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.create_set(ConstraintKind::Region, "patch"));
+        b.rectangle(150, 100, 180, 130);
+        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
+        s.move_pins(*s.set_named("pins"), {0.0, 0.004, 0.0});
+        b.rectangle(200, 150, 260, 200);
+        REQUIRE(s.create_set(ConstraintKind::Anchor, "anchors"));
+        s.set_elements(ElementKind::Faces);
+        b.rectangle(130, 160, 200, 215);
+        REQUIRE(s.create_set(ConstraintKind::Centroid, "centroids"));
+        b.rectangle(230, 90, 290, 140);
+        REQUIRE(s.create_set(ConstraintKind::Normal, "normals"));
+        CHECK(s.problems().empty());
+        SolverSettings settings = s.document().solver;
+        settings.lambda = 0.4;
+        settings.anchor_mu = 2;
+        settings.centroid_mu = 0.5;
+        settings.iterations_per_frame = 4;
+        s.set_solver_settings(settings);
+
+        // Steps on the caller's thread, then frames on the solver's.
+        s.step(6);
+        s.play(5);
+        while (s.playing())
+            s.take_frame();
+        CHECK(s.document().steps_from_base == 6 + 5 * 4);
+        CHECK(s.document().reproducible);
+        CHECK(s.document().mesh.positions != s.document().base_positions);
+
+        const fs::path recipe = dir / "recipe.json";
+        REQUIRE(s.export_recipe(recipe.string()));
+        const Recipe r = read_recipe(recipe.string());
+        CHECK(r.iterations == 26);
+        REQUIRE(r.hard);
+        CHECK_FALSE(r.hard->targets.empty());
+        CHECK(cli_positions(b.path, recipe) == s.document().mesh.positions);
+
+        // Undo of the run, then of the steps: back to the loaded positions exactly.
+        REQUIRE(s.undo());
+        CHECK(s.document().steps_from_base == 6);
+        REQUIRE(s.undo());
+        CHECK(s.document().mesh.positions == s.document().base_positions);
+        // Stepping again from there gives the same bits as the first time.
+        s.step(6);
+        REQUIRE(s.export_recipe(recipe.string()));
+        CHECK(cli_positions(b.path, recipe) == s.document().mesh.positions);
+    }
+
+    TEST_CASE("a recipe changed during a run is reported as not reproducing the shape")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        s.step(3);
+        SolverSettings settings = s.document().solver;
+        settings.lambda = 0.3;
+        s.set_solver_settings(settings);
+        s.step(3);
+        CHECK(s.document().steps_from_base == 6);
+        CHECK_FALSE(s.document().reproducible);
+        // Reset and run again: reproducible, and the command line agrees.
+        s.reset_shape();
+        s.step(6);
+        CHECK(s.document().reproducible);
+        const fs::path recipe = dir / "recipe.json";
+        REQUIRE(s.export_recipe(recipe.string()));
+        CHECK(cli_positions(b.path, recipe) == s.document().mesh.positions);
+        // Apply makes the shape the new base: 0 steps from it.
+        s.apply_shape();
+        CHECK(s.document().steps_from_base == 0);
+        CHECK(s.document().base_positions == s.document().mesh.positions);
+        REQUIRE(s.undo());
+        CHECK(s.document().base_positions != s.document().mesh.positions);
+    }
+
+    TEST_CASE("sets that cannot run are refused with the sets named, and nothing steps")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(150, 100, 200, 150);
+        REQUIRE(s.create_set(ConstraintKind::Pin, "feet"));
+        b.rectangle(180, 120, 230, 170);
+        REQUIRE(s.create_set(ConstraintKind::Anchor, "back"));
+        REQUIRE(s.problems().size() == 1);
+        CHECK(s.problems()[0].find("pin set 'feet' and anchor set 'back' share vertex") == 0);
+        const std::vector<Scalar> before = s.document().mesh.positions;
+        s.step(3);
+        CHECK(s.document().mesh.positions == before);
+        CHECK(s.state().message.find("cannot solve") == 0);
+        CHECK_FALSE(s.export_recipe((dir / "r.json").string()));
+        CHECK_FALSE(fs::exists(dir / "r.json"));
+        // Deleting one of them clears the problem.
+        s.delete_set(*s.set_named("back"));
+        CHECK(s.problems().empty());
+        // An empty selection makes no set.
+        s.run(SelectionCommand::Clear);
+        CHECK_FALSE(s.create_set(ConstraintKind::Anchor));
+        CHECK(s.document().sets.size() == 1);
+    }
+
+    TEST_CASE("import restores the sets of an exported recipe")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.create_set(ConstraintKind::Region, "patch"));
+        b.rectangle(150, 100, 180, 130);
+        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
+        s.move_pins(1, {0.001, 0.0, 0.0});
+        s.step(4);
+        const fs::path recipe = dir / "recipe.json";
+        REQUIRE(s.export_recipe(recipe.string()));
+        const Recipe exported = s.current_recipe();
+        s.delete_set(1);
+        s.delete_set(0);
+        REQUIRE(s.import_recipe(recipe.string()));
+        REQUIRE(s.document().sets.size() == 2);
+        CHECK(s.document().sets[0].kind == ConstraintKind::Region);
+        CHECK(s.document().sets[1].kind == ConstraintKind::Pin);
+        Recipe again = s.current_recipe();
+        again.iterations = exported.iterations;
+        CHECK(recipe_to_json(again) == recipe_to_json(exported));
+        CHECK_FALSE(s.import_recipe((dir / "missing.json").string()));
+        test::write_bytes(dir / "bad.json", R"({"hard": {"vertices": [99999999]}})");
+        CHECK_FALSE(s.import_recipe((dir / "bad.json").string()));
+        CHECK(s.state().message.find("hard.vertices[0]") != std::string::npos);
+    }
+
+    TEST_CASE("undo of any mix of selection, set, setting and solver steps is exact")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        std::mt19937 rng(11);
+        std::uniform_int_distribution<int> pick(0, 99);
+        const auto state = [&] {
+            const Document& d = s.document();
+            return State{d.selected_vertices, d.selected_faces, d.sets, d.solver,
+                         d.mesh.positions,    d.base_positions};
+        };
+        std::vector<State> states{state()};
+        for (int k = 0; k < 40; ++k)
+        {
+            const std::size_t before = s.history().undo_count();
+            const int what = pick(rng);
+            if (what < 25)
+                b.rectangle(pick(rng) * 4, pick(rng) * 3, pick(rng) * 4, pick(rng) * 3,
+                            {.shift = pick(rng) < 50});
+            else if (what < 45)
+                s.create_set(static_cast<ConstraintKind>(pick(rng) % 3));
+            else if (what < 55 && !s.document().sets.empty())
+                s.delete_set(static_cast<size_t>(pick(rng)) % s.document().sets.size());
+            else if (what < 65)
+            {
+                SolverSettings settings = s.document().solver;
+                settings.lambda = 0.1 + 0.005 * pick(rng);
+                s.set_solver_settings(settings, false);
+            }
+            else if (what < 85)
+                s.step(1 + pick(rng) % 3);
+            else if (what < 92)
+                s.reset_shape();
+            else
+                s.apply_shape();
+            if (s.history().undo_count() > before)
+                states.push_back(state());
+        }
+        REQUIRE(states.size() > 15);
+        for (size_t k = states.size() - 1; k > 0; --k)
+        {
+            REQUIRE(s.undo());
+            CHECK(same(state(), states[k - 1]));
+        }
+        for (size_t k = 1; k < states.size(); ++k)
+        {
+            REQUIRE(s.redo());
+            CHECK(same(state(), states[k]));
+        }
+    }
+}
