@@ -105,7 +105,8 @@ int main(int argc, char** argv)
     std::vector<Series> press_moved, press_same, rect_release;
     for (const char* kind_name : kinds)
     {
-        press_moved.push_back({std::string("brush press, ") + kind_name + ", after a camera move", {}});
+        press_moved.push_back(
+            {std::string("brush press, ") + kind_name + ", after a camera move", {}});
         press_same.push_back({std::string("brush press, ") + kind_name + ", same view", {}});
         rect_release.push_back({std::string("rectangle release, ") + kind_name, {}});
     }

@@ -12,6 +12,8 @@
 #include "app/tools/lasso_tool.h"
 #include "app/tools/rectangle_tool.h"
 #include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/geometry/noise.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 
@@ -235,6 +237,8 @@ void EditorSession::record(const std::string& label, EditState before, bool merg
 void EditorSession::sets_changed()
 {
     problems_ = constraint_problems(document_.sets, document_.solver);
+    border_ = region_border(document_);
+    glyphs_dirty_ = true;
     recipe_dirty_ = true;
 }
 
@@ -242,6 +246,7 @@ void EditorSession::positions_changed()
 {
     renderer_.update_positions(document_.mesh.positions);
     ++geometry_;
+    glyphs_dirty_ = glyphs_dirty_ || !document_.sets.empty();
     document_.modified = true;
 }
 
@@ -559,6 +564,24 @@ void EditorSession::apply_shape()
     record("apply shape", std::move(before));
 }
 
+void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
+{
+    if (gesture_ != nullptr || !(sigma >= 0) || !std::isfinite(sigma))
+        return;
+    close_run();
+    EditState before = capture(document_, kPositions | kBasePositions);
+    add_gaussian_noise(document_.mesh,
+                       sigma * mean_edge_length(document_.topology, document_.mesh.positions),
+                       seed);
+    document_.base_positions = document_.mesh.positions;
+    document_.steps_from_base = 0;
+    document_.reproducible = true;
+    positions_changed();
+    recipe_dirty_ = true;
+    restarted_recipe_.clear();
+    record("noise", std::move(before));
+}
+
 void EditorSession::update()
 {
     if (recipe_dirty_)
@@ -620,6 +643,52 @@ void EditorSession::carry_out(const UiRequests& r)
         undo();
     if (r.redo)
         redo();
+    if (r.create_set)
+        create_set(*r.create_set);
+    if (r.set_edit)
+    {
+        using What = UiRequests::SetEdit::What;
+        const UiRequests::SetEdit& e = *r.set_edit;
+        switch (e.what)
+        {
+            case What::Delete:
+                delete_set(e.index);
+                break;
+            case What::Rename:
+                rename_set(e.index, e.name);
+                break;
+            case What::Show:
+                set_visible(e.index, e.visible);
+                break;
+            case What::Color:
+                set_color(e.index, e.color);
+                break;
+            case What::Select:
+                select_set(e.index);
+                break;
+            case What::Direction:
+                set_normal_direction(e.index, e.direction);
+                break;
+        }
+    }
+    if (r.solver)
+        set_solver_settings(*r.solver, r.solver_merge);
+    if (r.play)
+        play();
+    if (r.pause)
+        pause();
+    if (r.step)
+        step(document_.solver.iterations_per_frame);
+    if (r.reset_shape)
+        reset_shape();
+    if (r.apply_shape)
+        apply_shape();
+    if (r.noise)
+        add_noise(r.noise->first, r.noise->second);
+    if (r.export_recipe_path)
+        export_recipe(*r.export_recipe_path);
+    if (r.import_recipe_path)
+        import_recipe(*r.import_recipe_path);
     if (r.open_path)
         open(*r.open_path);
     if (r.save_path)
@@ -667,6 +736,8 @@ void EditorSession::reset_for_document()
     restarted_recipe_.clear();
     recipe_dirty_ = true;
     problems_ = constraint_problems(document_.sets, document_.solver);
+    border_ = region_border(document_);
+    glyphs_dirty_ = true;
     history_.clear();
     step_before_.reset();
     selection_changed();
@@ -698,6 +769,10 @@ void EditorSession::prepare_ui()
         p.x += view_.x;
         p.y += view_.y;
     }
+    state_.solver = solver_.status();
+    state_.energies = solver_.energies();
+    state_.problems = problems_;
+    state_.playing = run_open_;
     HistoryStatus& h = state_.history;
     h.undo_count = history_.undo_count();
     h.redo_count = history_.redo_count();
@@ -750,6 +825,12 @@ void EditorSession::sync_renderer()
     {
         renderer_.set_selection(document_.selected_vertices, document_.selected_faces);
         selection_dirty_ = false;
+    }
+    if (glyphs_dirty_)
+    {
+        const std::vector<GlyphGroup> glyphs = constraint_glyphs(document_, border_);
+        renderer_.set_glyphs(glyphs);
+        glyphs_dirty_ = false;
     }
 }
 

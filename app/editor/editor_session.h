@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "app/editor/constraint_glyphs.h"
 #include "app/editor/document.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/history.h"
@@ -115,6 +116,10 @@ public:
     void reset_shape();
     //! Makes the current shape the base the recipe starts from (one undo step).
     void apply_shape();
+    //! \brief Adds Gaussian noise of `sigma` mean edge lengths to the current shape, as
+    //! `meshfair-cli noise` does, and makes it the base (a noisy copy for demos; one undo
+    //! step).
+    void add_noise(Scalar sigma, std::uint64_t seed);
     SolverStatus solver_status() const { return solver_.status(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     //! \brief The recipe of the sets and settings with the steps taken from the base shape:
@@ -187,6 +192,8 @@ private:
     ScreenPoint cursor_;
     bool selection_dirty_ = true;
     bool counts_dirty_ = true;
+    bool glyphs_dirty_ = true;
+    RegionBorder border_; // of the current sets
 
     // The visibility kept for the camera and view it was computed for.
     struct VisibilityKey

@@ -3,6 +3,7 @@
 #include "app/editor/editor_ui.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -30,6 +31,8 @@ constexpr KeyBinding kBindings[] = {
     {"Ctrl + = / Ctrl + -", "grow / shrink the selection by a ring"},
     {"Ctrl + L", "select the connected components of the selection"},
     {"Ctrl + B", "select the boundary"},
+    {"Space", "play / pause live solving"},
+    {"E", "energy plot"},
     {"Ctrl + Z", "undo"},
     {"Ctrl + Shift + Z, Ctrl + Y", "redo"},
     {"Middle drag", "orbit"},
@@ -54,7 +57,7 @@ constexpr KeyBinding kBindings[] = {
     {"Ctrl + Q, closing the window", "quit (asks first when there are unsaved changes)"},
 };
 
-constexpr float kSidePanelWidth = 300;
+constexpr float kSidePanelWidth = 340;
 
 struct CommandItem
 {
@@ -110,7 +113,7 @@ void select_section(EditorState& state, UiRequests& r)
         r.elements = ElementKind::Faces;
     ImGui::Checkbox("through the surface", &state.tools.through);
     float radius = static_cast<float>(state.tools.brush_radius_px);
-    if (ImGui::SliderFloat("brush radius", &radius, 2.0f, 200.0f, "%.0f px"))
+    if (ImGui::SliderFloat("radius", &radius, 2.0f, 200.0f, "%.0f px"))
         state.tools.brush_radius_px = radius;
     ImGui::Text("selected: %s vertices, %s faces",
                 with_separators(static_cast<std::int64_t>(state.selected_vertices)).c_str(),
@@ -209,6 +212,10 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
         }
         if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S"))
             ui.save_file_dialog(document);
+        if (ImGui::MenuItem("Export recipe..."))
+            ui.export_recipe_dialog(document);
+        if (ImGui::MenuItem("Import recipe..."))
+            ui.import_recipe_dialog(document);
         if (ImGui::MenuItem("Screenshot", "F12"))
             r.screenshot = true;
         ImGui::Separator();
@@ -250,6 +257,7 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
         if (ImGui::MenuItem("Trackball orbit", "T", &trackball))
             state.orbit = trackball ? OrbitStyle::Trackball : OrbitStyle::Turntable;
         ImGui::MenuItem("Side panel", "Tab", &state.show_side_panel);
+        ImGui::MenuItem("Energy plot", "E", &state.show_energy);
         ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Display"))
@@ -273,7 +281,308 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
     ImGui::EndMainMenuBar();
 }
 
-void side_panel(const Document& document, EditorState& state, const Camera& camera, UiRequests& r)
+const char* kind_label(ConstraintKind kind)
+{
+    switch (kind)
+    {
+        case ConstraintKind::Region:
+            return "region";
+        case ConstraintKind::Pin:
+            return "pin";
+        case ConstraintKind::Anchor:
+            return "anchor";
+        case ConstraintKind::Centroid:
+            return "centroid";
+        case ConstraintKind::Normal:
+            return "normal";
+        case ConstraintKind::HardNormal:
+            return "hard normal";
+        case ConstraintKind::SoftNormal:
+            return "soft normal";
+    }
+    return "";
+}
+
+UiRequests::SetEdit set_edit(UiRequests::SetEdit::What what, size_t index)
+{
+    UiRequests::SetEdit e;
+    e.what = what;
+    e.index = index;
+    return e;
+}
+
+void sets_section(const Document& document, const EditorState& state, UiRequests& r,
+                  char* rename_buffer, size_t rename_size, size_t& renaming)
+{
+    if (!ImGui::CollapsingHeader("Constraint sets", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    ImGui::TextUnformatted("new from the selection:");
+    for (int k = 0; k < kConstraintKinds; ++k)
+    {
+        const auto kind = static_cast<ConstraintKind>(k);
+        if (k % 4 != 0)
+            ImGui::SameLine();
+        if (ImGui::SmallButton(kind_label(kind)))
+            r.create_set = kind;
+    }
+    for (size_t i = 0; i < document.sets.size(); ++i)
+    {
+        const ConstraintSet& set = document.sets[i];
+        ImGui::PushID(static_cast<int>(i));
+        bool visible = set.visible;
+        if (ImGui::Checkbox("##visible", &visible))
+        {
+            r.set_edit = set_edit(UiRequests::SetEdit::What::Show, i);
+            r.set_edit->visible = visible;
+        }
+        ImGui::SameLine();
+        std::array<float, 3> color = set.color;
+        if (ImGui::ColorEdit3("##color", color.data(), ImGuiColorEditFlags_NoInputs))
+        {
+            r.set_edit = set_edit(UiRequests::SetEdit::What::Color, i);
+            r.set_edit->color = color;
+        }
+        ImGui::SameLine();
+        const size_t count = set.vertices.size() + set.faces.size();
+        ImGui::Text("%s  (%s, %s %s)", set.name.c_str(), kind_label(set.kind),
+                    with_separators(static_cast<std::int64_t>(count)).c_str(),
+                    set.vertices.empty() ? "faces" : "vertices");
+        if (ImGui::SmallButton("select"))
+            r.set_edit = set_edit(UiRequests::SetEdit::What::Select, i);
+        ImGui::SameLine();
+        if (ImGui::SmallButton("rename"))
+        {
+            renaming = i;
+            std::snprintf(rename_buffer, rename_size, "%s", set.name.c_str());
+            ImGui::OpenPopup("rename");
+        }
+        ImGui::SameLine();
+        if (ImGui::SmallButton("delete"))
+            r.set_edit = set_edit(UiRequests::SetEdit::What::Delete, i);
+        if (set.kind == ConstraintKind::Normal || set.kind == ConstraintKind::HardNormal ||
+            set.kind == ConstraintKind::SoftNormal)
+        {
+            Vec3 d = set.normals.empty() ? Vec3{0, 0, 1} : set.normals.front();
+            float direction[3] = {float(d[0]), float(d[1]), float(d[2])};
+            ImGui::SetNextItemWidth(180);
+            if (ImGui::DragFloat3("direction", direction, 0.01f, -1.0f, 1.0f, "%.2f"))
+            {
+                r.set_edit = set_edit(UiRequests::SetEdit::What::Direction, i);
+                r.set_edit->direction = {direction[0], direction[1], direction[2]};
+            }
+        }
+        if (ImGui::BeginPopup("rename"))
+        {
+            ImGui::InputText("name", rename_buffer, rename_size);
+            if (ImGui::Button("OK") && rename_buffer[0] != 0)
+            {
+                r.set_edit = set_edit(UiRequests::SetEdit::What::Rename, renaming);
+                r.set_edit->name = rename_buffer;
+                ImGui::CloseCurrentPopup();
+            }
+            ImGui::EndPopup();
+        }
+        ImGui::PopID();
+    }
+    for (const std::string& problem : state.problems)
+        ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", problem.c_str());
+    ImGui::TextWrapped(
+        "Vertices outside the regions are fixed; the border ring (orange) is "
+        "where they meet the moving ones.");
+}
+
+// The energy curve of the current run: the total and each active term, log scale or not.
+void energy_plot(EditorState& state)
+{
+    const std::vector<EnergySample>& e = state.energies;
+    ImGui::Checkbox("log scale", &state.energy_log_scale);
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, 120);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
+                        IM_COL32(25, 27, 31, 255));
+    ImGui::Dummy(size);
+    if (e.size() < 2)
+    {
+        draw->AddText(ImVec2(origin.x + 8, origin.y + 8), IM_COL32(170, 170, 170, 255),
+                      "Play or Step to draw the energy of the run");
+        return;
+    }
+    struct Curve
+    {
+        Scalar TermEnergies::*term;
+        const char* name;
+        ImU32 color;
+    };
+    const Curve curves[] = {{&TermEnergies::edge, "edge", IM_COL32(120, 200, 120, 255)},
+                            {&TermEnergies::soft, "anchor", IM_COL32(240, 190, 40, 255)},
+                            {&TermEnergies::centroid, "centroid", IM_COL32(70, 140, 240, 255)},
+                            {&TermEnergies::normal, "normal", IM_COL32(180, 90, 230, 255)}};
+    // Each curve relative to its own largest value over the run, so that terms of very
+    // different sizes all show how they converge (a term that starts at 0, as a soft
+    // constraint on the input does, rises and settles).
+    std::vector<double> top(std::size(curves) + 1, 0.0);
+    for (const EnergySample& s : e)
+    {
+        for (size_t c = 0; c < std::size(curves); ++c)
+            top[c] = std::max(top[c], s.energy.*curves[c].term);
+        top.back() = std::max(top.back(), s.energy.total());
+    }
+    const double floor_value = 1e-6; // the log scale's bottom: a millionth of the largest
+    const auto value = [&](double v, double largest) {
+        const double r = largest > 0 ? v / largest : 0;
+        return state.energy_log_scale ? std::log10(std::max(r, floor_value)) : r;
+    };
+    double lo = 1e300;
+    for (const EnergySample& s : e)
+    {
+        lo = std::min(lo, value(s.energy.total(), top.back()));
+        for (size_t c = 0; c < std::size(curves); ++c)
+            if (top[c] > 0)
+                lo = std::min(lo, value(s.energy.*curves[c].term, top[c]));
+    }
+    const double hi = state.energy_log_scale ? 0.0 : 1.0;
+    lo = std::min(lo, hi - (state.energy_log_scale ? 0.5 : 0.1));
+    const double last = std::max(e.back().step, 1);
+    const auto at = [&](const EnergySample& s, double v, double largest) {
+        return ImVec2(origin.x + float(s.step / last) * (size.x - 1),
+                      origin.y + float((hi - value(v, largest)) / (hi - lo)) * (size.y - 1));
+    };
+    std::vector<ImVec2> line;
+    for (size_t c = 0; c < std::size(curves); ++c)
+    {
+        if (!(top[c] > 0))
+            continue;
+        line.clear();
+        for (const EnergySample& s : e)
+            line.push_back(at(s, s.energy.*curves[c].term, top[c]));
+        draw->AddPolyline(line.data(), static_cast<int>(line.size()), curves[c].color, 0, 1.5f);
+    }
+    line.clear();
+    for (const EnergySample& s : e)
+        line.push_back(at(s, s.energy.total(), top.back()));
+    draw->AddPolyline(line.data(), static_cast<int>(line.size()), IM_COL32(255, 255, 255, 255), 0,
+                      2.0f);
+    // The vertical range, at the plot's corners.
+    char label[64];
+    std::snprintf(label, sizeof label, state.energy_log_scale ? "1e%.1f" : "%.2g", lo);
+    draw->AddText(ImVec2(origin.x + 4, origin.y + size.y - ImGui::GetFontSize() - 2),
+                  IM_COL32(170, 170, 170, 255), label);
+    draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(170, 170, 170, 255),
+                  "1 = each curve's largest value");
+    const TermEnergies& now = e.back().energy;
+    ImGui::Text("step %d   total %.6g", e.back().step, now.total());
+    bool first = true;
+    for (const Curve& c : curves)
+        if (now.*c.term > 0)
+        {
+            if (!first)
+                ImGui::SameLine();
+            first = false;
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.color), "%s %.4g ", c.name,
+                               now.*c.term);
+        }
+}
+
+void solver_section(const Document& document, EditorState& state, UiRequests& r)
+{
+    if (!ImGui::CollapsingHeader("Solver", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    SolverSettings s = document.solver;
+    bool changed = false, release = false;
+    const auto track = [&](bool edited) {
+        changed = changed || edited;
+        release = release || ImGui::IsItemDeactivatedAfterEdit();
+    };
+    track(ImGui::Checkbox("optimal step (line search)", &s.optimal_step));
+    if (!s.optimal_step)
+    {
+        float lambda = float(s.lambda);
+        track(ImGui::SliderFloat("lambda", &lambda, 0.01f, 1.0f, "%.3f"));
+        s.lambda = lambda;
+    }
+    track(ImGui::SliderInt("steps/frame", &s.iterations_per_frame, 1, 200));
+    float tolerance = float(s.tolerance);
+    track(ImGui::InputFloat("tolerance", &tolerance, 0, 0, "%.2e"));
+    s.tolerance = std::max(tolerance, 0.0f);
+    const auto mu = [&](const char* label, Scalar& value) {
+        float v = float(value);
+        track(ImGui::SliderFloat(label, &v, 0.0f, 100.0f, "%.3g", ImGuiSliderFlags_Logarithmic));
+        value = v;
+    };
+    mu("anchor mu", s.anchor_mu);
+    mu("centroid mu", s.centroid_mu);
+    mu("normal mu", s.normal_mu);
+    bool exact = s.denominator == CentroidDenominator::Exact;
+    track(ImGui::Checkbox("exact centroid denominator", &exact));
+    s.denominator = exact ? CentroidDenominator::Exact : CentroidDenominator::Paper;
+    bool smoothed = s.normal_source == NormalSource::Smoothed;
+    track(ImGui::Checkbox("smoothed normals", &smoothed));
+    s.normal_source = smoothed ? NormalSource::Smoothed : NormalSource::Initial;
+    track(ImGui::Checkbox("joint mode", &s.joint));
+    if (s.joint)
+    {
+        float gamma = float(s.gamma);
+        track(ImGui::SliderFloat("gamma", &gamma, 0.0f, 100.0f, "%.3g",
+                                 ImGuiSliderFlags_Logarithmic));
+        s.gamma = gamma;
+    }
+    if (changed && !(s == document.solver))
+    {
+        r.solver = s;
+        r.solver_merge = !release;
+    }
+    if (ImGui::Button(state.playing ? "Pause" : "Play", ImVec2(60, 0)))
+        (state.playing ? r.pause : r.play) = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Step"))
+        r.step = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset"))
+        r.reset_shape = true;
+    ImGui::SameLine();
+    if (ImGui::Button("Apply"))
+        r.apply_shape = true;
+    const SolverStatus& st = state.solver;
+    ImGui::Text("%d steps from the base%s", document.steps_from_base,
+                document.reproducible ? "" : " (recipe changed during the run)");
+    if (!state.offscreen) // a time would make offscreen frames differ from run to run
+        ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
+    ImGui::SetNextItemWidth(100);
+    ImGui::SliderFloat("##sigma", &state.noise_sigma, 0.0f, 1.0f, "sigma %.2f");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    ImGui::InputInt("##seed", &state.noise_seed, 0);
+    ImGui::SameLine();
+    if (ImGui::Button("Add noise"))
+        r.noise = std::pair<Scalar, std::uint64_t>(state.noise_sigma,
+                                                   static_cast<std::uint64_t>(state.noise_seed));
+    if (!st.error.empty())
+        ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "%s", st.error.c_str());
+    if (st.converged)
+        ImGui::TextUnformatted("converged (tolerance)");
+}
+
+// The energy plot in its own window at the bottom left of the view, always in sight.
+void energy_window(EditorState& state)
+{
+    if (!state.show_energy)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float bottom = ImGui::GetFrameHeight() + 8;
+    ImGui::SetNextWindowPos(ImVec2(8, io.DisplaySize.y - bottom - 8), ImGuiCond_Always,
+                            ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(420, 0));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    ImGui::Begin("Energy", &state.show_energy,
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    energy_plot(state);
+    ImGui::End();
+}
+
+void side_panel(const Document& document, EditorState& state, const Camera& camera, UiRequests& r,
+                char* rename_buffer, size_t rename_size, size_t& renaming)
 {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
@@ -284,7 +593,9 @@ void side_panel(const Document& document, EditorState& state, const Camera& came
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoCollapse);
     select_section(state, r);
-    if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen))
+    sets_section(document, state, r, rename_buffer, rename_size, renaming);
+    solver_section(document, state, r);
+    if (ImGui::CollapsingHeader("Mesh"))
     {
         const Topology& t = document.topology;
         ImGui::TextUnformatted(std::filesystem::path(document.path).filename().string().c_str());
@@ -296,7 +607,7 @@ void side_panel(const Document& document, EditorState& state, const Camera& came
         for (const std::string& note : document.report.notes)
             ImGui::TextWrapped("note: %s", note.c_str());
     }
-    if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("Display"))
     {
         DisplayOptions& d = state.display;
         int shading = d.shading == Shading::Flat ? 0 : 1;
@@ -314,7 +625,7 @@ void side_panel(const Document& document, EditorState& state, const Camera& came
         ImGui::SameLine();
         ImGui::ColorEdit3("background", d.background.data(), ImGuiColorEditFlags_NoInputs);
     }
-    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen))
+    if (ImGui::CollapsingHeader("Camera"))
     {
         int projection = camera.projection == Projection::Perspective ? 0 : 1;
         const int before = projection;
@@ -448,6 +759,20 @@ bool save_recent(const std::string& file, const std::vector<std::string>& recent
     }
 }
 
+void EditorUi::export_recipe_dialog(const Document& document)
+{
+    const std::filesystem::path mesh(document.path);
+    browser_.open(FileBrowser::Mode::Save, document.path, mesh.stem().string() + "-recipe.json",
+                  FileBrowser::Files::Recipes);
+    browser_mode_ = FileBrowser::Mode::Save;
+}
+
+void EditorUi::import_recipe_dialog(const Document& document)
+{
+    browser_.open(FileBrowser::Mode::Open, document.path, {}, FileBrowser::Files::Recipes);
+    browser_mode_ = FileBrowser::Mode::Open;
+}
+
 void EditorUi::open_file_dialog(const Document& document)
 {
     browser_.open(FileBrowser::Mode::Open, document.path);
@@ -474,16 +799,18 @@ UiRequests EditorUi::build(const Document& document, EditorState& state, const C
     UiRequests r;
     menu_bar(document, state, camera, *this, r);
     if (state.show_side_panel)
-        side_panel(document, state, camera, r);
+        side_panel(document, state, camera, r, rename_buffer_, sizeof rename_buffer_, renaming_);
     status_bar(document, state);
+    energy_window(state);
     tool_overlay(state);
     help_overlay(state);
     if (const std::optional<std::string> chosen = browser_.draw())
     {
+        const bool recipe = browser_.files() == FileBrowser::Files::Recipes;
         if (browser_mode_ == FileBrowser::Mode::Open)
-            r.open_path = chosen;
+            (recipe ? r.import_recipe_path : r.open_path) = chosen;
         else
-            r.save_path = chosen;
+            (recipe ? r.export_recipe_path : r.save_path) = chosen;
     }
     if (quit_prompt_)
     {

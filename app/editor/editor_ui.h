@@ -2,13 +2,16 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/editor/document.h"
 #include "app/editor/file_browser.h"
+#include "app/editor/live_solver.h"
 #include "app/render/camera.h"
 #include "app/render/renderer.h"
 #include "app/tools/selection_commands.h"
@@ -34,6 +37,14 @@ struct EditorState
     ToolOverlay overlay;   //!< what the active tool draws now, in framebuffer pixels
     HistoryStatus history; //!< refreshed by the session before each frame of the interface
     std::size_t selected_vertices = 0, selected_faces = 0; //!< counts, refreshed likewise
+    SolverStatus solver;                                   //!< refreshed likewise
+    std::vector<EnergySample> energies; //!< the current run's curve, refreshed likewise
+    std::vector<std::string> problems;  //!< why the sets cannot run, refreshed likewise
+    bool playing = false;               //!< refreshed likewise
+    bool energy_log_scale = false;      //!< the energy plot's vertical axis
+    bool show_energy = true;            //!< the energy plot window
+    float noise_sigma = 0.3f;           //!< the noise tool's sigma, in mean edge lengths
+    int noise_seed = 1;
     DisplayOptions display;
     OrbitStyle orbit = OrbitStyle::Turntable;
     bool show_help = false;
@@ -60,6 +71,31 @@ struct UiRequests
     std::optional<SelectionCommand> command;
     bool undo = false;
     bool redo = false;
+    std::optional<ConstraintKind> create_set;
+    //! An edit of set `index` from the sets panel.
+    struct SetEdit
+    {
+        enum class What
+        {
+            Delete,
+            Rename,
+            Show,
+            Color,
+            Select,
+            Direction
+        } what = What::Select;
+        size_t index = 0;
+        std::string name;
+        bool visible = true;
+        std::array<float, 3> color{1, 1, 1};
+        Vec3 direction{0, 0, 1};
+    };
+    std::optional<SetEdit> set_edit;
+    std::optional<SolverSettings> solver; //!< new settings from the solver panel
+    bool solver_merge = true;             //!< part of a slider's series of changes
+    bool play = false, pause = false, step = false, reset_shape = false, apply_shape = false;
+    std::optional<std::string> export_recipe_path, import_recipe_path;
+    std::optional<std::pair<Scalar, std::uint64_t>> noise; //!< sigma (mean edges), seed
     bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them
 };
 
@@ -82,6 +118,8 @@ public:
     void ask_to_quit(const Document& document, UiRequests& requests);
     void open_file_dialog(const Document& document);
     void save_file_dialog(const Document& document);
+    void export_recipe_dialog(const Document& document);
+    void import_recipe_dialog(const Document& document);
 
     //! \brief Lays out the interface for a `width` x `height` frame without a window (the
     //! offscreen screenshot's --ui): afterwards view_rect is known and layer.draw() draws
@@ -97,6 +135,8 @@ public:
 private:
     FileBrowser browser_;
     FileBrowser::Mode browser_mode_ = FileBrowser::Mode::Open;
+    char rename_buffer_[128] = {};
+    size_t renaming_ = 0;
     bool quit_prompt_ = false;
 };
 

@@ -14,17 +14,19 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool is_mesh_file(const fs::path& p)
+bool is_listed(const fs::path& p, FileBrowser::Files files)
 {
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (files == FileBrowser::Files::Recipes)
+        return ext == ".json";
     return ext == ".obj" || ext == ".off" || ext == ".ply" || ext == ".stl";
 }
 
 } // namespace
 
-std::vector<fs::directory_entry> FileBrowser::listing(const fs::path& dir)
+std::vector<fs::directory_entry> FileBrowser::listing(const fs::path& dir, Files listed)
 {
     std::vector<fs::directory_entry> folders, files;
     std::error_code ec;
@@ -37,7 +39,7 @@ std::vector<fs::directory_entry> FileBrowser::listing(const fs::path& dir)
         std::error_code type_error;
         if (it->is_directory(type_error))
             folders.push_back(*it);
-        else if (is_mesh_file(it->path()))
+        else if (is_listed(it->path(), listed))
             files.push_back(*it);
     }
     const auto by_name = [](const fs::directory_entry& a, const fs::directory_entry& b) {
@@ -49,9 +51,10 @@ std::vector<fs::directory_entry> FileBrowser::listing(const fs::path& dir)
     return folders;
 }
 
-void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file_name)
+void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file_name, Files files)
 {
     mode_ = mode;
+    files_ = files;
     std::error_code ec;
     directory_ = fs::is_directory(start, ec) ? start : start.parent_path();
     if (directory_.empty())
@@ -86,7 +89,7 @@ std::optional<std::string> FileBrowser::draw()
     // Listed once per directory, not once per frame.
     if (listed_ != directory_)
     {
-        entries_ = listing(directory_);
+        entries_ = listing(directory_, files_);
         listed_ = directory_;
     }
     for (const fs::directory_entry& entry : entries_)
@@ -123,9 +126,10 @@ std::optional<std::string> FileBrowser::draw()
         ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", error_.c_str());
     if (chosen)
     {
-        if (mode_ == Mode::Save && !is_mesh_file(*chosen))
+        if (mode_ == Mode::Save && !is_listed(*chosen, files_))
         {
-            error_ = "the name must end in .obj, .off, .ply or .stl";
+            error_ = files_ == Files::Recipes ? "the name must end in .json"
+                                              : "the name must end in .obj, .off, .ply or .stl";
             chosen.reset();
         }
         else

@@ -22,16 +22,27 @@ public:
         Save
     };
 
-    void open(Mode mode, const std::filesystem::path& start, const std::string& file_name = {});
+    //! What the browser lists and accepts.
+    enum class Files
+    {
+        Meshes, //!< .obj, .off, .ply, .stl
+        Recipes //!< .json
+    };
+
+    void open(Mode mode, const std::filesystem::path& start, const std::string& file_name = {},
+              Files files = Files::Meshes);
+    Files files() const { return files_; }
     bool is_open() const { return open_; }
     std::optional<std::string> draw();
 
     //! The entries of `dir` shown to the user: folders (but not hidden ones), then files with
-    //! a mesh extension, each group sorted by name.
-    static std::vector<std::filesystem::directory_entry> listing(const std::filesystem::path& dir);
+    //! a mesh extension (or .json for recipes), each group sorted by name.
+    static std::vector<std::filesystem::directory_entry> listing(const std::filesystem::path& dir,
+                                                                 Files files = Files::Meshes);
 
 private:
     Mode mode_ = Mode::Open;
+    Files files_ = Files::Meshes;
     bool open_ = false;
     bool just_opened_ = false;
     std::filesystem::path directory_;

@@ -71,7 +71,7 @@ void LiveSolver::set_playing(bool playing, int frames)
 {
     {
         std::lock_guard lock(mutex_);
-        status_.playing = playing && (run_ != nullptr || restart_.has_value());
+        status_.playing = playing && (run_ != nullptr || restart_.has_value() || busy_);
         frames_left_ = playing ? std::max(frames, 0) : 0;
         if (playing)
             status_.converged = false;
@@ -201,7 +201,6 @@ void LiveSolver::worker()
             restart_.reset();
             busy_ = true;
             const std::uint64_t generation = generation_;
-            const bool play = status_.playing;
             lock.unlock();
 
             const auto t = std::chrono::steady_clock::now();
@@ -240,7 +239,8 @@ void LiveSolver::worker()
                 status_.ready = run_ != nullptr;
                 status_.error = error;
                 status_.precompute_ms = ms;
-                status_.playing = play && run_ != nullptr;
+                // Playing if asked for since the restart was requested (and it worked).
+                status_.playing = status_.playing && run_ != nullptr;
                 if (run_)
                 {
                     energies_ = {{0, energy}};

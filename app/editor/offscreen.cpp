@@ -16,53 +16,43 @@
 
 namespace meshfair::app {
 
-namespace {
-
-// The offscreen frame: the session's view, and the panels when asked for.
-class OffscreenHost final : public ScriptHost
+OffscreenHost::OffscreenHost(EditorSession& session, int width, int height, bool ui)
+    : session_(session), width_(width), height_(height)
 {
-public:
-    OffscreenHost(EditorSession& session, int width, int height, bool ui)
-        : session_(session), width_(width), height_(height)
+    if (ui)
+        layer_ = std::make_unique<InterfaceContext>();
+}
+
+OffscreenHost::~OffscreenHost() = default;
+
+void OffscreenHost::layout()
+{
+    if (!layer_)
     {
-        if (ui)
-            layer_ = std::make_unique<InterfaceContext>();
+        session_.set_view_rect(ViewRect::whole(width_, height_));
+        return;
     }
+    // The panels first: they decide the rectangle left to the view.
+    session_.prepare_ui();
+    ui_->prepare_offscreen(*layer_, session_.document(), session_.state(), session_.camera(),
+                           width_, height_);
+    session_.set_view_rect(EditorUi::view_rect(width_, height_, session_.state()));
+}
 
-    void layout() override
-    {
-        if (!layer_)
-        {
-            session_.set_view_rect(ViewRect::whole(width_, height_));
-            return;
-        }
-        // The panels first: they decide the rectangle left to the view.
-        session_.prepare_ui();
-        ui_.prepare_offscreen(*layer_, session_.document(), session_.state(), session_.camera(),
-                              width_, height_);
-        session_.set_view_rect(EditorUi::view_rect(width_, height_, session_.state()));
-    }
+Image OffscreenHost::frame()
+{
+    layout();
+    session_.update();
+    session_.draw();
+    if (layer_)
+        layer_->draw();
+    return session_.renderer().read_pixels(width_, height_);
+}
 
-    void screenshot(const std::string& path) override
-    {
-        layout();
-        session_.update();
-        session_.draw();
-        if (layer_)
-            layer_->draw();
-        write_png(renderer().read_pixels(width_, height_), path);
-    }
-
-    Renderer& renderer() { return session_.renderer(); }
-
-private:
-    EditorSession& session_;
-    int width_, height_;
-    std::unique_ptr<InterfaceContext> layer_;
-    EditorUi ui_;
-};
-
-} // namespace
+void OffscreenHost::screenshot(const std::string& path)
+{
+    write_png(frame(), path);
+}
 
 void render_screenshot(const ScreenshotRequest& request)
 {

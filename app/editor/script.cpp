@@ -77,19 +77,21 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     a.where = r.where;
     if (!j.is_object())
         fail(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",         "elements",  "through",
-                                        "brush_radius", "drag",      "click",
-                                        "scroll",       "select",    "undo",
-                                        "redo",         "view",      "projection",
-                                        "screenshot",   "save_mesh", "create_set",
-                                        "delete_set",   "show_set",  "hide_set",
-                                        "select_set",   "move_pins", "normal_direction",
-                                        "solver",       "step",      "play",
-                                        "reset",        "apply",     "export_recipe",
-                                        "import_recipe"};
+    static const char* const kinds[] = {"tool",          "elements",  "through",
+                                        "brush_radius",  "drag",      "click",
+                                        "scroll",        "select",    "undo",
+                                        "redo",          "view",      "projection",
+                                        "screenshot",    "save_mesh", "create_set",
+                                        "delete_set",    "show_set",  "hide_set",
+                                        "select_set",    "move_pins", "normal_direction",
+                                        "solver",        "step",      "play",
+                                        "reset",         "apply",     "export_recipe",
+                                        "import_recipe", "noise"};
     // Options, and the one action each belongs to.
-    static const std::pair<const char*, const char*> options[] = {
-        {"name", "create_set"}, {"offset", "move_pins"}, {"direction", "normal_direction"}};
+    static const std::pair<const char*, const char*> options[] = {{"name", "create_set"},
+                                                                  {"offset", "move_pins"},
+                                                                  {"direction", "normal_direction"},
+                                                                  {"seed", "noise"}};
     std::string kind;
     for (const auto& [key, value] : j.items())
     {
@@ -339,6 +341,20 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         a.kind = kind == "step" ? Kind::Step : Kind::Play;
         a.count = count(1, 1000000);
     }
+    else if (kind == "noise")
+    {
+        a.kind = Kind::Noise;
+        a.value = r.number(v, kind, 0, 10);
+        a.count = 1;
+        if (j.contains("seed"))
+        {
+            const Json& seed = j["seed"];
+            if (!seed.is_number_integer() || seed.get<long long>() < 0 ||
+                seed.get<long long>() > 2147483647)
+                r.bad("seed", "must be an integer from 0 to 2147483647");
+            a.count = static_cast<int>(seed.get<long long>());
+        }
+    }
     else if (kind == "reset" || kind == "apply")
     {
         a.kind = kind == "reset" ? Kind::Reset : Kind::Apply;
@@ -578,6 +594,9 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                     session.step(a.count);
                 else
                     play_frames(session, a.count);
+                break;
+            case Kind::Noise:
+                session.add_noise(a.value, static_cast<std::uint64_t>(a.count));
                 break;
             case Kind::Reset:
                 session.reset_shape();

@@ -41,7 +41,8 @@ struct ScriptAction
         Reset,           //!< back to the base shape
         Apply,           //!< the current shape becomes the base
         ExportRecipe,    //!< text: a JSON path
-        ImportRecipe     //!< text: a JSON path
+        ImportRecipe,    //!< text: a JSON path
+        Noise            //!< value: sigma in mean edge lengths; count: the seed
     };
     Kind kind = Kind::Tool;
     std::string where; //!< "actions[3]", for messages

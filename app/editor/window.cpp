@@ -162,6 +162,12 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
         case GLFW_KEY_N:
             r.tool = ToolKind::Navigate;
             break;
+        case GLFW_KEY_E:
+            state.show_energy = !state.show_energy;
+            break;
+        case GLFW_KEY_SPACE:
+            (e.session->playing() ? r.pause : r.play) = true;
+            break;
         case GLFW_KEY_K:
             r.tool = ToolKind::Click;
             break;

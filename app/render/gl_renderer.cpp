@@ -74,6 +74,7 @@ struct GlRenderer::Gl
     GLuint triangle_face_texture = 0, face_area_texture = 0;
     GLuint face_selected = 0, face_selected_texture = 0; // one byte per face
     GLuint selected_points = 0;                          // indices of the selected vertices
+    GLuint glyph_vao = 0, glyph_points = 0;              // the glyphs' points, all groups
     GLsizei selected_point_count = 0;
     GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
     int pick_width = 0, pick_height = 0;
@@ -88,6 +89,13 @@ struct GlRenderer::Gl
             glGenBuffers(1, b);
         glGenBuffers(1, &face_selected);
         glGenBuffers(1, &selected_points);
+        glGenVertexArrays(1, &glyph_vao);
+        glGenBuffers(1, &glyph_points);
+        glBindVertexArray(glyph_vao);
+        glBindBuffer(GL_ARRAY_BUFFER, glyph_points);
+        glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(kPosition);
+        glBindVertexArray(0);
         glGenTextures(1, &triangle_face_texture);
         glGenTextures(1, &face_area_texture);
         glGenTextures(1, &face_selected_texture);
@@ -129,6 +137,8 @@ struct GlRenderer::Gl
         glDeleteBuffers(9, buffers);
         glDeleteBuffers(1, &face_selected);
         glDeleteBuffers(1, &selected_points);
+        glDeleteVertexArrays(1, &glyph_vao);
+        glDeleteBuffers(1, &glyph_points);
         glDeleteTextures(1, &triangle_face_texture);
         glDeleteTextures(1, &face_area_texture);
         glDeleteTextures(1, &face_selected_texture);
@@ -269,6 +279,24 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
     check("set_selection");
 }
 
+void GlRenderer::set_glyphs(std::span<const GlyphGroup> groups)
+{
+    std::vector<float> points;
+    glyphs_.clear();
+    for (const GlyphGroup& g : groups)
+    {
+        const int first = static_cast<int>(points.size() / 3);
+        const size_t per = g.shape == GlyphGroup::Shape::Segments ? 6 : 3;
+        const size_t n = g.points.size() / per * per; // whole glyphs only
+        points.insert(points.end(), g.points.begin(), g.points.begin() + static_cast<long>(n));
+        if (n > 0)
+            glyphs_.push_back({g.shape, g.color, g.size_px, first, static_cast<int>(n / 3)});
+    }
+    upload<float>(GL_ARRAY_BUFFER, gl_->glyph_points, points, buffer_allocations_);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    check("set_glyphs");
+}
+
 void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewRect& rect)
 {
     const int width = std::max(rect.width, 1), height = std::max(rect.height, 1);
@@ -353,6 +381,23 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         glUniform4f(gl_->points["u_color"], 1.0f, 0.62f, 0.10f, 1.0f);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points);
         glDrawElements(GL_POINTS, gl_->selected_point_count, GL_UNSIGNED_INT, nullptr);
+    }
+    if (!glyphs_.empty())
+    {
+        // The constraint sets' glyphs, over the selection.
+        glBindVertexArray(gl_->glyph_vao);
+        for (const GlyphRange& g : glyphs_)
+        {
+            const bool dots = g.shape == GlyphGroup::Shape::Dots;
+            gl::Program& program = dots ? gl_->points : gl_->lines;
+            program.use();
+            set_matrices(program, view, projection);
+            glUniform2f(program["u_viewport_px"], float(width), float(height));
+            glUniform1f(program[dots ? "u_size_px" : "u_width_px"], g.size_px);
+            glUniform1f(program["u_depth_bias"], 8e-5f);
+            glUniform4f(program["u_color"], g.color[0], g.color[1], g.color[2], 1.0f);
+            glDrawArrays(dots ? GL_POINTS : GL_LINES, g.first, g.count);
+        }
     }
     glBindVertexArray(0);
     glUseProgram(0);

@@ -27,6 +27,7 @@ public:
     void update_positions(std::span<const Scalar> positions) override;
     void set_vertex_colors(std::span<const float> rgb) override;
     void set_selection(std::span<const char> vertices, std::span<const char> faces) override;
+    void set_glyphs(std::span<const GlyphGroup> groups) override;
     void draw(const Camera& camera, const DisplayOptions& options, const ViewRect& view) override;
     Image read_pixels(int width, int height) override;
     PickResult pick(const Camera& camera, const ViewRect& view, int x, int y) override;
@@ -47,6 +48,14 @@ private:
     int triangle_indices_ = 0, edge_indices_ = 0, boundary_indices_ = 0, singular_indices_ = 0;
     std::vector<float> positions_, normals_, face_areas_; // staging, sized by set_mesh
     bool has_colors_ = false;
+    struct GlyphRange
+    {
+        GlyphGroup::Shape shape;
+        std::array<float, 3> color;
+        float size_px;
+        int first, count; // in points of the glyph buffer
+    };
+    std::vector<GlyphRange> glyphs_;
     int buffer_allocations_ = 0;
 };
 

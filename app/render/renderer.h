@@ -74,6 +74,22 @@ struct Visibility
 //! and still count as visible: the depth buffer's resolution.
 inline constexpr double kVisibilityDepthMargin = 2e-4;
 
+//! \brief Markers drawn over the surface, one colour per group: the constraint sets'
+//! glyphs (pins, anchors, centroids, normal arrows, a region's border ring). Hidden by
+//! the surface in front of them, like the vertices.
+struct GlyphGroup
+{
+    enum class Shape
+    {
+        Dots,    //!< a round dot of size_px at each point (3 floats each)
+        Segments //!< a line of size_px width between each pair of points (6 floats each)
+    };
+    Shape shape = Shape::Dots;
+    std::vector<float> points;
+    std::array<float, 3> color{1, 1, 1};
+    float size_px = 6;
+};
+
 //! \brief The viewer's drawing interface, free of GL types: the same calls draw in a
 //! window, into an OSMesa buffer or into a recording for tests.
 //!
@@ -92,6 +108,8 @@ public:
     //! \brief Shows a selection: selected faces tinted orange, selected vertices as orange
     //! dots; one flag per vertex and per face (all 0 hides it).
     virtual void set_selection(std::span<const char> vertices, std::span<const char> faces) = 0;
+    //! Replaces the glyphs drawn over the surface (none: empty).
+    virtual void set_glyphs(std::span<const GlyphGroup> groups) = 0;
     //! Clears the current framebuffer and draws the mesh into the view's rectangle.
     virtual void draw(const Camera& camera, const DisplayOptions& options,
                       const ViewRect& view) = 0;

@@ -8,7 +8,10 @@
 #include <filesystem>
 #include <string>
 
+#include "app/editor/editor_session.h"
+#include "app/editor/offscreen.h"
 #include "app/editor/script.h"
+#include "app/render/gl_renderer.h"
 #include "app/render/image.h"
 #include "core/errors.h"
 #include "core/io/io.h"
@@ -26,11 +29,11 @@ test::CommandRun play(const std::string& script, const fs::path& png,
 {
     const fs::path path = png.parent_path() / (png.stem().string() + ".json");
     test::write_bytes(path, script);
-    return test::run_command(
-        "env -u DISPLAY GALLIUM_DRIVER=llvmpipe " + test::shell_quote(MESHFAIR_EDITOR) +
-        " --offscreen " + test::shell_quote((test::assets_dir() / "bunny.obj").string()) + " " +
-        options + " --script " + test::shell_quote(path.string()) + " --screenshot " +
-        test::shell_quote(png.string()));
+    return test::run_command("env -u DISPLAY GALLIUM_DRIVER=llvmpipe " +
+                             test::shell_quote(MESHFAIR_EDITOR) + " --offscreen " +
+                             test::shell_quote((test::assets_dir() / "bunny.obj").string()) + " " +
+                             options + " --script " + test::shell_quote(path.string()) +
+                             " --screenshot " + test::shell_quote(png.string()));
 }
 
 // A stroke across the bunny's flank; a zoom onto its haunch and a lasso there (480 x 360).
@@ -45,10 +48,69 @@ const char* kLassoInPlace =
     R"({"tool": "lasso"}, {"elements": "faces"},
        {"drag": [[200, 170], [300, 140], [370, 200], [340, 290], [250, 300], [230, 240]]})";
 
+// A script of tests/render/scripts/ with @OUT@ replaced by `out`.
+std::string script_file(const std::string& name, const fs::path& out)
+{
+    std::string text = io::read_file((fs::path(MESHFAIR_TEST_SCRIPTS) / name).string());
+    for (size_t at; (at = text.find("@OUT@")) != std::string::npos;)
+        text.replace(at, 5, out.string());
+    return text;
+}
+
 } // namespace
 
 TEST_SUITE("Scripted sessions")
 {
+    TEST_CASE("the glyphs of every constraint kind, and a region's border ring")
+    {
+        const fs::path dir = test::temp_dir();
+        const test::CommandRun run = play(script_file("constraint_glyphs.json", dir),
+                                          dir / "glyphs.png", "--size 560x420 --mode flat");
+        REQUIRE_MESSAGE(run.code == 0, run.err);
+        test::check_golden("script_constraint_glyphs",
+                           app::read_png((dir / "glyphs.png").string()));
+    }
+
+    TEST_CASE("a noisy bunny's flank before and after smoothing it as a region")
+    {
+        const fs::path dir = test::temp_dir();
+        const test::CommandRun run = play(script_file("region_smoothing.json", dir),
+                                          dir / "end.png", "--size 560x420 --mode flat");
+        REQUIRE_MESSAGE(run.code == 0, run.err);
+        test::check_golden("script_region_before",
+                           app::read_png((dir / "region_before.png").string()));
+        test::check_golden("script_region_after",
+                           app::read_png((dir / "region_after.png").string()));
+    }
+
+    TEST_CASE("the energy plot and the panels after live solving, rendered in process")
+    {
+        // In process, so that the renderer's name shown is "llvmpipe" without the LLVM
+        // version of the machine (as for the other interface goldens).
+        test::offscreen_context(1280, 800);
+        app::GlRenderer renderer;
+        app::EditorSession session(app::load_document((test::assets_dir() / "bunny.obj").string()),
+                                   renderer);
+        session.state().offscreen = true;
+        session.state().renderer_name = "llvmpipe";
+        app::OffscreenHost host(session, 1280, 800, true);
+        host.layout();
+        session.camera().frame(session.document().box, session.aspect());
+        const app::Script script = app::parse_script(
+            R"([{"noise": 0.3, "seed": 5}, {"tool": "rectangle"}, {"elements": "faces"},
+                {"drag": [[430, 250], [700, 520]]}, {"create_set": "region", "name": "flank"},
+                {"drag": [[520, 330], [560, 370]]}, {"create_set": "centroid"},
+                {"select": "clear"},
+                {"solver": {"iterations_per_frame": 5, "centroid_mu": 4}}, {"play": 12}])",
+            "energy.json");
+        app::play_script(script, session, host);
+        CHECK(session.document().steps_from_base == 60);
+        const std::vector<app::EnergySample> e = session.energies();
+        REQUIRE(e.size() == 13);
+        CHECK(e.back().energy.total() < e.front().energy.total());
+        test::check_golden("ui_energy_plot", host.frame());
+    }
+
     TEST_CASE("a brush stroke's vertices, then a lasso's faces, as golden images")
     {
         const fs::path dir = test::temp_dir();
@@ -57,8 +119,8 @@ TEST_SUITE("Scripted sessions")
             play(std::string("[") + kBrushStroke + "]", brush, "--size 480x360 --mode flat");
         REQUIRE_MESSAGE(a.code == 0, a.err);
         test::check_golden("script_brush_selection", app::read_png(brush.string()));
-        const test::CommandRun b = play(std::string("[") + kLassoFaces + "]", lasso,
-                                        "--size 480x360 --mode flat,wire");
+        const test::CommandRun b =
+            play(std::string("[") + kLassoFaces + "]", lasso, "--size 480x360 --mode flat,wire");
         REQUIRE_MESSAGE(b.code == 0, b.err);
         test::check_golden("script_lasso_faces", app::read_png(lasso.string()));
     }
@@ -119,14 +181,16 @@ TEST_SUITE("Scripted sessions")
               "'s.json': actions[0].drag: must be a list of at least 2 points [x, y]");
         CHECK(message("[{\"click\": [1, 2], \"undo\": 1}]") ==
               "'s.json': actions[0]: has two actions ('click' and 'undo')");
-        CHECK(message("[{\"undo\": 0}]") == "'s.json': actions[0].undo: must be a count from 1 "
-                                            "to 100000");
+        CHECK(message("[{\"undo\": 0}]") ==
+              "'s.json': actions[0].undo: must be a count from 1 "
+              "to 100000");
         CHECK(message("[{\"select\": \"grow\", \"modifiers\": [\"shift\"]}]") ==
               "'s.json': actions[0].modifiers: only a drag or a click takes modifiers");
         CHECK(message("[{\"drag\": [[0, 0], [1, 1]], \"modifiers\": [\"hyper\"]}]") ==
               "'s.json': actions[0].modifiers: 'hyper' is not shift, ctrl or alt");
-        CHECK(message("[{\"scroll\": 2}]") == "'s.json': actions[0].scroll: needs 'at': the "
-                                              "cursor [x, y]");
+        CHECK(message("[{\"scroll\": 2}]") ==
+              "'s.json': actions[0].scroll: needs 'at': the "
+              "cursor [x, y]");
         CHECK(message("[{\"click\": [1e300, 2]}]").find("actions[0].click: must be a number") !=
               std::string::npos);
         CHECK(message("{\"steps\": []}") ==

@@ -33,7 +33,8 @@ struct NoisyBunny
     GlRenderer renderer;
     EditorSession session;
     explicit NoisyBunny(const fs::path& dir)
-        : path(write_noisy(dir)), renderer((test::offscreen_context(kWidth, kHeight), GlRenderer())),
+        : path(write_noisy(dir)),
+          renderer((test::offscreen_context(kWidth, kHeight), GlRenderer())),
           session(load_document(path.string()), renderer)
     {
         session.state().offscreen = true;
@@ -61,10 +62,10 @@ struct NoisyBunny
 std::vector<Scalar> cli_positions(const fs::path& mesh, const fs::path& recipe)
 {
     const fs::path out = recipe.parent_path() / "cli.obj";
-    const test::CommandRun run = test::run_command(
-        test::shell_quote(MESHFAIR_CLI) + " smooth " + test::shell_quote(mesh.string()) + " -o " +
-        test::shell_quote(out.string()) + " --recipe " + test::shell_quote(recipe.string()) +
-        " --quiet");
+    const test::CommandRun run = test::run_command(test::shell_quote(MESHFAIR_CLI) + " smooth " +
+                                                   test::shell_quote(mesh.string()) + " -o " +
+                                                   test::shell_quote(out.string()) + " --recipe " +
+                                                   test::shell_quote(recipe.string()) + " --quiet");
     REQUIRE_MESSAGE(run.code == 0, run.err);
     return io::read_mesh(out.string()).positions;
 }
