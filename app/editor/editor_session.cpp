@@ -7,6 +7,7 @@
 #include <cmath>
 #include <utility>
 
+#include "app/editor/heat_map.h"
 #include "app/tools/brush_tool.h"
 #include "app/tools/click_tool.h"
 #include "app/tools/lasso_tool.h"
@@ -582,6 +583,21 @@ void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
     record("noise", std::move(before));
 }
 
+void EditorSession::set_heat_map(std::optional<EnergyTerm> term)
+{
+    state_.heat_map = term;
+    solver_.set_heat(term);
+    if (!term)
+        state_.display.vertex_colors = false;
+}
+
+void EditorSession::wait_for_heat()
+{
+    update(); // a pending restart first
+    solver_.wait_idle();
+    update();
+}
+
 void EditorSession::update()
 {
     if (recipe_dirty_)
@@ -616,6 +632,11 @@ void EditorSession::update()
     {
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
         positions_changed();
+    }
+    if (state_.heat_map && solver_.take_heat(heat_))
+    {
+        renderer_.set_vertex_colors(heat_colors(heat_));
+        state_.display.vertex_colors = true;
     }
     if (run_open_ && !solver_.status().playing && solver_.status().ready)
         close_run(); // converged
@@ -683,6 +704,8 @@ void EditorSession::carry_out(const UiRequests& r)
         reset_shape();
     if (r.apply_shape)
         apply_shape();
+    if (r.heat_map)
+        set_heat_map(*r.heat_map);
     if (r.noise)
         add_noise(r.noise->first, r.noise->second);
     if (r.export_recipe_path)

@@ -131,6 +131,11 @@ public:
     //! Replaces the sets and settings by a recipe's (one undo step); false and a message when
     //! it cannot be read or does not fit the mesh.
     bool import_recipe(const std::string& path);
+    //! \brief Colours each vertex by its share of `term`'s energy, updated with the solver's
+    //! frames (nullopt: the heat map off). Display only, not an undo step.
+    void set_heat_map(std::optional<EnergyTerm> term);
+    //! Waits for the solver's shares of the heat map's term and shows them (scripts).
+    void wait_for_heat();
     //! \brief Once per frame, before drawing: restarts the solver when the recipe changed,
     //! takes its newest positions and hands them to the renderer.
     void update();
@@ -188,7 +193,9 @@ private:
     int steps_at_restart_ = 0;     // steps_from_base when the solver last restarted
     bool run_open_ = false;        // play() began a run not yet recorded
     std::optional<EditState> run_before_;
-    std::uint64_t geometry_ = 0; // changes of the positions, for the visibility key
+    std::uint64_t geometry_ = 0;
+    std::vector<Scalar> heat_; // the newest shares of the heat map's term // changes of the
+                               // positions, for the visibility key
     ScreenPoint cursor_;
     bool selection_dirty_ = true;
     bool counts_dirty_ = true;

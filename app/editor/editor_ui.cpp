@@ -11,6 +11,7 @@
 
 #include <imgui.h>
 
+#include "app/editor/heat_map.h"
 #include "app/editor/interface_context.h"
 #include "core/io/io.h"
 
@@ -548,6 +549,12 @@ void solver_section(const Document& document, EditorState& state, UiRequests& r)
                 document.reproducible ? "" : " (recipe changed during the run)");
     if (!state.offscreen) // a time would make offscreen frames differ from run to run
         ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
+    const char* heat_items[] = {"off", "total", "edge", "anchor", "centroid", "normal"};
+    int heat = state.heat_map ? 1 + static_cast<int>(*state.heat_map) : 0;
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::Combo("heat map: energy share", &heat, heat_items, 6))
+        r.heat_map =
+            heat == 0 ? std::nullopt : std::optional<EnergyTerm>(static_cast<EnergyTerm>(heat - 1));
     ImGui::SetNextItemWidth(100);
     ImGui::SliderFloat("##sigma", &state.noise_sigma, 0.0f, 1.0f, "sigma %.2f");
     ImGui::SameLine();

@@ -43,7 +43,9 @@ struct EditorState
     bool playing = false;               //!< refreshed likewise
     bool energy_log_scale = false;      //!< the energy plot's vertical axis
     bool show_energy = true;            //!< the energy plot window
-    float noise_sigma = 0.3f;           //!< the noise tool's sigma, in mean edge lengths
+    //! The heat map shown: each vertex coloured by its share of a term (nullopt: none).
+    std::optional<EnergyTerm> heat_map;
+    float noise_sigma = 0.3f; //!< the noise tool's sigma, in mean edge lengths
     int noise_seed = 1;
     DisplayOptions display;
     OrbitStyle orbit = OrbitStyle::Turntable;
@@ -96,6 +98,7 @@ struct UiRequests
     bool play = false, pause = false, step = false, reset_shape = false, apply_shape = false;
     std::optional<std::string> export_recipe_path, import_recipe_path;
     std::optional<std::pair<Scalar, std::uint64_t>> noise; //!< sigma (mean edges), seed
+    std::optional<std::optional<EnergyTerm>> heat_map;     //!< a new heat map (or none)
     bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them
 };
 

@@ -104,7 +104,7 @@ bool LiveSolver::wait_published()
 void LiveSolver::wait_idle()
 {
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return !busy_ && !restart_; });
+    done_.wait(lock, [&] { return !busy_ && !restart_ && !(heat_dirty_ && run_); });
 }
 
 bool LiveSolver::take(std::vector<Scalar>& positions)
@@ -118,6 +118,35 @@ bool LiveSolver::take(std::vector<Scalar>& positions)
     }
     wake_.notify_all(); // a playing worker waits for this
     return true;
+}
+
+void LiveSolver::set_heat(std::optional<EnergyTerm> term)
+{
+    {
+        std::lock_guard lock(mutex_);
+        heat_term_ = term;
+        heat_dirty_ = term.has_value();
+        heat_fresh_ = false;
+    }
+    wake_.notify_all();
+}
+
+bool LiveSolver::take_heat(std::vector<Scalar>& heat)
+{
+    std::lock_guard lock(mutex_);
+    if (!heat_fresh_)
+        return false;
+    std::swap(heat, heat_published_);
+    heat_fresh_ = false;
+    return true;
+}
+
+void LiveSolver::compute_heat(std::optional<EnergyTerm> term)
+{
+    if (!term || !run_)
+        return;
+    heat_back_.resize(run_->session().positions().size() / 3);
+    run_->file_vertex_energy(*term, heat_back_);
 }
 
 SolverStatus LiveSolver::status() const
@@ -138,6 +167,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     const std::uint64_t generation = generation_;
     const Scalar tolerance = run_->session().recipe().tolerance;
     TermEnergies before = energies_.empty() ? run_->energy() : energies_.back().energy;
+    const std::optional<EnergyTerm> heat = heat_term_;
     lock.unlock();
 
     // Outside the lock: the interface keeps drawing while the steps run.
@@ -157,6 +187,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     const TermEnergies energy = tolerance > 0 ? before : run_->energy();
     back_.resize(run_->session().positions().size());
     run_->file_positions(back_);
+    compute_heat(heat);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 
@@ -179,6 +210,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         }
         std::swap(back_, published_);
         fresh_ = true;
+        if (heat && heat == heat_term_)
+        {
+            std::swap(heat_back_, heat_published_);
+            heat_fresh_ = true;
+            heat_dirty_ = false;
+        }
     }
     done_.notify_all();
     wake_.notify_all();
@@ -191,10 +228,30 @@ void LiveSolver::worker()
     {
         wake_.wait(lock, [&] {
             return quit_ || (restart_ && !busy_) ||
-                   (status_.playing && run_ && !fresh_ && !busy_ && !restart_);
+                   (status_.playing && run_ && !fresh_ && !busy_ && !restart_) ||
+                   (heat_dirty_ && run_ && !busy_ && !restart_);
         });
         if (quit_)
             return;
+        if (heat_dirty_ && !restart_ && !status_.playing)
+        {
+            // Shares for the positions as they are (the heat map was just turned on).
+            busy_ = true;
+            const std::optional<EnergyTerm> heat = heat_term_;
+            const std::uint64_t generation = generation_;
+            lock.unlock();
+            compute_heat(heat);
+            lock.lock();
+            busy_ = false;
+            if (generation == generation_ && heat == heat_term_)
+            {
+                std::swap(heat_back_, heat_published_);
+                heat_fresh_ = true;
+            }
+            heat_dirty_ = false;
+            done_.notify_all();
+            continue;
+        }
         if (restart_)
         {
             Restart r = std::move(*restart_);
@@ -243,6 +300,7 @@ void LiveSolver::worker()
                 status_.playing = status_.playing && run_ != nullptr;
                 if (run_)
                 {
+                    heat_dirty_ = heat_term_.has_value();
                     energies_ = {{0, energy}};
                     published_ = std::move(published);
                     fresh_ = true; // the pins may have moved to their targets

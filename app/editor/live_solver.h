@@ -68,6 +68,11 @@ public:
     //! Waits until the worker is idle (precomputed, not mid-frame); for tests and scripts.
     void wait_idle();
 
+    //! \brief Also publish each vertex's share of `term` with every frame (a heat map;
+    //! nullopt: none). Computed on the worker, at once for the current positions.
+    void set_heat(std::optional<EnergyTerm> term);
+    //! The newest shares not yet taken (file order, #V), swapped into `heat`.
+    bool take_heat(std::vector<Scalar>& heat);
     //! \brief The newest positions not yet taken, swapped into `positions` (file order);
     //! false when there are none. Called once per frame by the interface.
     bool take(std::vector<Scalar>& positions);
@@ -101,6 +106,13 @@ private:
     std::vector<Scalar> back_;      // file order, being written (while busy_)
     bool fresh_ = false;            // published_ not yet taken
     std::vector<EnergySample> energies_;
+    std::optional<EnergyTerm> heat_term_;
+    bool heat_dirty_ = false;            // shares wanted for the current positions
+    std::vector<Scalar> heat_published_; // file order, newest
+    std::vector<Scalar> heat_back_;      // being written (while busy_)
+    bool heat_fresh_ = false;
+    //! Computes the shares into heat_back_ (outside the lock, while busy_).
+    void compute_heat(std::optional<EnergyTerm> term);
     std::thread thread_; // last: started once everything else exists
 };
 

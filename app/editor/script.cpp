@@ -6,6 +6,7 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "app/editor/heat_map.h"
 #include "core/errors.h"
 #include "core/io/io.h"
 
@@ -86,7 +87,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                                         "select_set",    "move_pins", "normal_direction",
                                         "solver",        "step",      "play",
                                         "reset",         "apply",     "export_recipe",
-                                        "import_recipe", "noise"};
+                                        "import_recipe", "noise",     "heat_map"};
     // Options, and the one action each belongs to.
     static const std::pair<const char*, const char*> options[] = {{"name", "create_set"},
                                                                   {"offset", "move_pins"},
@@ -341,6 +342,13 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         a.kind = kind == "step" ? Kind::Step : Kind::Play;
         a.count = count(1, 1000000);
     }
+    else if (kind == "heat_map")
+    {
+        a.kind = Kind::HeatMap;
+        a.text = r.text(v, kind);
+        if (a.text != "off" && !heat_term_named(a.text))
+            r.bad(kind, "'" + a.text + "' is not off, total, edge, anchor, centroid or normal");
+    }
     else if (kind == "noise")
     {
         a.kind = Kind::Noise;
@@ -594,6 +602,10 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                     session.step(a.count);
                 else
                     play_frames(session, a.count);
+                break;
+            case Kind::HeatMap:
+                session.set_heat_map(heat_term_named(a.text));
+                session.wait_for_heat();
                 break;
             case Kind::Noise:
                 session.add_noise(a.value, static_cast<std::uint64_t>(a.count));

@@ -42,7 +42,8 @@ struct ScriptAction
         Apply,           //!< the current shape becomes the base
         ExportRecipe,    //!< text: a JSON path
         ImportRecipe,    //!< text: a JSON path
-        Noise            //!< value: sigma in mean edge lengths; count: the seed
+        Noise,           //!< value: sigma in mean edge lengths; count: the seed
+        HeatMap          //!< text: a term ("total") or "off"
     };
     Kind kind = Kind::Tool;
     std::string where; //!< "actions[3]", for messages

@@ -36,4 +36,19 @@ void EdgeTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertice
                  [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
+void EdgeTerm::add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const
+{
+    for (Index i = 0; i < topology_->vertex_count; ++i)
+        for (const Index j : topology_->neighbors(i))
+            if (j > i)
+            {
+                const Scalar* p = &x[3 * i];
+                const Scalar* q = &x[3 * j];
+                const Scalar d0 = q[0] - p[0], d1 = q[1] - p[1], d2 = q[2] - p[2];
+                const Scalar half = 0.5 * (d0 * d0 + d1 * d1 + d2 * d2);
+                per_vertex[i] += half;
+                per_vertex[j] += half;
+            }
+}
+
 } // namespace meshfair

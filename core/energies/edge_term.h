@@ -27,6 +27,9 @@ public:
     explicit EdgeTerm(const Topology& topology) : topology_(&topology) {}
 
     Scalar energy(std::span<const Scalar> x) const;
+    //! \brief Adds each vertex's share of energy(x) to per_vertex (#V): half of each
+    //! edge's |x_j - x_i|^2 to each end, so the shares sum to the energy.
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     //! E_L(dx): the quadratic part, so E_L(x + dx) = E_L(x) - 2 r^T dx + quadratic(dx).
     Scalar quadratic(std::span<const Scalar> dx) const { return energy(dx); }
     //! diagonal[i] += n_i for every vertex.

@@ -116,4 +116,22 @@ void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index>
                  [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
+void FaceCentroidTerm::add_vertex_energy(std::span<const Scalar> x,
+                                         std::span<Scalar> per_vertex) const
+{
+    for (const Index f : faces_)
+    {
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        Scalar s = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar d = c[a] - target_[3 * f + a];
+            s += d * d;
+        }
+        const Scalar share = mu_ * s / Scalar(mesh_->face_size(f));
+        for (const Index v : mesh_->face(f))
+            per_vertex[v] += share;
+    }
+}
+
 } // namespace meshfair

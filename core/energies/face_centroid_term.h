@@ -48,6 +48,8 @@ public:
     const std::vector<Index>& faces() const { return faces_; }
 
     Scalar energy(std::span<const Scalar> x) const;
+    //! Adds each constrained face's mu |x_f - x0_f|^2 to per_vertex (#V), 1/n_f to each corner.
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
     //! rhs_i += the residuals of the constrained faces of i, for each i in `vertices`.

@@ -89,4 +89,23 @@ void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M)
     }
 }
 
+void FaceNormalTerm::add_vertex_energy(std::span<const Scalar> x, std::span<const Scalar> normals,
+                                       std::span<Scalar> per_vertex) const
+{
+    for (const Index f : faces_)
+    {
+        const Scalar* u = &normals[3 * f];
+        const auto face = mesh_->face(f);
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Index i = face[k], j = face[(k + 1) % face.size()];
+            const Scalar* p = &x[3 * i];
+            const Scalar* q = &x[3 * j];
+            const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
+            per_vertex[i] += 0.5 * mu_ * d * d;
+            per_vertex[j] += 0.5 * mu_ * d * d;
+        }
+    }
+}
+
 } // namespace meshfair

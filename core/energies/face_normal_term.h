@@ -34,6 +34,9 @@ public:
     bool constrains(Index f) const { return constrained_[f] != 0; }
 
     Scalar energy(std::span<const Scalar> x, std::span<const Scalar> normals) const;
+    //! Adds each face-edge pair's mu (u_f^T (x_j - x_i))^2 to per_vertex (#V), half to each end.
+    void add_vertex_energy(std::span<const Scalar> x, std::span<const Scalar> normals,
+                           std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx, std::span<const Scalar> normals) const
     {
         return energy(dx, normals);

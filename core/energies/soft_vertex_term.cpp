@@ -77,4 +77,19 @@ void SoftVertexTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> v
                  [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
+void SoftVertexTerm::add_vertex_energy(std::span<const Scalar> x,
+                                       std::span<Scalar> per_vertex) const
+{
+    for (const Index i : vertices_)
+    {
+        Scalar s = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar d = x[3 * i + a] - target_[3 * i + a];
+            s += d * d;
+        }
+        per_vertex[i] += mu_ * s;
+    }
+}
+
 } // namespace meshfair

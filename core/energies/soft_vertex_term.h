@@ -33,6 +33,8 @@ public:
     const std::vector<Index>& vertices() const { return vertices_; }
 
     Scalar energy(std::span<const Scalar> x) const;
+    //! Adds mu |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,

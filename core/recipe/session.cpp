@@ -504,6 +504,22 @@ StepInfo Session::general_step(std::span<Scalar> x)
     return info;
 }
 
+void Session::vertex_energy(std::span<const Scalar> x, EnergyTerm term,
+                            std::span<Scalar> per_vertex) const
+{
+    check_size(x, "vertex_energy");
+    std::fill(per_vertex.begin(), per_vertex.end(), Scalar(0));
+    const bool all = term == EnergyTerm::Total;
+    if (all || term == EnergyTerm::Edge)
+        edge_.add_vertex_energy(x, per_vertex);
+    if (soft_ && (all || term == EnergyTerm::Soft))
+        soft_->add_vertex_energy(x, per_vertex);
+    if (centroid_ && (all || term == EnergyTerm::Centroid))
+        centroid_->add_vertex_energy(x, per_vertex);
+    if (normal_ && (all || term == EnergyTerm::Normal))
+        normal_->add_vertex_energy(x, normals_, per_vertex);
+}
+
 TermEnergies Session::energy(std::span<const Scalar> x) const
 {
     TermEnergies e;

@@ -33,6 +33,16 @@ struct TermEnergies
     }
 };
 
+//! The terms of the energy that a heat map can show, or all of them.
+enum class EnergyTerm
+{
+    Total,
+    Edge,
+    Soft,
+    Centroid,
+    Normal
+};
+
 //! What one step did.
 struct StepInfo
 {
@@ -82,6 +92,13 @@ public:
     StepInfo step(std::span<Scalar> x);
 
     TermEnergies energy(std::span<const Scalar> x) const;
+    //! \brief Each vertex's share of a term's energy at x (per_vertex: #V values, set): the
+    //! edge and normal terms give half of each edge's part to each end, the centroid term
+    //! 1/n_f of a face's to each corner, so the shares sum to the term's energy(x). Total is
+    //! the sum of the position terms (the normal-smoothing terms of joint mode have no
+    //! vertex). Where constraints fight the smoothing, both shares are high.
+    void vertex_energy(std::span<const Scalar> x, EnergyTerm term,
+                       std::span<Scalar> per_vertex) const;
 
     //! \brief Positions kept by the session, for callers that step many times (run(),
     //! the editor): step() then works on them without copying, alternating two buffers

@@ -83,6 +83,15 @@ TEST_SUITE("Scripted sessions")
                            app::read_png((dir / "region_after.png").string()));
     }
 
+    TEST_CASE("the heat map: each vertex coloured by its share of the energy")
+    {
+        const fs::path dir = test::temp_dir();
+        const test::CommandRun run =
+            play(script_file("heat_map.json", dir), dir / "heat.png", "--size 560x420 --mode flat");
+        REQUIRE_MESSAGE(run.code == 0, run.err);
+        test::check_golden("script_heat_map", app::read_png((dir / "heat.png").string()));
+    }
+
     TEST_CASE("the energy plot and the panels after live solving, rendered in process")
     {
         // In process, so that the renderer's name shown is "llvmpipe" without the LLVM

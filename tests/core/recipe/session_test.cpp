@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
@@ -213,6 +214,42 @@ std::vector<Scalar> direct_minimizer(const Mesh& m, const Topology& t, const Rec
 
 TEST_SUITE("Session")
 {
+    TEST_CASE("each vertex's share of a term's energy sums to the term, for every term")
+    {
+        for (const Mesh& clean :
+             {test::quad_torus(10, 6, 2, 0.6), test::open_grid(4, 3), test::nonmanifold_fan(),
+              test::mixed_polygons(), test::icosphere(2)})
+        {
+            const Mesh m = noisy(clean);
+            const Topology t = build_topology(m);
+            for (Case c : configurations(m))
+            {
+                CAPTURE(c.name);
+                Session s(m, t, c.recipe);
+                Mesh x = m;
+                s.apply_hard_targets(x.positions);
+                s.step(x.positions); // away from the targets: every term is non-zero
+                s.step(x.positions);
+                const TermEnergies e = s.energy(x.positions);
+                std::vector<Scalar> share(static_cast<size_t>(m.vertex_count()));
+                const auto sum = [&](EnergyTerm term) {
+                    s.vertex_energy(x.positions, term, share);
+                    for (const Scalar v : share)
+                        REQUIRE(v >= 0);
+                    return std::accumulate(share.begin(), share.end(), Scalar(0));
+                };
+                const auto close = [](Scalar a, Scalar b) {
+                    return std::abs(a - b) <= 1e-12 * std::max<Scalar>(1, std::abs(b));
+                };
+                CHECK(close(sum(EnergyTerm::Edge), e.edge));
+                CHECK(close(sum(EnergyTerm::Soft), e.soft));
+                CHECK(close(sum(EnergyTerm::Centroid), e.centroid));
+                CHECK(close(sum(EnergyTerm::Normal), e.normal));
+                CHECK(close(sum(EnergyTerm::Total), e.edge + e.soft + e.centroid + e.normal));
+            }
+        }
+    }
+
     TEST_CASE("energy never increases with lambda = 0.5 nor with the line search")
     {
         for (const Mesh& clean : {test::icosphere(2), test::mixed_polygons(),

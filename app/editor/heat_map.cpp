@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/heat_map.h"
+
+#include <algorithm>
+#include <array>
+#include <utility>
+
+namespace meshfair::app {
+
+namespace {
+
+constexpr std::array<std::pair<EnergyTerm, std::string_view>, 5> kNames = {{
+    {EnergyTerm::Total, "total"},
+    {EnergyTerm::Edge, "edge"},
+    {EnergyTerm::Soft, "anchor"},
+    {EnergyTerm::Centroid, "centroid"},
+    {EnergyTerm::Normal, "normal"},
+}};
+
+} // namespace
+
+std::string_view heat_term_name(EnergyTerm term)
+{
+    for (const auto& [t, name] : kNames)
+        if (t == term)
+            return name;
+    return {};
+}
+
+std::optional<EnergyTerm> heat_term_named(std::string_view name)
+{
+    for (const auto& [t, n] : kNames)
+        if (n == name)
+            return t;
+    return std::nullopt;
+}
+
+std::vector<float> heat_colors(std::span<const Scalar> shares)
+{
+    std::vector<Scalar> positive;
+    for (const Scalar v : shares)
+        if (v > 0)
+            positive.push_back(v);
+    Scalar top = 0;
+    if (!positive.empty())
+    {
+        const size_t k = std::min(positive.size() - 1, positive.size() * 99 / 100);
+        std::nth_element(positive.begin(), positive.begin() + static_cast<long>(k), positive.end());
+        top = positive[k];
+    }
+    static constexpr float stops[4][3] = {
+        {0.10f, 0.14f, 0.45f}, {0.10f, 0.60f, 0.60f}, {0.95f, 0.85f, 0.20f}, {0.85f, 0.15f, 0.10f}};
+    std::vector<float> rgb(3 * shares.size());
+    for (size_t i = 0; i < shares.size(); ++i)
+    {
+        const double t = top > 0 ? std::clamp(shares[i] / top, 0.0, 1.0) : 0.0;
+        const double x = 3 * t;
+        const int s = std::min(static_cast<int>(x), 2);
+        const float f = static_cast<float>(x - s);
+        for (int c = 0; c < 3; ++c)
+            rgb[3 * i + static_cast<size_t>(c)] = stops[s][c] + f * (stops[s + 1][c] - stops[s][c]);
+    }
+    return rgb;
+}
+
+} // namespace meshfair::app

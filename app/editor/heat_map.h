@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "core/recipe/session.h"
+
+namespace meshfair::app {
+
+//! "total", "edge", "anchor", "centroid", "normal" (the heat map menu and scripts).
+std::string_view heat_term_name(EnergyTerm term);
+std::optional<EnergyTerm> heat_term_named(std::string_view name);
+
+//! \brief Per-vertex colours (RGB in [0, 1], 3 per value) for each vertex's share of a term:
+//! dark blue for none, through teal and yellow, to red at the 99th percentile of the
+//! positive shares and above (so that a few extreme vertices do not wash out the rest).
+std::vector<float> heat_colors(std::span<const Scalar> shares);
+
+} // namespace meshfair::app
