@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <utility>
 
@@ -232,7 +233,91 @@ void EditorSession::after_history(unsigned parts)
 
 void EditorSession::record(const std::string& label, EditState before, bool merge)
 {
-    history_.record(label, std::move(before), document_, merge);
+    if (history_.record(label, std::move(before), document_, merge))
+        ++edits_;
+}
+
+namespace {
+
+double steady_seconds()
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+} // namespace
+
+void EditorSession::autosave(double interval_s)
+{
+    if (recovery_root_.empty() || edits_ == autosaved_edits_)
+        return;
+    const double now = steady_seconds();
+    if (interval_s > 0 && now - last_autosave_ < interval_s)
+        return;
+    try
+    {
+        write_recovery(document_, recovery_root_);
+        if (owns_recovery_ && recovery_path_ != document_.path)
+            remove_recovery(recovery_path_, recovery_root_); // saved under another name since
+        owns_recovery_ = true;
+        recovery_path_ = document_.path;
+        autosaved_edits_ = edits_;
+        last_autosave_ = now;
+    }
+    catch (const std::exception& e)
+    {
+        state_.message = std::string("autosave failed: ") + e.what();
+        last_autosave_ = now; // not again at once
+    }
+}
+
+std::optional<RecoveryInfo> EditorSession::recovery_offer() const
+{
+    return find_recovery(document_.path, recovery_root_);
+}
+
+bool EditorSession::recover()
+{
+    const std::optional<RecoveryInfo> info = recovery_offer();
+    if (!info)
+    {
+        state_.message = "no recovery files for " + document_.path;
+        return false;
+    }
+    close_run();
+    try
+    {
+        restore_recovery(*info, document_);
+    }
+    catch (const InvalidInputError& e)
+    {
+        state_.message = e.what();
+        return false;
+    }
+    owns_recovery_ = true;
+    recovery_path_ = document_.path;
+    history_.clear();
+    positions_changed();
+    selection_changed();
+    sets_changed();
+    restarted_recipe_.clear();
+    recipe_dirty_ = true;
+    ++edits_;
+    state_.message = "recovered the session saved at " + info->saved_at;
+    return true;
+}
+
+void EditorSession::discard_recovery()
+{
+    remove_recovery(document_.path, recovery_root_);
+    state_.recovery_saved_at.reset();
+}
+
+void EditorSession::end_session()
+{
+    close_run();
+    if (owns_recovery_)
+        remove_recovery(recovery_path_, recovery_root_);
 }
 
 void EditorSession::sets_changed()
@@ -245,6 +330,7 @@ void EditorSession::sets_changed()
 
 void EditorSession::positions_changed()
 {
+    ++edits_;
     renderer_.update_positions(document_.mesh.positions);
     ++geometry_;
     glyphs_dirty_ = glyphs_dirty_ || !document_.sets.empty();
@@ -706,6 +792,13 @@ void EditorSession::carry_out(const UiRequests& r)
         apply_shape();
     if (r.heat_map)
         set_heat_map(*r.heat_map);
+    if (r.recover)
+    {
+        recover();
+        state_.recovery_saved_at.reset();
+    }
+    if (r.discard_recovery)
+        discard_recovery();
     if (r.noise)
         add_noise(r.noise->first, r.noise->second);
     if (r.export_recipe_path)

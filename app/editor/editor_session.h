@@ -12,6 +12,7 @@
 #include "app/editor/history.h"
 #include "app/editor/live_solver.h"
 #include "app/editor/navigation.h"
+#include "app/editor/recovery.h"
 #include "app/render/renderer.h"
 #include "app/tools/selection_commands.h"
 #include "app/tools/selection_tool.h"
@@ -140,6 +141,23 @@ public:
     //! takes its newest positions and hands them to the renderer.
     void update();
 
+    // --- Autosave and recovery (app/editor/recovery.h).
+    //! \brief Writes the recovery files when something changed since the last time and
+    //! at least `interval_s` seconds went by (0: now). Failures only set the message.
+    void autosave(double interval_s = 3.0);
+    //! Recovery files of this mesh left by an editor that crashed, if any.
+    std::optional<RecoveryInfo> recovery_offer() const;
+    //! \brief Restores them (the history starts again from there); false and a message
+    //! when they cannot be read.
+    bool recover();
+    //! Removes this mesh's recovery files (the offer declined).
+    void discard_recovery();
+    //! \brief At a clean exit: removes the recovery files this session wrote or recovered
+    //! (not those of another session it never touched).
+    void end_session();
+    //! Where recovery files go (recovery_root() unless set; empty: no autosave).
+    void set_recovery_root(std::string root) { recovery_root_ = std::move(root); }
+
     //! Fills the state the interface shows: the tool's overlay, the history, the counts.
     void prepare_ui();
     //! \brief What the view shows now (Renderer::visibility), kept until the camera, the
@@ -194,8 +212,13 @@ private:
     bool run_open_ = false;        // play() began a run not yet recorded
     std::optional<EditState> run_before_;
     std::uint64_t geometry_ = 0;
-    std::vector<Scalar> heat_; // the newest shares of the heat map's term // changes of the
-                               // positions, for the visibility key
+    std::vector<Scalar> heat_; // the newest shares of the heat map's term
+    std::string recovery_root_ = recovery_root();
+    std::uint64_t edits_ = 0, autosaved_edits_ = 0; // changes so far, and at the last autosave
+    double last_autosave_ = 0;                      // seconds on the steady clock
+    bool owns_recovery_ = false;                    // this session wrote or recovered the files...
+    std::string recovery_path_;                     // ...of this mesh path // changes of the
+                                                    // positions, for the visibility key
     ScreenPoint cursor_;
     bool selection_dirty_ = true;
     bool counts_dirty_ = true;

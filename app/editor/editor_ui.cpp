@@ -819,6 +819,28 @@ UiRequests EditorUi::build(const Document& document, EditorState& state, const C
         else
             (recipe ? r.export_recipe_path : r.save_path) = chosen;
     }
+    if (state.recovery_saved_at && !ImGui::IsPopupOpen("Recover unsaved work"))
+        ImGui::OpenPopup("Recover unsaved work");
+    if (ImGui::BeginPopupModal("Recover unsaved work", nullptr, ImGuiWindowFlags_AlwaysAutoResize))
+    {
+        ImGui::Text("A session of %s ended without saving; its work was autosaved at %s.",
+                    std::filesystem::path(document.path).filename().string().c_str(),
+                    state.recovery_saved_at ? state.recovery_saved_at->c_str() : "");
+        if (ImGui::Button("Recover"))
+        {
+            r.recover = true;
+            state.recovery_saved_at.reset();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::SameLine();
+        if (ImGui::Button("Discard"))
+        {
+            r.discard_recovery = true;
+            state.recovery_saved_at.reset();
+            ImGui::CloseCurrentPopup();
+        }
+        ImGui::EndPopup();
+    }
     if (quit_prompt_)
     {
         ImGui::OpenPopup("Unsaved changes");

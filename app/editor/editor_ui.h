@@ -45,6 +45,8 @@ struct EditorState
     bool show_energy = true;            //!< the energy plot window
     //! The heat map shown: each vertex coloured by its share of a term (nullopt: none).
     std::optional<EnergyTerm> heat_map;
+    //! When a crashed session of this mesh left recovery files: when they were saved.
+    std::optional<std::string> recovery_saved_at;
     float noise_sigma = 0.3f; //!< the noise tool's sigma, in mean edge lengths
     int noise_seed = 1;
     DisplayOptions display;
@@ -99,6 +101,7 @@ struct UiRequests
     std::optional<std::string> export_recipe_path, import_recipe_path;
     std::optional<std::pair<Scalar, std::uint64_t>> noise; //!< sigma (mean edges), seed
     std::optional<std::optional<EnergyTerm>> heat_map;     //!< a new heat map (or none)
+    bool recover = false, discard_recovery = false;
     bool quit = false; //!< confirmed: no unsaved changes, or the user discarded them
 };
 

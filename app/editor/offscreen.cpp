@@ -81,6 +81,7 @@ void render_screenshot(const ScreenshotRequest& request)
     if (script)
         play_script(*script, session, host);
     host.screenshot(request.screenshot_path);
+    session.end_session();
     if (!request.save_view_path.empty())
         io::write_file_atomically(request.save_view_path, to_json(session.camera()));
 }

@@ -87,7 +87,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                                         "select_set",    "move_pins", "normal_direction",
                                         "solver",        "step",      "play",
                                         "reset",         "apply",     "export_recipe",
-                                        "import_recipe", "noise",     "heat_map"};
+                                        "import_recipe", "noise",     "heat_map",
+                                        "autosave",      "recover"};
     // Options, and the one action each belongs to.
     static const std::pair<const char*, const char*> options[] = {{"name", "create_set"},
                                                                   {"offset", "move_pins"},
@@ -363,9 +364,12 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             a.count = static_cast<int>(seed.get<long long>());
         }
     }
-    else if (kind == "reset" || kind == "apply")
+    else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover")
     {
-        a.kind = kind == "reset" ? Kind::Reset : Kind::Apply;
+        a.kind = kind == "reset"      ? Kind::Reset
+                 : kind == "apply"    ? Kind::Apply
+                 : kind == "autosave" ? Kind::Autosave
+                                      : Kind::Recover;
         if (!v.is_boolean() || !v.get<bool>())
             r.bad(kind, "must be true");
     }
@@ -602,6 +606,13 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                     session.step(a.count);
                 else
                     play_frames(session, a.count);
+                break;
+            case Kind::Autosave:
+                session.autosave(0);
+                break;
+            case Kind::Recover:
+                if (!session.recover())
+                    fail(script.name, a.where, session.state().message);
                 break;
             case Kind::HeatMap:
                 session.set_heat_map(heat_term_named(a.text));

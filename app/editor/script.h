@@ -43,7 +43,9 @@ struct ScriptAction
         ExportRecipe,    //!< text: a JSON path
         ImportRecipe,    //!< text: a JSON path
         Noise,           //!< value: sigma in mean edge lengths; count: the seed
-        HeatMap          //!< text: a term ("total") or "off"
+        HeatMap,         //!< text: a term ("total") or "off"
+        Autosave,        //!< write the recovery files now
+        Recover          //!< restore the recovery files a crashed session left
     };
     Kind kind = Kind::Tool;
     std::string where; //!< "actions[3]", for messages

@@ -371,6 +371,8 @@ void run_window(const WindowOptions& options)
         save_recent(recent_files_path(), state.recent);
         if (camera)
             editor->session->camera() = *camera;
+        if (const std::optional<RecoveryInfo> offer = editor->session->recovery_offer())
+            state.recovery_saved_at = offer->saved_at;
     }
 
     bool first = true;
@@ -401,6 +403,7 @@ void run_window(const WindowOptions& options)
         e.carry_out(keys);
         e.carry_out(r);
         session.update();
+        session.autosave();
         session.draw();
         if (keys.screenshot || r.screenshot)
             e.screenshot(); // the view without the panels
@@ -416,6 +419,7 @@ void run_window(const WindowOptions& options)
             first = false;
         }
     }
+    editor->session->end_session(); // a clean exit: no recovery to offer next time
 }
 
 } // namespace meshfair::app

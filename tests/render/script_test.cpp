@@ -83,6 +83,55 @@ TEST_SUITE("Scripted sessions")
                            app::read_png((dir / "region_after.png").string()));
     }
 
+    TEST_CASE("crash recovery: a session killed mid-run is restored as it was autosaved")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path state = dir / "state";
+        const fs::path script = dir / "first.json";
+        test::write_bytes(script, script_file("crash_first_run.json", dir));
+        const std::string editor = "env -u DISPLAY GALLIUM_DRIVER=llvmpipe XDG_STATE_HOME=" +
+                                   test::shell_quote(state.string()) + " " +
+                                   test::shell_quote(MESHFAIR_EDITOR) + " --offscreen " +
+                                   test::shell_quote((test::assets_dir() / "bunny.obj").string()) +
+                                   " --size 560x420";
+        // The first run autosaves, then plays "forever" until it is killed.
+        const test::CommandRun killed = test::run_command(
+            editor + " --script " + test::shell_quote(script.string()) + " --screenshot " +
+            test::shell_quote((dir / "never.png").string()) +
+            " & pid=$!; for i in $(seq 300); do ls " + test::shell_quote(state.string()) +
+            "/meshfair/recovery/*/state.json >/dev/null 2>&1 && break; sleep 0.1; done; "
+            "sleep 0.5; kill -9 $pid; wait $pid; echo \"exit $?\"");
+        REQUIRE_MESSAGE(killed.out.find("exit 137") != std::string::npos, killed.out << killed.err);
+        CHECK_FALSE(fs::exists(dir / "never.png"));
+
+        // The second run recovers, saves the mesh and exports the recipe.
+        const fs::path recovered = dir / "recovered.obj", again = dir / "again.json";
+        test::write_bytes(dir / "second.json",
+                          R"([{"recover": true}, {"save_mesh": ")" + recovered.string() +
+                              R"("}, {"export_recipe": ")" + again.string() + R"("}])");
+        const test::CommandRun second = test::run_command(
+            editor + " --script " + test::shell_quote((dir / "second.json").string()) +
+            " --screenshot " + test::shell_quote((dir / "second.png").string()));
+        REQUIRE_MESSAGE(second.code == 0, second.err);
+        // The same sets and steps as at the autosave, and the shape the command line gives
+        // for them: the state was restored exactly.
+        CHECK(io::read_file(again.string()) == io::read_file((dir / "recipe.json").string()));
+        const fs::path cli = dir / "cli.obj";
+        const test::CommandRun smooth =
+            test::run_command(test::shell_quote(MESHFAIR_CLI) + " smooth " +
+                              test::shell_quote((test::assets_dir() / "bunny.obj").string()) +
+                              " -o " + test::shell_quote(cli.string()) + " --recipe " +
+                              test::shell_quote((dir / "recipe.json").string()) + " --quiet");
+        REQUIRE(smooth.code == 0);
+        CHECK(io::read_mesh(recovered.string()).positions == io::read_mesh(cli.string()).positions);
+        // A clean exit removes the files: nothing is offered a third time.
+        const test::CommandRun third = test::run_command(
+            editor + " --script " + test::shell_quote((dir / "second.json").string()) +
+            " --screenshot " + test::shell_quote((dir / "third.png").string()));
+        CHECK(third.code == 2);
+        CHECK(third.err.find("no recovery files") != std::string::npos);
+    }
+
     TEST_CASE("the heat map: each vertex coloured by its share of the energy")
     {
         const fs::path dir = test::temp_dir();

@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/recovery.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdlib>
+#include <cstring>
+#include <ctime>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json.hpp>
+
+#include "core/errors.h"
+#include "core/io/io.h"
+
+namespace meshfair::app {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::json;
+
+namespace {
+
+std::string absolute(const std::string& path)
+{
+    std::error_code ec;
+    const fs::path p = fs::absolute(path, ec);
+    return ec ? path : p.lexically_normal().string();
+}
+
+// One folder per mesh path.
+fs::path folder(const std::string& mesh_path, const std::string& root)
+{
+    char id[32];
+    std::snprintf(id, sizeof id, "%016zx", std::hash<std::string>{}(absolute(mesh_path)));
+    return fs::path(root) / id;
+}
+
+template <class T>
+std::string bytes_of(const std::vector<T>& v)
+{
+    return std::string(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+}
+
+template <class T>
+std::vector<T> vector_of(const std::string& bytes, size_t count, const fs::path& file)
+{
+    if (bytes.size() != count * sizeof(T))
+        throw InvalidInputError("'" + file.string() + "': " + std::to_string(bytes.size()) +
+                                " bytes, expected " + std::to_string(count * sizeof(T)) +
+                                " (not this mesh's recovery file)");
+    std::vector<T> v(count);
+    std::memcpy(v.data(), bytes.data(), bytes.size());
+    return v;
+}
+
+Json vec3s(const std::vector<Vec3>& v)
+{
+    Json j = Json::array();
+    for (const Vec3& p : v)
+        j.push_back({p[0], p[1], p[2]});
+    return j;
+}
+
+std::vector<Vec3> vec3s_of(const Json& j)
+{
+    std::vector<Vec3> v;
+    for (const Json& p : j)
+        v.push_back({p.at(0).get<Scalar>(), p.at(1).get<Scalar>(), p.at(2).get<Scalar>()});
+    return v;
+}
+
+Json set_json(const ConstraintSet& s)
+{
+    return {{"name", s.name},
+            {"kind", std::string(kind_name(s.kind))},
+            {"vertices", s.vertices},
+            {"faces", s.faces},
+            {"targets", vec3s(s.targets)},
+            {"normals", vec3s(s.normals)},
+            {"color", s.color},
+            {"visible", s.visible}};
+}
+
+ConstraintSet set_of(const Json& j, Index vertices, Index faces)
+{
+    ConstraintSet s;
+    s.name = j.at("name").get<std::string>();
+    const std::optional<ConstraintKind> kind = kind_named(j.at("kind").get<std::string>());
+    if (!kind)
+        throw std::invalid_argument("unknown set kind");
+    s.kind = *kind;
+    s.vertices = j.at("vertices").get<std::vector<Index>>();
+    s.faces = j.at("faces").get<std::vector<Index>>();
+    for (const Index v : s.vertices)
+        if (v < 0 || v >= vertices)
+            throw std::invalid_argument("vertex out of range");
+    for (const Index f : s.faces)
+        if (f < 0 || f >= faces)
+            throw std::invalid_argument("face out of range");
+    s.targets = vec3s_of(j.at("targets"));
+    s.normals = vec3s_of(j.at("normals"));
+    s.color = j.at("color").get<std::array<float, 3>>();
+    s.visible = j.at("visible").get<bool>();
+    return s;
+}
+
+Json settings_json(const SolverSettings& s)
+{
+    return {{"optimal_step", s.optimal_step},
+            {"lambda", s.lambda},
+            {"tolerance", s.tolerance},
+            {"iterations_per_frame", s.iterations_per_frame},
+            {"anchor_mu", s.anchor_mu},
+            {"centroid_mu", s.centroid_mu},
+            {"exact_denominator", s.denominator == CentroidDenominator::Exact},
+            {"normal_mu", s.normal_mu},
+            {"smoothed_normals", s.normal_source == NormalSource::Smoothed},
+            {"normal_smoothing_iterations", s.normal_smoothing_iterations},
+            {"normal_smoothing_lambda", s.normal_smoothing_lambda},
+            {"soft_normal_mu", s.soft_normal_mu},
+            {"joint", s.joint},
+            {"gamma", s.gamma}};
+}
+
+SolverSettings settings_of(const Json& j)
+{
+    SolverSettings s;
+    s.optimal_step = j.at("optimal_step").get<bool>();
+    s.lambda = j.at("lambda").get<Scalar>();
+    s.tolerance = j.at("tolerance").get<Scalar>();
+    s.iterations_per_frame = j.at("iterations_per_frame").get<int>();
+    s.anchor_mu = j.at("anchor_mu").get<Scalar>();
+    s.centroid_mu = j.at("centroid_mu").get<Scalar>();
+    s.denominator = j.at("exact_denominator").get<bool>() ? CentroidDenominator::Exact
+                                                          : CentroidDenominator::Paper;
+    s.normal_mu = j.at("normal_mu").get<Scalar>();
+    s.normal_source =
+        j.at("smoothed_normals").get<bool>() ? NormalSource::Smoothed : NormalSource::Initial;
+    s.normal_smoothing_iterations = j.at("normal_smoothing_iterations").get<int>();
+    s.normal_smoothing_lambda = j.at("normal_smoothing_lambda").get<Scalar>();
+    s.soft_normal_mu = j.at("soft_normal_mu").get<Scalar>();
+    s.joint = j.at("joint").get<bool>();
+    s.gamma = j.at("gamma").get<Scalar>();
+    return s;
+}
+
+bool running(long pid)
+{
+    return pid > 0 && (::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM);
+}
+
+} // namespace
+
+std::string recovery_root()
+{
+    const char* state = std::getenv("XDG_STATE_HOME");
+    if (state != nullptr && state[0] == '/')
+        return std::string(state) + "/meshfair/recovery";
+    const char* home = std::getenv("HOME");
+    if (home != nullptr && home[0] == '/')
+        return std::string(home) + "/.local/state/meshfair/recovery";
+    return {};
+}
+
+void write_recovery(const Document& d, const std::string& root)
+{
+    const fs::path dir = folder(d.path, root);
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec)
+        throw WriteError("'" + dir.string() +
+                         "': cannot create the recovery folder: " + ec.message());
+    io::write_file_atomically((dir / "positions.bin").string(), bytes_of(d.mesh.positions));
+    io::write_file_atomically((dir / "base.bin").string(), bytes_of(d.base_positions));
+    io::write_file_atomically((dir / "selection.bin").string(),
+                              bytes_of(d.selected_vertices) + bytes_of(d.selected_faces));
+    Json sets = Json::array();
+    for (const ConstraintSet& s : d.sets)
+        sets.push_back(set_json(s));
+    const std::time_t now = std::time(nullptr);
+    char when[32];
+    std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
+    const Json state = {{"mesh", absolute(d.path)},
+                        {"pid", static_cast<long>(::getpid())},
+                        {"saved_at", when},
+                        {"vertices", d.mesh.vertex_count()},
+                        {"faces", d.mesh.face_count()},
+                        {"steps_from_base", d.steps_from_base},
+                        {"reproducible", d.reproducible},
+                        {"sets", sets},
+                        {"solver", settings_json(d.solver)}};
+    io::write_file_atomically((dir / "state.json").string(), state.dump(1));
+}
+
+std::optional<RecoveryInfo> find_recovery(const std::string& mesh_path, const std::string& root)
+{
+    if (root.empty())
+        return std::nullopt;
+    const fs::path dir = folder(mesh_path, root);
+    std::error_code ec;
+    if (!fs::exists(dir / "state.json", ec))
+        return std::nullopt;
+    try
+    {
+        const Json j = Json::parse(io::read_file((dir / "state.json").string()));
+        RecoveryInfo info{dir.string(), j.at("mesh").get<std::string>(), j.at("pid").get<long>(),
+                          j.at("saved_at").get<std::string>()};
+        if (info.mesh_path != absolute(mesh_path) || running(info.pid))
+            return std::nullopt; // another mesh's, or a session still open
+        return info;
+    }
+    catch (const std::exception&)
+    {
+        return std::nullopt; // unreadable: nothing to offer
+    }
+}
+
+void restore_recovery(const RecoveryInfo& info, Document& d)
+{
+    const fs::path dir(info.dir);
+    const fs::path state_file = dir / "state.json";
+    Document next = d;
+    try
+    {
+        const Json j = Json::parse(io::read_file(state_file.string()));
+        const Index nv = d.mesh.vertex_count(), nf = d.mesh.face_count();
+        if (j.at("vertices").get<Index>() != nv || j.at("faces").get<Index>() != nf)
+            throw InvalidInputError("'" + state_file.string() + "': saved for a mesh of " +
+                                    std::to_string(j.at("vertices").get<Index>()) +
+                                    " vertices and " + std::to_string(j.at("faces").get<Index>()) +
+                                    " faces, this one has " + std::to_string(nv) + " and " +
+                                    std::to_string(nf));
+        const size_t n3 = 3 * static_cast<size_t>(nv);
+        next.mesh.positions = vector_of<Scalar>(io::read_file((dir / "positions.bin").string()), n3,
+                                                dir / "positions.bin");
+        next.base_positions =
+            vector_of<Scalar>(io::read_file((dir / "base.bin").string()), n3, dir / "base.bin");
+        std::vector<char> selection =
+            vector_of<char>(io::read_file((dir / "selection.bin").string()),
+                            static_cast<size_t>(nv + nf), dir / "selection.bin");
+        next.selected_vertices.assign(selection.begin(), selection.begin() + nv);
+        next.selected_faces.assign(selection.begin() + nv, selection.end());
+        next.sets.clear();
+        for (const Json& s : j.at("sets"))
+            next.sets.push_back(set_of(s, nv, nf));
+        next.solver = settings_of(j.at("solver"));
+        next.steps_from_base = j.at("steps_from_base").get<int>();
+        next.reproducible = j.at("reproducible").get<bool>();
+    }
+    catch (const InvalidInputError&)
+    {
+        throw;
+    }
+    catch (const std::exception& e)
+    {
+        throw InvalidInputError("'" + state_file.string() + "': damaged recovery file (" +
+                                e.what() + ")");
+    }
+    next.modified = true;
+    d = std::move(next);
+}
+
+void remove_recovery(const std::string& mesh_path, const std::string& root)
+{
+    if (root.empty())
+        return;
+    std::error_code ec;
+    fs::remove_all(folder(mesh_path, root), ec);
+}
+
+} // namespace meshfair::app

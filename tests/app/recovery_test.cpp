@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+// Recovery files: a round trip of the whole edit state, offered only when their editor is
+// gone, refused with the file named when damaged or for another mesh.
+#include "app/editor/recovery.h"
+
+#include <doctest/doctest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+#include "core/errors.h"
+#include "core/io/io.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A pid that no process has: a child that has exited and been reaped.
+long dead_pid()
+{
+    const pid_t child = fork();
+    if (child == 0)
+        _exit(0);
+    int status = 0;
+    waitpid(child, &status, 0);
+    return child;
+}
+
+Document edited(const fs::path& dir)
+{
+    const fs::path mesh = dir / "grid.obj";
+    io::write_mesh(test::open_grid(6, 5), mesh.string());
+    Document d = load_document(mesh.string());
+    d.mesh.positions[4] += 0.25;
+    d.base_positions[7] -= 0.5;
+    d.selected_vertices[3] = 1;
+    d.selected_faces[2] = 1;
+    ConstraintSet pins{"pins", ConstraintKind::Pin, {1, 5}, {}, {{0, 0, 1}, {1, 1, 1}},
+                       {},     {1, 0, 0},           true};
+    ConstraintSet normals{"up", ConstraintKind::Normal, {},        {0, 4},
+                          {},   {{0, 1, 0}, {0, 1, 0}}, {0, 0, 1}, false};
+    d.sets = {pins, normals};
+    d.solver.lambda = 0.25;
+    d.solver.joint = true;
+    d.steps_from_base = 17;
+    d.reproducible = false;
+    return d;
+}
+
+// Makes the recovery files look as if a crashed editor had written them.
+void orphan(const std::string& dir)
+{
+    const fs::path state = fs::path(dir) / "state.json";
+    std::string text = io::read_file(state.string());
+    const std::string key = "\"pid\": ";
+    const size_t at = text.find(key) + key.size();
+    text.replace(at, text.find(',', at) - at, std::to_string(dead_pid()));
+    io::write_file_atomically(state.string(), text);
+}
+
+} // namespace
+
+TEST_SUITE("Recovery")
+{
+    TEST_CASE("the whole edit state comes back, once its editor is gone")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string root = (dir / "recovery").string();
+        const Document d = edited(dir);
+        write_recovery(d, root);
+        // Written by this (running) process: not offered.
+        CHECK_FALSE(find_recovery(d.path, root));
+        std::optional<RecoveryInfo> info;
+        for (const auto& entry : fs::directory_iterator(root))
+            info = RecoveryInfo{entry.path().string(), d.path, 0, ""};
+        REQUIRE(info);
+        orphan(info->dir);
+        const std::optional<RecoveryInfo> offer = find_recovery(d.path, root);
+        REQUIRE(offer);
+        CHECK(offer->saved_at.size() == 19);
+        CHECK_FALSE(find_recovery((dir / "other.obj").string(), root));
+
+        Document fresh = load_document(d.path);
+        restore_recovery(*offer, fresh);
+        CHECK(fresh.mesh.positions == d.mesh.positions);
+        CHECK(fresh.base_positions == d.base_positions);
+        CHECK(fresh.selected_vertices == d.selected_vertices);
+        CHECK(fresh.selected_faces == d.selected_faces);
+        CHECK((fresh.sets == d.sets));
+        CHECK((fresh.solver == d.solver));
+        CHECK(fresh.steps_from_base == 17);
+        CHECK_FALSE(fresh.reproducible);
+        CHECK(fresh.modified);
+        remove_recovery(d.path, root);
+        CHECK_FALSE(find_recovery(d.path, root));
+    }
+
+    TEST_CASE("damaged files and another mesh's files are refused, the document kept")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string root = (dir / "recovery").string();
+        const Document d = edited(dir);
+        write_recovery(d, root);
+        std::string folder;
+        for (const auto& entry : fs::directory_iterator(root))
+            folder = entry.path().string();
+        orphan(folder);
+        const RecoveryInfo info = *find_recovery(d.path, root);
+
+        // Another mesh under the same name: other counts.
+        Document other = make_document(test::open_grid(3, 3), d.path);
+        const std::vector<Scalar> before = other.mesh.positions;
+        CHECK_THROWS_WITH_AS(restore_recovery(info, other),
+                             doctest::Contains("saved for a mesh of 42 vertices and 30 faces"),
+                             InvalidInputError);
+        CHECK(other.mesh.positions == before);
+
+        // A truncated positions file.
+        Document same = load_document(d.path);
+        const std::string positions = (fs::path(folder) / "positions.bin").string();
+        io::write_file_atomically(positions, io::read_file(positions).substr(8));
+        CHECK_THROWS_WITH_AS(restore_recovery(info, same), doctest::Contains("positions.bin"),
+                             InvalidInputError);
+        // A state file that is not JSON.
+        write_recovery(d, root);
+        orphan(folder);
+        io::write_file_atomically((fs::path(folder) / "state.json").string(), "{\"mesh\": ");
+        CHECK_FALSE(find_recovery(d.path, root)); // nothing to offer
+        CHECK_THROWS_WITH_AS(restore_recovery(info, same),
+                             doctest::Contains("damaged recovery file"), InvalidInputError);
+    }
+}
