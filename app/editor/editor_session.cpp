@@ -46,6 +46,7 @@ const char* gesture_label(ToolKind tool)
         case ToolKind::Lasso:
             return "lasso select";
         case ToolKind::Navigate:
+        case ToolKind::MovePins:
             break;
     }
     return "";
@@ -87,9 +88,14 @@ void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, do
     cursor_ = {x, y, 0};
     if (gesture_ != nullptr)
         return;
+    if (button == MouseButton::Left && !mods.alt && state_.tool == ToolKind::MovePins)
+    {
+        if (press_pins(x, y))
+            return;
+    }
     // Alt + left always navigates, so a tool never locks the view.
     if (button == MouseButton::Left && !mods.alt && state_.tool != ToolKind::Navigate &&
-        !navigator_.dragging())
+        state_.tool != ToolKind::MovePins && !navigator_.dragging())
     {
         gesture_ = &tool_object(state_.tool);
         gesture_op_ = op_of(mods);
@@ -118,7 +124,9 @@ void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, do
 void EditorSession::mouse_move(double x, double y)
 {
     cursor_ = {x, y, 0};
-    if (gesture_ != nullptr)
+    if (dragged_pins_)
+        drag_pins(x, y);
+    else if (gesture_ != nullptr)
         apply(gesture_->drag(cursor_));
     else
         navigator_.move(camera_, state_.orbit, x, y, view_.width, view_.height);
@@ -127,6 +135,12 @@ void EditorSession::mouse_move(double x, double y)
 void EditorSession::mouse_release(MouseButton button, double x, double y)
 {
     cursor_ = {x, y, 0};
+    if (dragged_pins_ && button == MouseButton::Left)
+    {
+        drag_pins(x, y);
+        dragged_pins_.reset();
+        return;
+    }
     if (gesture_ != nullptr && button == MouseButton::Left)
     {
         apply(gesture_->release(cursor_));
@@ -135,6 +149,50 @@ void EditorSession::mouse_release(MouseButton button, double x, double y)
         return;
     }
     navigator_.release(button);
+}
+
+bool EditorSession::press_pins(double x, double y)
+{
+    // The visible pin glyph nearest to the cursor, within 12 pixels.
+    double best = 12 * 12;
+    for (size_t k = 0; k < document_.sets.size(); ++k)
+    {
+        const ConstraintSet& s = document_.sets[k];
+        if (s.kind != ConstraintKind::Pin || !s.visible)
+            continue;
+        for (size_t v = 0; v < s.vertices.size(); ++v)
+        {
+            const size_t i = 3 * static_cast<size_t>(s.vertices[v]);
+            const glm::dvec3 world =
+                s.targets.empty()
+                    ? glm::dvec3(document_.mesh.positions[i], document_.mesh.positions[i + 1],
+                                 document_.mesh.positions[i + 2])
+                    : glm::dvec3(s.targets[v][0], s.targets[v][1], s.targets[v][2]);
+            const glm::dvec3 w = camera_.project(world, view_.width, view_.height);
+            const double d2 = (w.x - x) * (w.x - x) + (w.y - y) * (w.y - y);
+            if (w.z >= 0 && w.z <= 1 && d2 < best)
+            {
+                best = d2;
+                dragged_pins_ = k;
+                dragged_depth_ = w.z;
+                dragged_from_ = camera_.unproject({x, y, w.z}, view_.width, view_.height);
+            }
+        }
+    }
+    if (dragged_pins_)
+        state_.message = "moving the pins of '" + document_.sets[*dragged_pins_].name + "'";
+    return dragged_pins_.has_value();
+}
+
+void EditorSession::drag_pins(double x, double y)
+{
+    // The grabbed point follows the cursor in the plane through it parallel to the view.
+    const glm::dvec3 to = camera_.unproject({x, y, dragged_depth_}, view_.width, view_.height);
+    const glm::dvec3 d = to - dragged_from_;
+    if (d == glm::dvec3(0.0))
+        return;
+    move_pins(*dragged_pins_, {d.x, d.y, d.z});
+    dragged_from_ = to;
 }
 
 void EditorSession::scroll(double notches, double x, double y)
@@ -228,6 +286,7 @@ void EditorSession::after_history(unsigned parts)
         positions_changed();
         recipe_dirty_ = true; // the solver starts again from the restored shape
         restarted_recipe_.clear();
+        restarted_shape_.clear();
     }
 }
 
@@ -301,6 +360,7 @@ bool EditorSession::recover()
     selection_changed();
     sets_changed();
     restarted_recipe_.clear();
+    restarted_shape_.clear();
     recipe_dirty_ = true;
     ++edits_;
     state_.message = "recovered the session saved at " + info->saved_at;
@@ -634,6 +694,7 @@ void EditorSession::reset_shape()
     positions_changed();
     recipe_dirty_ = true;
     restarted_recipe_.clear();
+    restarted_shape_.clear();
     record("reset shape", std::move(before));
 }
 
@@ -648,6 +709,7 @@ void EditorSession::apply_shape()
     document_.reproducible = true;
     recipe_dirty_ = true;
     restarted_recipe_.clear();
+    restarted_shape_.clear();
     record("apply shape", std::move(before));
 }
 
@@ -666,6 +728,7 @@ void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
     positions_changed();
     recipe_dirty_ = true;
     restarted_recipe_.clear();
+    restarted_shape_.clear();
     record("noise", std::move(before));
 }
 
@@ -693,13 +756,30 @@ void EditorSession::update()
         {
             solver_.clear();
             restarted_recipe_.clear();
+            restarted_shape_.clear();
         }
         else
         {
             const Mesh base = base_mesh();
             const Recipe recipe = build_recipe(document_.sets, document_.solver, base, 0);
             const std::string json = recipe_to_json(recipe).dump();
-            if (json != restarted_recipe_)
+            Recipe shape = recipe; // the recipe but for where the pins go
+            if (shape.hard)
+                shape.hard->targets.clear();
+            const std::string shape_json = recipe_to_json(shape).dump();
+            if (json != restarted_recipe_ && shape_json == restarted_shape_ && recipe.hard &&
+                !recipe.hard->targets.empty())
+            {
+                // Only the pins moved: new right-hand sides, the run goes on.
+                std::vector<Scalar> targets;
+                for (const Vec3& t : recipe.hard->targets)
+                    targets.insert(targets.end(), t.begin(), t.end());
+                solver_.move_hard_targets(targets);
+                if (document_.steps_from_base > 0)
+                    document_.reproducible = false;
+                restarted_recipe_ = json;
+            }
+            else if (json != restarted_recipe_)
             {
                 // From the base (the recipe's input shape), starting at the current positions.
                 const bool at_base = document_.steps_from_base == 0;
@@ -709,6 +789,7 @@ void EditorSession::update()
                     document_.reproducible = false;
                 steps_at_restart_ = document_.steps_from_base;
                 restarted_recipe_ = json;
+                restarted_shape_ = shape_json;
                 if (run_open_)
                     solver_.set_playing(true);
             }
@@ -850,6 +931,7 @@ void EditorSession::reset_for_document()
     run_before_.reset();
     solver_.clear();
     restarted_recipe_.clear();
+    restarted_shape_.clear();
     recipe_dirty_ = true;
     problems_ = constraint_problems(document_.sets, document_.solver);
     border_ = region_border(document_);

@@ -206,10 +206,16 @@ private:
     std::optional<EditState> step_before_; // the state when the current step began
     LiveSolver solver_;
     std::vector<std::string> problems_;
-    bool recipe_dirty_ = true;     // the sets or settings changed since the last restart
-    std::string restarted_recipe_; // the recipe of the last restart, as JSON
-    int steps_at_restart_ = 0;     // steps_from_base when the solver last restarted
-    bool run_open_ = false;        // play() began a run not yet recorded
+    bool recipe_dirty_ = true;           // the sets or settings changed since the last restart
+    std::string restarted_recipe_;       // the recipe of the last restart, as JSON
+    std::string restarted_shape_;        // the same without the hard targets
+    std::optional<size_t> dragged_pins_; // the pin set the MovePins tool drags
+    double dragged_depth_ = 0;           // its grabbed glyph's window depth
+    glm::dvec3 dragged_from_{0.0};       // the grabbed point, in the world
+    bool press_pins(double x, double y);
+    void drag_pins(double x, double y);
+    int steps_at_restart_ = 0; // steps_from_base when the solver last restarted
+    bool run_open_ = false;    // play() began a run not yet recorded
     std::optional<EditState> run_before_;
     std::uint64_t geometry_ = 0;
     std::vector<Scalar> heat_; // the newest shares of the heat map's term

@@ -25,6 +25,7 @@ constexpr KeyBinding kBindings[] = {
     {"Shift + tool", "add to the selection"},
     {"Ctrl + tool", "take away from the selection"},
     {"N / K / C / R / L", "tool: navigate / click / brush / rectangle / lasso"},
+    {"M", "tool: drag pins to new targets in the view plane"},
     {"V", "select vertices / faces"},
     {"[ / ]", "brush radius smaller / larger"},
     {"Ctrl + A, Alt + A", "select all, select none"},
@@ -32,6 +33,8 @@ constexpr KeyBinding kBindings[] = {
     {"Ctrl + = / Ctrl + -", "grow / shrink the selection by a ring"},
     {"Ctrl + L", "select the connected components of the selection"},
     {"Ctrl + B", "select the boundary"},
+    {"Shift + R / P / A / C / N",
+     "new region / pin / anchor / centroid / normal set from the selection"},
     {"Space", "play / pause live solving"},
     {"E", "energy plot"},
     {"Ctrl + Z", "undo"},
@@ -54,6 +57,7 @@ constexpr KeyBinding kBindings[] = {
     {"F1, H", "this help"},
     {"F12", "screenshot (PNG)"},
     {"Ctrl + O", "open a mesh (or drop a file on the window)"},
+    {"Ctrl + S", "save (the file it came from, in its format)"},
     {"Ctrl + Shift + S", "save as"},
     {"Ctrl + Q, closing the window", "quit (asks first when there are unsaved changes)"},
 };
@@ -81,11 +85,10 @@ struct ToolItem
     ToolKind tool;
     const char* label;
 };
-constexpr ToolItem kToolItems[] = {{ToolKind::Navigate, "navigate (N)"},
-                                   {ToolKind::Click, "click (K)"},
-                                   {ToolKind::Brush, "brush (C)"},
-                                   {ToolKind::Rectangle, "rectangle (R)"},
-                                   {ToolKind::Lasso, "lasso (L)"}};
+constexpr ToolItem kToolItems[] = {
+    {ToolKind::Navigate, "navigate (N)"}, {ToolKind::Click, "click (K)"},
+    {ToolKind::Brush, "brush (C)"},       {ToolKind::Rectangle, "rectangle (R)"},
+    {ToolKind::Lasso, "lasso (L)"},       {ToolKind::MovePins, "move pins (M)"}};
 
 std::string megabytes(std::size_t bytes)
 {
@@ -211,6 +214,8 @@ void menu_bar(const Document& document, EditorState& state, const Camera& camera
                     r.open_path = path;
             ImGui::EndMenu();
         }
+        if (ImGui::MenuItem("Save", "Ctrl+S"))
+            r.save_path = document.path;
         if (ImGui::MenuItem("Save as...", "Ctrl+Shift+S"))
             ui.save_file_dialog(document);
         if (ImGui::MenuItem("Export recipe..."))

@@ -62,7 +62,9 @@ void LiveSolver::clear()
     ++generation_;
     done_.wait(lock, [&] { return !busy_; });
     run_.reset();
+    const int restarts = status_.restarts;
     status_ = {};
+    status_.restarts = restarts;
     energies_.clear();
     fresh_ = false;
 }
@@ -99,6 +101,24 @@ bool LiveSolver::wait_published()
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return fresh_ || (!status_.playing && !busy_ && !restart_); });
     return fresh_;
+}
+
+void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
+{
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return !busy_ && !restart_; });
+    if (!run_)
+        return;
+    Session& session = run_->session();
+    session.set_hard_targets(targets);
+    std::vector<Scalar> x(session.positions().begin(), session.positions().end());
+    session.apply_hard_targets(x);
+    session.set_positions(x);
+    back_.resize(x.size());
+    run_->file_positions(back_);
+    std::swap(back_, published_);
+    fresh_ = true;
+    done_.notify_all();
 }
 
 void LiveSolver::wait_idle()
@@ -296,6 +316,7 @@ void LiveSolver::worker()
                 status_.ready = run_ != nullptr;
                 status_.error = error;
                 status_.precompute_ms = ms;
+                ++status_.restarts;
                 // Playing if asked for since the restart was requested (and it worked).
                 status_.playing = status_.playing && run_ != nullptr;
                 if (run_)

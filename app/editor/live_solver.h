@@ -32,6 +32,7 @@ struct SolverStatus
     std::string error;        //!< why the last restart failed (the recipe did not fit)
     double step_ms = 0;       //!< the last frame's steps, on the worker
     double precompute_ms = 0; //!< the last precomputation
+    int restarts = 0;         //!< precomputations so far
 };
 
 //! \brief The editor's solver: a LocalityRun (the command line's pipeline) of the
@@ -58,6 +59,10 @@ public:
 
     //! Plays (on the worker) or pauses; with `frames` > 0, pauses by itself after that many.
     void set_playing(bool playing, int frames = 0);
+    //! \brief New targets for the recipe's hard vertices (3 per vertex, in the recipe's
+    //! order): the pins move there and the run goes on, with no precomputation (hard
+    //! vertices are fixed: their targets are right-hand side only). Publishes the positions.
+    void move_hard_targets(std::span<const Scalar> targets);
     void set_iterations_per_frame(int n);
     //! \brief Runs `n` steps on the calling thread (waiting for the precomputation and for
     //! a frame in progress); publishes the result. Stops playing.

@@ -122,7 +122,9 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
         case GLFW_KEY_S:
             if (ctrl && shift)
                 e.ui.save_file_dialog(document);
-            else if (!ctrl)
+            else if (ctrl)
+                r.save_path = document.path; // Save: the file it came from, in its format
+            else
                 d.shading = d.shading == Shading::Smooth ? Shading::Flat : Shading::Smooth;
             break;
         case GLFW_KEY_Z:
@@ -138,6 +140,8 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
                 r.command = SelectionCommand::All;
             else if (alt)
                 r.command = SelectionCommand::Clear;
+            else if (shift)
+                r.create_set = ConstraintKind::Anchor;
             break;
         case GLFW_KEY_I:
             if (ctrl)
@@ -160,7 +164,10 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
                 r.tool = ToolKind::Lasso;
             break;
         case GLFW_KEY_N:
-            r.tool = ToolKind::Navigate;
+            if (shift)
+                r.create_set = ConstraintKind::Normal;
+            else
+                r.tool = ToolKind::Navigate;
             break;
         case GLFW_KEY_E:
             state.show_energy = !state.show_energy;
@@ -168,14 +175,23 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
         case GLFW_KEY_SPACE:
             (e.session->playing() ? r.pause : r.play) = true;
             break;
+        case GLFW_KEY_M:
+            r.tool = ToolKind::MovePins;
+            break;
         case GLFW_KEY_K:
             r.tool = ToolKind::Click;
             break;
         case GLFW_KEY_C:
-            r.tool = ToolKind::Brush;
+            if (shift)
+                r.create_set = ConstraintKind::Centroid;
+            else
+                r.tool = ToolKind::Brush;
             break;
         case GLFW_KEY_R:
-            r.tool = ToolKind::Rectangle;
+            if (shift)
+                r.create_set = ConstraintKind::Region;
+            else
+                r.tool = ToolKind::Rectangle;
             break;
         case GLFW_KEY_V:
             r.elements = state.tools.elements == ElementKind::Vertices ? ElementKind::Faces
@@ -224,7 +240,10 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
                 d.boundary_edges = !d.boundary_edges;
             break;
         case GLFW_KEY_P:
-            d.vertex_points = !d.vertex_points;
+            if (shift)
+                r.create_set = ConstraintKind::Pin;
+            else
+                d.vertex_points = !d.vertex_points;
             break;
         case GLFW_KEY_TAB:
             state.show_side_panel = !state.show_side_panel;

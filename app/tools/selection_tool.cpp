@@ -12,12 +12,13 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<ToolKind, std::string_view>, 5> kToolNames = {{
+constexpr std::array<std::pair<ToolKind, std::string_view>, 6> kToolNames = {{
     {ToolKind::Navigate, "navigate"},
     {ToolKind::Click, "click"},
     {ToolKind::Brush, "brush"},
     {ToolKind::Rectangle, "rectangle"},
     {ToolKind::Lasso, "lasso"},
+    {ToolKind::MovePins, "move_pins"},
 }};
 
 // Face centroids (the mean of the corners) as floats, as the renderer projects them.

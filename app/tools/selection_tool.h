@@ -31,10 +31,11 @@ enum class ToolKind
     Click,     //!< ClickTool
     Brush,     //!< BrushTool
     Rectangle, //!< RectangleTool
-    Lasso      //!< LassoTool
+    Lasso,     //!< LassoTool
+    MovePins   //!< drag a pin set's glyphs to new targets in the view plane (the session's)
 };
 
-//! "navigate", "click", "brush", "rectangle", "lasso".
+//! "navigate", "click", "brush", "rectangle", "lasso", "move_pins".
 std::string_view tool_name(ToolKind tool);
 std::optional<ToolKind> tool_named(std::string_view name);
 

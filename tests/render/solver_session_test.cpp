@@ -142,6 +142,59 @@ TEST_SUITE("Live solving")
         CHECK(cli_positions(b.path, recipe) == s.document().mesh.positions);
     }
 
+    TEST_CASE("pins dragged in the view plane move their targets without a precomputation")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(150, 100, 175, 125);
+        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
+        s.step(5);
+        const int restarts = s.solver_status().restarts;
+        const Vec3 before = [&] {
+            const size_t i = 3 * static_cast<size_t>(s.document().sets[0].vertices[0]);
+            return Vec3{s.document().mesh.positions[i], s.document().mesh.positions[i + 1],
+                        s.document().mesh.positions[i + 2]};
+        }();
+        // Grab the first pin where it is drawn and drag it 30 pixels to the right.
+        const glm::dvec3 at =
+            s.camera().project({before[0], before[1], before[2]}, kWidth, kHeight);
+        s.set_tool(ToolKind::MovePins);
+        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
+        s.mouse_move(at.x + 10, at.y);
+        s.mouse_move(at.x + 30, at.y);
+        s.mouse_release(MouseButton::Left, at.x + 30, at.y);
+        s.update();
+        s.solver_status(); // the drag's targets reached the solver
+        const ConstraintSet& pins = s.document().sets[0];
+        REQUIRE(pins.targets.size() == pins.vertices.size());
+        // The grabbed point moved with the cursor, in the view plane (same depth).
+        const glm::dvec3 moved = s.camera().project(
+            {pins.targets[0][0], pins.targets[0][1], pins.targets[0][2]}, kWidth, kHeight);
+        CHECK(moved.x == doctest::Approx(at.x + 30).epsilon(1e-6));
+        CHECK(moved.y == doctest::Approx(at.y).epsilon(1e-6));
+        CHECK(moved.z == doctest::Approx(at.z).epsilon(1e-9));
+        // The pins sit on their targets, with no new precomputation; one undo step.
+        s.step(1);
+        for (size_t k = 0; k < pins.vertices.size(); ++k)
+            for (size_t a = 0; a < 3; ++a)
+                CHECK(s.document().mesh.positions[3 * static_cast<size_t>(pins.vertices[k]) + a] ==
+                      pins.targets[k][a]);
+        CHECK(s.solver_status().restarts == restarts);
+        CHECK_FALSE(s.document().reproducible); // the targets moved during the run
+        CHECK(s.history().undo_label() == "step 1");
+        REQUIRE(s.undo());
+        CHECK(s.history().undo_label() == "move pins");
+        // From the base with the moved targets the command line agrees.
+        s.redo();
+        s.reset_shape();
+        s.step(4);
+        CHECK(s.document().reproducible);
+        const fs::path recipe = dir / "recipe.json";
+        REQUIRE(s.export_recipe(recipe.string()));
+        CHECK(cli_positions(b.path, recipe) == s.document().mesh.positions);
+    }
+
     TEST_CASE("a recipe changed during a run is reported as not reproducing the shape")
     {
         const fs::path dir = test::temp_dir();
