@@ -20,6 +20,7 @@
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
+#include "core/recipe/locality_run.h"
 #include "core/solver/parallel.h"
 
 namespace {
@@ -65,12 +66,14 @@ int main(int argc, char** argv)
     CLI::App app{"meshfair-editor-bench: the selection tools' frame times on a large mesh"};
     std::string mesh_path = MESHFAIR_DEFAULT_MESH;
     long long min_vertices = 1000000;
-    int width = 1280, height = 800, events = 60, reps = 3, threads = 0;
+    int width = 1280, height = 800, events = 60, reps = 3, threads = 0, frames = 30;
     app.add_option("--mesh", mesh_path, "triangle mesh to subdivide")->check(CLI::ExistingFile);
     app.add_option("--vertices", min_vertices, "at least this many vertices");
     app.add_option("--events", events, "mouse moves per stroke")->check(CLI::Range(2, 10000));
     app.add_option("--reps", reps, "strokes and rectangles of each kind")
         ->check(CLI::Range(1, 100));
+    app.add_option("--frames", frames, "live-solving frames timed per recipe")
+        ->check(CLI::Range(1, 100000));
     app.add_option("--threads", threads, "threads (default: all cores)")
         ->check(CLI::Range(0, 1024));
     CLI11_PARSE(app, argc, argv);
@@ -194,5 +197,81 @@ int main(int argc, char** argv)
         "\nbrush frame without rasterization (move + upload, medians): %.2f ms = %.0f %% "
         "of a 16.7 ms frame\n",
         frame, 100 * frame / 16.7);
+
+    // --- Live solving: a frame of one step, as the solver's thread and the interface run
+    // it, each part timed apart, for plain smoothing and for the combined recipe. The
+    // parts are those of LiveSolver::run_steps (step, energy for the plot, positions back
+    // in the file's order) and of EditorSession::update (the renderer's normals and upload).
+    std::printf("\nlive solving, one step per frame (%d frames):\n\n", frames);
+    std::printf("| recipe | part | median ms | max ms |\n|---|---|---|---|\n");
+    const Document& doc = session.document();
+    Mesh file_mesh;
+    file_mesh.positions = doc.base_positions;
+    file_mesh.face_offsets = doc.mesh.face_offsets;
+    file_mesh.face_vertices = doc.mesh.face_vertices;
+    Recipe combined;
+    {
+        // Half the mesh moves; anchors, centroids and normals on parts of it.
+        const Index nv = doc.mesh.vertex_count(), nf = doc.mesh.face_count();
+        combined.region = Region{};
+        for (Index v = 0; v < nv / 2; ++v)
+            combined.region->vertices.push_back(v);
+        combined.soft = SoftVertices{};
+        for (Index v = 0; v < nv / 2; v += 7)
+            combined.soft->vertices.indices.push_back(v);
+        combined.centroid = CentroidConstraints{};
+        combined.normal = NormalConstraints{};
+        for (Index f = 0; f < nf; f += 3)
+            combined.centroid->faces.indices.push_back(f);
+        for (Index f = 1; f < nf; f += 3)
+            combined.normal->faces.indices.push_back(f);
+    }
+    for (const auto& [name, recipe] : {std::pair<const char*, Recipe>{"plain", Recipe{}},
+                                       std::pair<const char*, Recipe>{"combined", combined}})
+    {
+        t = Clock::now();
+        LocalityRun run(file_mesh, recipe);
+        const double precompute = ms_since(t);
+        std::vector<Scalar> file(doc.mesh.positions.size());
+        Series step{"solver step", {}}, energy{"energy (for the plot)", {}},
+            back{"positions to file order", {}}, normals{"normals + upload", {}},
+            total{"frame (sum)", {}};
+        for (int f = 0; f < frames; ++f)
+        {
+            const double a = timed([&] { run.step(); });
+            const double b = timed([&] { (void)run.energy(); });
+            const double c = timed([&] { run.file_positions(file); });
+            const double d = timed([&] {
+                renderer.update_positions(file);
+                (void)renderer.read_pixels(1, 1); // the upload has reached the GPU side
+            });
+            step.ms.push_back(a);
+            energy.ms.push_back(b);
+            back.ms.push_back(c);
+            normals.ms.push_back(d);
+            total.ms.push_back(a + b + c + d);
+        }
+        if (std::string(name) == "plain")
+        {
+            // The renderer's parts, apart: floats, face area vectors, vertex normals.
+            std::vector<float> f32(file.size()),
+                areas(3 * static_cast<size_t>(doc.mesh.face_count())), vn(file.size());
+            Series a{"  of which: positions to float", {}}, b{"  of which: face area vectors", {}},
+                c{"  of which: vertex normals", {}};
+            for (int sample = 0; sample < frames; ++sample)
+            {
+                a.ms.push_back(timed([&] { positions_to_float(file, f32); }));
+                b.ms.push_back(timed([&] { face_area_vectors(file, doc.mesh, areas); }));
+                c.ms.push_back(timed([&] { vertex_normals(doc.draw_data, areas, vn); }));
+            }
+            for (const Series* x : {&a, &b, &c})
+                std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
+                            x->max());
+        }
+        std::printf("| %s | precomputation (once per recipe) | %.0f | |\n", name, precompute);
+        for (const Series* x : {&step, &energy, &back, &normals, &total})
+            std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
+                        x->max());
+    }
     return 0;
 }
