@@ -8,9 +8,28 @@ Document load_document(const std::string& path)
 {
     io::ReadReport report;
     Mesh mesh = io::read_mesh(path, &report);
-    Document d = make_document(std::move(mesh), path);
+    LocalityOrder order = locality_order(mesh);
+    Document d = make_document(reorder_mesh(mesh, order), path);
+    d.order = std::move(order);
     d.report = std::move(report);
     return d;
+}
+
+LocalityOrder identity_order(Index vertices, Index faces)
+{
+    LocalityOrder o;
+    for (std::vector<Index>* v : {&o.vertex_order, &o.vertex_index})
+        for (Index i = 0; i < vertices; ++i)
+            v->push_back(i);
+    for (std::vector<Index>* f : {&o.face_order, &o.face_index})
+        for (Index i = 0; i < faces; ++i)
+            f->push_back(i);
+    return o;
+}
+
+Mesh file_order_mesh(const Document& d)
+{
+    return reorder_mesh(d.mesh, inverse_order(d.order));
 }
 
 Document make_document(Mesh mesh, std::string path)
@@ -18,6 +37,7 @@ Document make_document(Mesh mesh, std::string path)
     Document d;
     d.path = std::move(path);
     d.mesh = std::move(mesh);
+    d.order = identity_order(d.mesh.vertex_count(), d.mesh.face_count());
     d.topology = build_topology(
         d.mesh, TopologyParts::Neighbors | TopologyParts::Edges | TopologyParts::Corners);
     d.draw_data = mesh_draw_data(d.mesh, d.topology);

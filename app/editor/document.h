@@ -11,6 +11,7 @@
 #include "core/mesh/mesh.h"
 #include "core/select/mesh_select.h"
 #include "core/topology/topology.h"
+#include "core/topology/vertex_order.h"
 
 namespace meshfair::app {
 
@@ -20,7 +21,13 @@ namespace meshfair::app {
 struct Document
 {
     std::string path; //!< the file it came from or was last saved to
+    //! \brief The mesh in the locality numbering MeshFair solves in (as meshfair-cli does),
+    //! so that the solver, the normals and the tools stream memory on large meshes. Every
+    //! index the editor keeps (selections, sets) is in this numbering; files (meshes,
+    //! recipes) keep the file's, through `order`.
     Mesh mesh;
+    //! internal vertex k is file vertex order.vertex_order[k] (identity for make_document)
+    LocalityOrder order;
     io::ReadReport report;
     Topology topology;
     MeshDrawData draw_data;
@@ -43,8 +50,15 @@ struct Document
 //! \throw InvalidInputError (FormatError included) naming the file and what is wrong.
 Document load_document(const std::string& path);
 
-//! A document of a mesh already in memory (a test fixture, a generated mesh), named `path`.
+//! \brief A document of a mesh already in memory (a test fixture, a generated mesh), named
+//! `path`, in the mesh's own numbering (order: the identity).
 Document make_document(Mesh mesh, std::string path);
+
+//! The identity numbering of a mesh of these counts.
+LocalityOrder identity_order(Index vertices, Index faces);
+
+//! The document's current mesh in the file's numbering (what Save writes).
+Mesh file_order_mesh(const Document& document);
 
 //! The box around the positions (3 #V values).
 Box3 bounding_box(std::span<const Scalar> positions);

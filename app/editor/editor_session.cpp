@@ -572,6 +572,12 @@ Recipe EditorSession::current_recipe() const
     return build_recipe(document_.sets, document_.solver, base_mesh(), document_.steps_from_base);
 }
 
+Recipe EditorSession::file_recipe() const
+{
+    return renumber_recipe(current_recipe(), document_.order.vertex_order,
+                           document_.order.face_order);
+}
+
 bool EditorSession::export_recipe(const std::string& path)
 {
     if (!problems_.empty())
@@ -581,7 +587,7 @@ bool EditorSession::export_recipe(const std::string& path)
     }
     try
     {
-        io::write_file_atomically(path, recipe_to_json(current_recipe()).dump(2) + "\n");
+        io::write_file_atomically(path, recipe_to_json(file_recipe()).dump(2) + "\n");
         state_.message = "exported " + path +
                          (document_.reproducible
                               ? std::string(" (reproduces the shape from the base)")
@@ -601,8 +607,10 @@ bool EditorSession::import_recipe(const std::string& path)
     try
     {
         const Recipe recipe = read_recipe(path);
-        check_recipe(recipe, base_mesh());
-        ImportedRecipe imported = sets_from_recipe(recipe, document_.mesh);
+        check_recipe(recipe, base_mesh()); // the file's indices named in messages
+        const Recipe internal =
+            renumber_recipe(recipe, document_.order.vertex_index, document_.order.face_index);
+        ImportedRecipe imported = sets_from_recipe(internal, document_.mesh);
         close_run();
         EditState before = capture(document_, kSets | kSettings);
         imported.settings.iterations_per_frame = document_.solver.iterations_per_frame;
@@ -719,9 +727,14 @@ void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
         return;
     close_run();
     EditState before = capture(document_, kPositions | kBasePositions);
-    add_gaussian_noise(document_.mesh,
-                       sigma * mean_edge_length(document_.topology, document_.mesh.positions),
-                       seed);
+    // In the file's numbering, so that the same seed gives meshfair-cli noise's shape.
+    const Scalar unit = mean_edge_length(document_.topology, document_.mesh.positions);
+    Mesh noisy = file_order_mesh(document_);
+    add_gaussian_noise(noisy, sigma * unit, seed);
+    for (size_t k = 0; k < document_.order.vertex_order.size(); ++k)
+        for (size_t a = 0; a < 3; ++a)
+            document_.mesh.positions[3 * k + a] =
+                noisy.positions[3 * static_cast<size_t>(document_.order.vertex_order[k]) + a];
     document_.base_positions = document_.mesh.positions;
     document_.steps_from_base = 0;
     document_.reproducible = true;
@@ -783,7 +796,7 @@ void EditorSession::update()
             {
                 // From the base (the recipe's input shape), starting at the current positions.
                 const bool at_base = document_.steps_from_base == 0;
-                solver_.restart(base, recipe,
+                solver_.restart(base, document_.order, recipe,
                                 at_base ? std::vector<Scalar>{} : document_.mesh.positions);
                 if (!at_base)
                     document_.reproducible = false;
@@ -945,7 +958,7 @@ bool EditorSession::save(const std::string& path)
 {
     try
     {
-        io::write_mesh(document_.mesh, path);
+        io::write_mesh(file_order_mesh(document_), path); // the file's numbering, kept
         document_.path = path;
         document_.modified = false;
         remember(path);

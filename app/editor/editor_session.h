@@ -123,11 +123,14 @@ public:
     void add_noise(Scalar sigma, std::uint64_t seed);
     SolverStatus solver_status() const { return solver_.status(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
-    //! \brief The recipe of the sets and settings with the steps taken from the base shape:
+    //! \brief The recipe of the sets and settings with the steps taken from the base shape,
+    //! in the document's (locality) numbering:
     //! what `meshfair-cli smooth BASE --recipe R.json` runs to reproduce the current shape
     //! (bit for bit when document().reproducible).
     Recipe current_recipe() const;
-    //! Writes current_recipe() as JSON (atomic); false and a message on failure.
+    //! current_recipe() in the file's numbering: what Export recipe writes.
+    Recipe file_recipe() const;
+    //! Writes file_recipe() as JSON (atomic); false and a message on failure.
     bool export_recipe(const std::string& path);
     //! Replaces the sets and settings by a recipe's (one undo step); false and a message when
     //! it cannot be read or does not fit the mesh.

@@ -13,17 +13,6 @@ namespace {
 
 constexpr size_t kMaxEnergySamples = 20000;
 
-// The file-order positions `file` in the run's numbering.
-std::vector<Scalar> internal_positions(const LocalityRun& run, const std::vector<Scalar>& file)
-{
-    const std::vector<Index>& order = run.order().vertex_order;
-    std::vector<Scalar> x(file.size());
-    for (size_t k = 0; k < order.size(); ++k)
-        for (size_t a = 0; a < 3; ++a)
-            x[3 * k + a] = file[3 * static_cast<size_t>(order[k]) + a];
-    return x;
-}
-
 } // namespace
 
 LiveSolver::LiveSolver() : thread_([this] { worker(); }) {}
@@ -38,11 +27,12 @@ LiveSolver::~LiveSolver()
     thread_.join();
 }
 
-void LiveSolver::restart(const Mesh& base, const Recipe& recipe, std::vector<Scalar> start)
+void LiveSolver::restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
+                         std::vector<Scalar> start)
 {
     {
         std::lock_guard lock(mutex_);
-        restart_ = Restart{base, recipe, std::move(start)};
+        restart_ = Restart{base, order, recipe, std::move(start)};
         ++generation_;
         status_.playing = false;
         status_.ready = false;
@@ -114,8 +104,7 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     std::vector<Scalar> x(session.positions().begin(), session.positions().end());
     session.apply_hard_targets(x);
     session.set_positions(x);
-    back_.resize(x.size());
-    run_->file_positions(back_);
+    back_.assign(session.positions().begin(), session.positions().end());
     std::swap(back_, published_);
     fresh_ = true;
     done_.notify_all();
@@ -166,7 +155,7 @@ void LiveSolver::compute_heat(std::optional<EnergyTerm> term)
     if (!term || !run_)
         return;
     heat_back_.resize(run_->session().positions().size() / 3);
-    run_->file_vertex_energy(*term, heat_back_);
+    run_->session().vertex_energy(run_->session().positions(), *term, heat_back_);
 }
 
 SolverStatus LiveSolver::status() const
@@ -205,8 +194,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         }
     }
     const TermEnergies energy = tolerance > 0 ? before : run_->energy();
-    back_.resize(run_->session().positions().size());
-    run_->file_positions(back_);
+    back_.assign(run_->session().positions().begin(), run_->session().positions().end());
     compute_heat(heat);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
@@ -288,16 +276,16 @@ void LiveSolver::worker()
             try
             {
                 check_recipe(r.recipe, r.base);
-                run = std::make_unique<LocalityRun>(std::move(r.base), r.recipe);
+                run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
+                                                    r.recipe);
                 if (!r.start.empty())
                 {
-                    std::vector<Scalar> x = internal_positions(*run, r.start);
-                    run->session().apply_hard_targets(x); // pins where the recipe puts them
-                    run->session().set_positions(x);
+                    run->session().apply_hard_targets(r.start); // pins where the recipe puts them
+                    run->session().set_positions(r.start);
                 }
                 energy = run->energy();
-                published.resize(run->session().positions().size());
-                run->file_positions(published);
+                published.assign(run->session().positions().begin(),
+                                 run->session().positions().end());
             }
             catch (const std::exception& e)
             {

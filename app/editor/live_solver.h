@@ -50,10 +50,13 @@ public:
     LiveSolver(const LiveSolver&) = delete;
     LiveSolver& operator=(const LiveSolver&) = delete;
 
-    //! \brief Starts a run for `base` (file numbering; its positions are the recipe's input
-    //! shape) and `recipe`, from the positions `start` (3 #V, file order; empty: the base).
+    //! \brief Starts a run for `base` and `recipe`, both in the locality numbering `order`
+    //! made (the document's; base's positions are the recipe's input shape), from the
+    //! positions `start` (3 #V; empty: the base). Positions and shares are published in that
+    //! numbering.
     //! Returns at once: the precomputation happens on the worker. Stops playing.
-    void restart(const Mesh& base, const Recipe& recipe, std::vector<Scalar> start);
+    void restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
+                 std::vector<Scalar> start);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
 
@@ -96,6 +99,7 @@ private:
     struct Restart
     {
         Mesh base;
+        LocalityOrder order;
         Recipe recipe;
         std::vector<Scalar> start;
     };

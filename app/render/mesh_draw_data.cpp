@@ -50,14 +50,18 @@ void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<fl
     parallel_for(mesh.face_count(), [&](Index f) {
         const std::span<const Index> face = mesh.face(f);
         double n[3] = {0, 0, 0};
-        for (size_t k = 0; k < face.size(); ++k)
-        {
-            const double* p = &x[3 * static_cast<size_t>(face[k])];
-            const double* q = &x[3 * static_cast<size_t>(face[(k + 1) % face.size()])];
+        // Corner k with corner k + 1, the last with the first: no division per corner (this
+        // runs for every corner of every frame of live solving).
+        const auto add = [&](Index i, Index j) {
+            const double* p = &x[3 * static_cast<size_t>(i)];
+            const double* q = &x[3 * static_cast<size_t>(j)];
             n[0] += (p[1] - q[1]) * (p[2] + q[2]);
             n[1] += (p[2] - q[2]) * (p[0] + q[0]);
             n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        }
+        };
+        for (size_t k = 0; k + 1 < face.size(); ++k)
+            add(face[k], face[k + 1]);
+        add(face.back(), face.front());
         for (int a = 0; a < 3; ++a)
             out[3 * static_cast<size_t>(f) + a] = static_cast<float>(0.5 * n[a]);
     });

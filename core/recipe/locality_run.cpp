@@ -27,6 +27,15 @@ LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)
     session_.adopt_positions(std::move(mesh_.positions));
 }
 
+LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe)
+    : order_(std::move(order)), mesh_(std::move(renumbered_mesh)),
+      topology_(build_topology(mesh_, required_topology(renumbered_recipe))),
+      session_(mesh_, topology_, renumbered_recipe)
+{
+    session_.apply_hard_targets(mesh_.positions);
+    session_.adopt_positions(std::move(mesh_.positions));
+}
+
 void LocalityRun::file_positions(std::span<Scalar> out) const
 {
     positions_to_file_order(session_.positions(), order_, out);

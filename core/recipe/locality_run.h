@@ -25,6 +25,13 @@ public:
     //! \pre check_recipe(recipe, mesh) holds (file numbering); validate_mesh(mesh) holds.
     //! Takes the mesh (move it in: the one copy is renumbered in place).
     LocalityRun(Mesh mesh, const Recipe& recipe);
+    //! \brief The same run for a mesh already renumbered by `order` (reorder_mesh(file mesh,
+    //! locality_order(file mesh))) and a recipe already in that numbering
+    //! (renumber_recipe(file recipe, order.vertex_index, order.face_index)): what the
+    //! editor, which keeps its document in the locality numbering, runs. The same Session
+    //! inputs as the first constructor's, so the same bits.
+    //! \pre check_recipe(recipe, mesh) holds.
+    LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe);
 
     //! One step on the kept positions.
     StepInfo step() { return session_.step(); }
