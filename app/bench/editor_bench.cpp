@@ -17,6 +17,7 @@
 
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
+#include "app/editor/live_solver.h"
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
@@ -237,47 +238,47 @@ int main(int argc, char** argv)
         t = Clock::now();
         LocalityRun run(internal_mesh, doc.order, recipe);
         const double precompute = ms_since(t);
-        std::vector<Scalar> file(doc.mesh.positions.size());
+        std::vector<Scalar> published(doc.mesh.positions.size());
+        DisplayGeometry g{std::vector<float>(published.size()),
+                          std::vector<float>(published.size()),
+                          std::vector<float>(3 * static_cast<size_t>(doc.mesh.face_count()))};
+        // The solver's thread: a step, the energy, the positions published, and the display
+        // geometry (floats, face area vectors, vertex normals). The interface's thread: the
+        // upload.
         Series step{"solver step", {}}, energy{"energy (for the plot)", {}},
-            back{"positions published (copy)", {}}, normals{"normals + upload", {}},
-            total{"frame (sum)", {}};
+            back{"positions published (copy)", {}}, floats{"positions to float", {}},
+            areas{"face area vectors", {}}, normals{"vertex normals", {}},
+            worker{"solver's thread, per frame (sum)", {}},
+            gpu{"interface's thread: upload (update_geometry)", {}},
+            required{"iteration + normal update + upload", {}};
         for (int f = 0; f < frames; ++f)
         {
             const double a = timed([&] { run.step(); });
             const double b = timed([&] { (void)run.energy(); });
             const double c = timed([&] {
                 const std::span<const Scalar> x = run.session().positions();
-                std::copy(x.begin(), x.end(), file.begin());
+                std::copy(x.begin(), x.end(), published.begin());
             });
-            const double d = timed([&] {
-                renderer.update_positions(file);
+            const double d = timed([&] { positions_to_float(published, g.positions); });
+            const double e = timed([&] { face_area_vectors(published, doc.mesh, g.face_areas); });
+            const double h = timed([&] { vertex_normals(doc.draw_data, g.face_areas, g.normals); });
+            const double u = timed([&] {
+                renderer.update_geometry(g.positions, g.normals, g.face_areas);
                 (void)renderer.read_pixels(1, 1); // the upload has reached the GPU side
             });
             step.ms.push_back(a);
             energy.ms.push_back(b);
             back.ms.push_back(c);
-            normals.ms.push_back(d);
-            total.ms.push_back(a + b + c + d);
-        }
-        if (std::string(name) == "plain")
-        {
-            // The renderer's parts, apart: floats, face area vectors, vertex normals.
-            std::vector<float> f32(file.size()),
-                areas(3 * static_cast<size_t>(doc.mesh.face_count())), vn(file.size());
-            Series a{"  of which: positions to float", {}}, b{"  of which: face area vectors", {}},
-                c{"  of which: vertex normals", {}};
-            for (int sample = 0; sample < frames; ++sample)
-            {
-                a.ms.push_back(timed([&] { positions_to_float(file, f32); }));
-                b.ms.push_back(timed([&] { face_area_vectors(file, doc.mesh, areas); }));
-                c.ms.push_back(timed([&] { vertex_normals(doc.draw_data, areas, vn); }));
-            }
-            for (const Series* x : {&a, &b, &c})
-                std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
-                            x->max());
+            floats.ms.push_back(d);
+            areas.ms.push_back(e);
+            normals.ms.push_back(h);
+            worker.ms.push_back(a + b + c + d + e + h);
+            gpu.ms.push_back(u);
+            required.ms.push_back(a + d + e + h + u);
         }
         std::printf("| %s | precomputation (once per recipe) | %.0f | |\n", name, precompute);
-        for (const Series* x : {&step, &energy, &back, &normals, &total})
+        for (const Series* x :
+             {&step, &energy, &back, &floats, &areas, &normals, &worker, &gpu, &required})
             std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
                         x->max());
     }

@@ -390,8 +390,16 @@ void EditorSession::sets_changed()
 
 void EditorSession::positions_changed()
 {
+    geometry_changed(false);
+}
+
+void EditorSession::geometry_changed(bool computed)
+{
     ++edits_;
-    renderer_.update_positions(document_.mesh.positions);
+    if (computed)
+        renderer_.update_geometry(display_.positions, display_.normals, display_.face_areas);
+    else
+        renderer_.update_positions(document_.mesh.positions);
     ++geometry_;
     glyphs_dirty_ = glyphs_dirty_ || !document_.sets.empty();
     document_.modified = true;
@@ -797,7 +805,9 @@ void EditorSession::update()
                 // From the base (the recipe's input shape), starting at the current positions.
                 const bool at_base = document_.steps_from_base == 0;
                 solver_.restart(base, document_.order, recipe,
-                                at_base ? std::vector<Scalar>{} : document_.mesh.positions);
+                                at_base ? std::vector<Scalar>{} : document_.mesh.positions,
+                                document_.draw_data.vertex_face_offsets,
+                                document_.draw_data.vertex_faces);
                 if (!at_base)
                     document_.reproducible = false;
                 steps_at_restart_ = document_.steps_from_base;
@@ -808,10 +818,14 @@ void EditorSession::update()
             }
         }
     }
-    if (solver_.take(document_.mesh.positions))
+    if (solver_.take(document_.mesh.positions, display_))
     {
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
-        positions_changed();
+        // The solver's thread computed the normals: the interface only uploads them.
+        if (display_.positions.size() == document_.mesh.positions.size())
+            geometry_changed(true);
+        else
+            positions_changed();
     }
     if (state_.heat_map && solver_.take_heat(heat_))
     {

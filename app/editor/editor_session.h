@@ -191,6 +191,10 @@ private:
     void sets_changed();
     void after_history(unsigned parts);
     void positions_changed();
+    //! The positions changed: the renderer gets them (with display_'s normals when
+    //! `computed`, else computing its own).
+    void geometry_changed(bool computed);
+    DisplayGeometry display_; // the solver's newest display geometry
     void close_run();
     Mesh base_mesh() const;
 

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <utility>
 
+#include "app/render/mesh_draw_data.h"
 #include "core/solver/solver.h"
 
 namespace meshfair::app {
@@ -28,11 +29,17 @@ LiveSolver::~LiveSolver()
 }
 
 void LiveSolver::restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
-                         std::vector<Scalar> start)
+                         std::vector<Scalar> start, std::vector<Index> vertex_face_offsets,
+                         std::vector<Index> vertex_faces)
 {
     {
         std::lock_guard lock(mutex_);
-        restart_ = Restart{base, order, recipe, std::move(start)};
+        restart_ = Restart{base,
+                           order,
+                           recipe,
+                           std::move(vertex_face_offsets),
+                           std::move(vertex_faces),
+                           std::move(start)};
         ++generation_;
         status_.playing = false;
         status_.ready = false;
@@ -105,7 +112,9 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     session.apply_hard_targets(x);
     session.set_positions(x);
     back_.assign(session.positions().begin(), session.positions().end());
+    compute_display(back_, run_->mesh());
     std::swap(back_, published_);
+    std::swap(display_back_, display_published_);
     fresh_ = true;
     done_.notify_all();
 }
@@ -114,6 +123,33 @@ void LiveSolver::wait_idle()
 {
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] { return !busy_ && !restart_ && !(heat_dirty_ && run_); });
+}
+
+void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
+{
+    if (vertex_face_offsets_.empty())
+        return;
+    DisplayGeometry& g = display_back_;
+    g.positions.resize(x.size());
+    g.normals.resize(x.size());
+    g.face_areas.resize(3 * static_cast<size_t>(mesh.face_count()));
+    positions_to_float(x, g.positions);
+    face_area_vectors(x, mesh, g.face_areas);
+    vertex_normals(vertex_face_offsets_, vertex_faces_, g.face_areas, g.normals);
+}
+
+bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry)
+{
+    {
+        std::lock_guard lock(mutex_);
+        if (!fresh_)
+            return false;
+        std::swap(positions, published_);
+        std::swap(geometry, display_published_);
+        fresh_ = false;
+    }
+    wake_.notify_all(); // a playing worker waits for this
+    return true;
 }
 
 bool LiveSolver::take(std::vector<Scalar>& positions)
@@ -195,6 +231,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     }
     const TermEnergies energy = tolerance > 0 ? before : run_->energy();
     back_.assign(run_->session().positions().begin(), run_->session().positions().end());
+    compute_display(back_, run_->mesh());
     compute_heat(heat);
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
@@ -217,6 +254,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             energies_.resize(kept);
         }
         std::swap(back_, published_);
+        std::swap(display_back_, display_published_);
         fresh_ = true;
         if (heat && heat == heat_term_)
         {
@@ -276,8 +314,8 @@ void LiveSolver::worker()
             try
             {
                 check_recipe(r.recipe, r.base);
-                run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
-                                                    r.recipe);
+                run =
+                    std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe);
                 if (!r.start.empty())
                 {
                     run->session().apply_hard_targets(r.start); // pins where the recipe puts them
@@ -286,6 +324,9 @@ void LiveSolver::worker()
                 energy = run->energy();
                 published.assign(run->session().positions().begin(),
                                  run->session().positions().end());
+                vertex_face_offsets_ = std::move(r.vertex_face_offsets);
+                vertex_faces_ = std::move(r.vertex_faces);
+                compute_display(published, run->mesh());
             }
             catch (const std::exception& e)
             {
@@ -312,6 +353,7 @@ void LiveSolver::worker()
                     heat_dirty_ = heat_term_.has_value();
                     energies_ = {{0, energy}};
                     published_ = std::move(published);
+                    std::swap(display_back_, display_published_);
                     fresh_ = true; // the pins may have moved to their targets
                 }
             }

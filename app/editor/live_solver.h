@@ -22,6 +22,14 @@ struct EnergySample
     TermEnergies energy;
 };
 
+//! \brief What the view draws of a frame, computed on the solver's thread so that the
+//! interface only uploads it: float positions, vertex normals (3 #V) and face area vectors
+//! (3 #F), as Renderer::update_geometry takes them.
+struct DisplayGeometry
+{
+    std::vector<float> positions, normals, face_areas;
+};
+
 //! What the solver has done, for the solver panel.
 struct SolverStatus
 {
@@ -55,8 +63,11 @@ public:
     //! positions `start` (3 #V; empty: the base). Positions and shares are published in that
     //! numbering.
     //! Returns at once: the precomputation happens on the worker. Stops playing.
+    //! `vertex_face_offsets` and `vertex_faces` (the draw data's faces around each vertex)
+    //! let the solver's thread compute the display geometry of each frame.
     void restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
-                 std::vector<Scalar> start);
+                 std::vector<Scalar> start, std::vector<Index> vertex_face_offsets = {},
+                 std::vector<Index> vertex_faces = {});
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
 
@@ -84,6 +95,8 @@ public:
     //! \brief The newest positions not yet taken, swapped into `positions` (file order);
     //! false when there are none. Called once per frame by the interface.
     bool take(std::vector<Scalar>& positions);
+    //! take(), with the frame's display geometry swapped into `geometry` (when computed).
+    bool take(std::vector<Scalar>& positions, DisplayGeometry& geometry);
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
     std::vector<EnergySample> energies() const;
@@ -101,6 +114,7 @@ private:
         Mesh base;
         LocalityOrder order;
         Recipe recipe;
+        std::vector<Index> vertex_face_offsets, vertex_faces;
         std::vector<Scalar> start;
     };
     std::optional<Restart> restart_;   // pending, for the worker
@@ -113,7 +127,11 @@ private:
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest
     std::vector<Scalar> back_;      // file order, being written (while busy_)
-    bool fresh_ = false;            // published_ not yet taken
+    DisplayGeometry display_published_, display_back_;
+    std::vector<Index> vertex_face_offsets_, vertex_faces_; // of the run (set at a restart)
+    //! The display geometry of `x` into display_back_ (outside the lock, while busy_).
+    void compute_display(std::span<const Scalar> x, const Mesh& mesh);
+    bool fresh_ = false; // published_ not yet taken
     std::vector<EnergySample> energies_;
     std::optional<EnergyTerm> heat_term_;
     bool heat_dirty_ = false;            // shares wanted for the current positions

@@ -236,14 +236,36 @@ void GlRenderer::update_positions(std::span<const Scalar> positions)
     positions_to_float(positions, positions_);
     face_area_vectors(positions, connectivity_, face_areas_);
     vertex_normals(vertex_face_offsets_, vertex_faces_, face_areas_, normals_);
-    const auto sub = [](GLenum target, GLuint buffer, const std::vector<float>& v) {
+    upload_geometry(positions_, normals_, face_areas_);
+    check("update_positions");
+}
+
+void GlRenderer::update_geometry(std::span<const float> positions, std::span<const float> normals,
+                                 std::span<const float> face_areas)
+{
+    if (positions.size() != positions_.size() || normals.size() != normals_.size() ||
+        face_areas.size() != face_areas_.size())
+        throw RenderError("GlRenderer::update_geometry: " + std::to_string(positions.size()) +
+                          " coordinates, " + std::to_string(normals.size()) + " normal and " +
+                          std::to_string(face_areas.size()) + " face values for a mesh of " +
+                          std::to_string(positions_.size() / 3) + " vertices and " +
+                          std::to_string(face_areas_.size() / 3) + " faces");
+    // The positions are kept for visibility(); the GPU gets the three arrays as given.
+    std::copy(positions.begin(), positions.end(), positions_.begin());
+    upload_geometry(positions_, normals, face_areas);
+    check("update_geometry");
+}
+
+void GlRenderer::upload_geometry(std::span<const float> positions, std::span<const float> normals,
+                                 std::span<const float> face_areas)
+{
+    const auto sub = [](GLenum target, GLuint buffer, std::span<const float> v) {
         glBindBuffer(target, buffer);
         glBufferSubData(target, 0, static_cast<GLsizeiptr>(v.size() * sizeof(float)), v.data());
     };
-    sub(GL_ARRAY_BUFFER, gl_->positions, positions_);
-    sub(GL_ARRAY_BUFFER, gl_->normals, normals_);
-    sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_);
-    check("update_positions");
+    sub(GL_ARRAY_BUFFER, gl_->positions, positions);
+    sub(GL_ARRAY_BUFFER, gl_->normals, normals);
+    sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas);
 }
 
 void GlRenderer::set_vertex_colors(std::span<const float> rgb)

@@ -25,6 +25,8 @@ public:
 
     void set_mesh(const Mesh& mesh, const MeshDrawData& data) override;
     void update_positions(std::span<const Scalar> positions) override;
+    void update_geometry(std::span<const float> positions, std::span<const float> normals,
+                         std::span<const float> face_areas) override;
     void set_vertex_colors(std::span<const float> rgb) override;
     void set_selection(std::span<const char> vertices, std::span<const char> faces) override;
     void set_glyphs(std::span<const GlyphGroup> groups) override;
@@ -41,6 +43,9 @@ private:
     struct Gl; // the GL objects, defined where GL is included
     //! Draws the ID buffer of a `width` x `height` view into the pick framebuffer, left bound.
     void render_ids(const Camera& camera, int width, int height);
+    //! Re-uploads the positions, normals and face area vectors in place (no allocation).
+    void upload_geometry(std::span<const float> positions, std::span<const float> normals,
+                         std::span<const float> face_areas);
     std::unique_ptr<Gl> gl_;
     Mesh connectivity_; // the faces of the mesh set last (positions not kept)
     std::uint32_t vertex_count_ = 0, face_count_ = 0;
