@@ -251,27 +251,24 @@ void EditorSession::set_elements(ElementKind kind)
 
 bool EditorSession::undo()
 {
-    if (gesture_ != nullptr)
-        return false;
-    close_run();
-    const unsigned parts = history_.undo(document_);
-    if (parts == 0)
-        return false;
-    after_history(parts);
-    state_.message = "undid " + history_.redo_label();
-    return true;
+    return travel(true);
 }
 
 bool EditorSession::redo()
 {
+    return travel(false);
+}
+
+bool EditorSession::travel(bool back)
+{
     if (gesture_ != nullptr)
         return false;
-    close_run();
-    const unsigned parts = history_.redo(document_);
+    close_run(); // a run under way is a step of its own first
+    const unsigned parts = back ? history_.undo(document_) : history_.redo(document_);
     if (parts == 0)
         return false;
     after_history(parts);
-    state_.message = "redid " + history_.undo_label();
+    state_.message = back ? "undid " + history_.redo_label() : "redid " + history_.undo_label();
     return true;
 }
 

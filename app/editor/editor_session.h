@@ -190,6 +190,8 @@ private:
     void record(const std::string& label, EditState before, bool merge = false);
     void sets_changed();
     void after_history(unsigned parts);
+    //! Undo (back) or redo.
+    bool travel(bool back);
     void positions_changed();
     //! The positions changed: the renderer gets them (with display_'s normals when
     //! `computed`, else computing its own).

@@ -9,6 +9,7 @@
 #include "app/editor/heat_map.h"
 #include "core/errors.h"
 #include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
 
 namespace meshfair::app {
 
@@ -20,21 +21,6 @@ using Kind = ScriptAction::Kind;
 [[noreturn]] void fail(const std::string& name, const std::string& where, const std::string& why)
 {
     throw InvalidInputError("'" + name + "': " + where + ": " + why);
-}
-
-// What JSON's parser says, as "'name':L:C: why".
-[[noreturn]] void parse_failure(const std::string& name, const std::string& what)
-{
-    const auto at = what.find(" at line ");
-    const auto why = what.find(": ", at == std::string::npos ? 0 : at);
-    if (at == std::string::npos || why == std::string::npos)
-        throw InvalidInputError("'" + name + "': not valid JSON: " + what);
-    std::string place = what.substr(at + 9, why - at - 9); // "L, column C"
-    const auto comma = place.find(", column ");
-    if (comma != std::string::npos)
-        place = place.substr(0, comma) + ":" + place.substr(comma + 9);
-    throw InvalidInputError("'" + name + "':" + place +
-                            ": not valid JSON: " + what.substr(why + 2));
 }
 
 struct Reader
@@ -444,7 +430,7 @@ Script parse_script(const std::string& text, const std::string& name)
     }
     catch (const Json::parse_error& e)
     {
-        parse_failure(name, e.what());
+        throw json_syntax_error(name, e.what());
     }
     catch (const Json::exception& e)
     {

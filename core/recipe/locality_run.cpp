@@ -28,7 +28,8 @@ LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)
 }
 
 LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe)
-    : order_(std::move(order)), mesh_(std::move(renumbered_mesh)),
+    : order_(std::move(order)),
+      mesh_(std::move(renumbered_mesh)),
       topology_(build_topology(mesh_, required_topology(renumbered_recipe))),
       session_(mesh_, topology_, renumbered_recipe)
 {
