@@ -815,8 +815,12 @@ void EditorSession::update()
             }
         }
     }
-    if (solver_.take(document_.mesh.positions, display_))
+    // A restart publishes the positions it starts from (pins moved to their targets), most
+    // often the same as shown: those change nothing, not even the modified flag.
+    if (solver_.take(incoming_, display_) &&
+        !(solver_.status().steps == 0 && incoming_ == document_.mesh.positions))
     {
+        std::swap(incoming_, document_.mesh.positions);
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
         // The solver's thread computed the normals: the interface only uploads them.
         if (display_.positions.size() == document_.mesh.positions.size())

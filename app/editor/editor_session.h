@@ -196,7 +196,8 @@ private:
     //! The positions changed: the renderer gets them (with display_'s normals when
     //! `computed`, else computing its own).
     void geometry_changed(bool computed);
-    DisplayGeometry display_; // the solver's newest display geometry
+    DisplayGeometry display_;      // the solver's newest display geometry
+    std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown
     void close_run();
     Mesh base_mesh() const;
 

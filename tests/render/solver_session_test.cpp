@@ -88,6 +88,22 @@ bool same(const State& a, const State& b)
 
 TEST_SUITE("Live solving")
 {
+    TEST_CASE("opening a mesh modifies nothing: the solver's first precomputation is silent")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        const std::vector<Scalar> loaded = s.document().mesh.positions;
+        s.update();        // the first restart, on the solver's thread
+        s.wait_for_heat(); // waits until it is done, and takes what it published
+        CHECK(s.solver_status().ready);
+        CHECK_FALSE(s.document().modified); // Ctrl+Q quits without asking
+        CHECK(s.document().mesh.positions == loaded);
+        CHECK(s.history().undo_count() == 0);
+        s.step(1);
+        CHECK(s.document().modified);
+    }
+
     TEST_CASE("the exported recipe reproduces the editor's shape through meshfair-cli")
     {
         const fs::path dir = test::temp_dir();
