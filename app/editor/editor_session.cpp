@@ -8,6 +8,8 @@
 #include <cmath>
 #include <utility>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "app/editor/heat_map.h"
 #include "app/tools/brush_tool.h"
 #include "app/tools/click_tool.h"
@@ -47,6 +49,7 @@ const char* gesture_label(ToolKind tool)
             return "lasso select";
         case ToolKind::Navigate:
         case ToolKind::MovePins:
+        case ToolKind::AimNormals:
             break;
     }
     return "";
@@ -85,6 +88,7 @@ void EditorSession::set_tool(ToolKind tool)
 
 void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, double y)
 {
+    history_.seal(); // what this press starts is a step of its own
     cursor_ = {x, y, 0};
     if (gesture_ != nullptr)
         return;
@@ -93,9 +97,15 @@ void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, do
         if (press_pins(x, y))
             return;
     }
+    if (button == MouseButton::Left && !mods.alt && state_.tool == ToolKind::AimNormals)
+    {
+        if (press_normals(x, y))
+            return;
+    }
     // Alt + left always navigates, so a tool never locks the view.
     if (button == MouseButton::Left && !mods.alt && state_.tool != ToolKind::Navigate &&
-        state_.tool != ToolKind::MovePins && !navigator_.dragging())
+        state_.tool != ToolKind::MovePins && state_.tool != ToolKind::AimNormals &&
+        !navigator_.dragging())
     {
         gesture_ = &tool_object(state_.tool);
         gesture_op_ = op_of(mods);
@@ -126,6 +136,8 @@ void EditorSession::mouse_move(double x, double y)
     cursor_ = {x, y, 0};
     if (dragged_pins_)
         drag_pins(x, y);
+    else if (aimed_normals_)
+        aim_normals(x, y);
     else if (gesture_ != nullptr)
         apply(gesture_->drag(cursor_));
     else
@@ -134,11 +146,22 @@ void EditorSession::mouse_move(double x, double y)
 
 void EditorSession::mouse_release(MouseButton button, double x, double y)
 {
+    struct Seal
+    {
+        History& h;
+        ~Seal() { h.seal(); } // the drag's merged steps end with it
+    } seal{history_};
     cursor_ = {x, y, 0};
     if (dragged_pins_ && button == MouseButton::Left)
     {
         drag_pins(x, y);
         dragged_pins_.reset();
+        return;
+    }
+    if (aimed_normals_ && button == MouseButton::Left)
+    {
+        aim_normals(x, y);
+        aimed_normals_.reset();
         return;
     }
     if (gesture_ != nullptr && button == MouseButton::Left)
@@ -182,6 +205,60 @@ bool EditorSession::press_pins(double x, double y)
     if (dragged_pins_)
         state_.message = "moving the pins of '" + document_.sets[*dragged_pins_].name + "'";
     return dragged_pins_.has_value();
+}
+
+bool EditorSession::press_normals(double x, double y)
+{
+    // The normal set whose arrow base (a face centroid) is nearest to the cursor, within 12
+    // pixels, among the faces its glyphs show.
+    double best = 12 * 12;
+    const Mesh& mesh = document_.mesh;
+    for (size_t k = 0; k < document_.sets.size(); ++k)
+    {
+        const ConstraintSet& s = document_.sets[k];
+        const bool normal = s.kind == ConstraintKind::Normal ||
+                            s.kind == ConstraintKind::HardNormal ||
+                            s.kind == ConstraintKind::SoftNormal;
+        if (!normal || !s.visible)
+            continue;
+        const size_t step = std::max<size_t>(1, (s.faces.size() + 23) / 24);
+        for (size_t f = 0; f < s.faces.size(); f += step)
+        {
+            const Vec3 c = face_centroid(mesh, mesh.positions, s.faces[f]);
+            const glm::dvec3 w = camera_.project({c[0], c[1], c[2]}, view_.width, view_.height);
+            const double d2 = (w.x - x) * (w.x - x) + (w.y - y) * (w.y - y);
+            if (w.z >= 0 && w.z <= 1 && d2 < best)
+            {
+                best = d2;
+                aimed_normals_ = k;
+            }
+        }
+    }
+    aim_x_ = x;
+    aim_y_ = y;
+    if (aimed_normals_)
+        state_.message = "turning the normals of '" + document_.sets[*aimed_normals_].name + "'";
+    return aimed_normals_.has_value();
+}
+
+void EditorSession::aim_normals(double x, double y)
+{
+    // A drag turns the direction about the view-plane axis across it, one radian per 100
+    // pixels, as a trackball turns the object under the mouse.
+    const double dx = x - aim_x_, dy = y - aim_y_;
+    const double angle = std::sqrt(dx * dx + dy * dy) / 100.0;
+    if (angle == 0)
+        return;
+    const glm::dvec3 right = camera_.rotation * glm::dvec3(1, 0, 0);
+    const glm::dvec3 up = camera_.rotation * glm::dvec3(0, 1, 0);
+    const glm::dvec3 axis = glm::normalize(dy * right + dx * up); // screen y points down
+    const ConstraintSet& s = document_.sets[*aimed_normals_];
+    Vec3 d0 = s.normals.empty() ? face_normal(document_.mesh, document_.mesh.positions, s.faces[0])
+                                : s.normals[0];
+    const glm::dvec3 d = glm::angleAxis(angle, axis) * glm::dvec3(d0[0], d0[1], d0[2]);
+    set_normal_direction(*aimed_normals_, {d.x, d.y, d.z});
+    aim_x_ = x;
+    aim_y_ = y;
 }
 
 void EditorSession::drag_pins(double x, double y)
@@ -914,6 +991,8 @@ void EditorSession::carry_out(const UiRequests& r)
         export_recipe(*r.export_recipe_path);
     if (r.import_recipe_path)
         import_recipe(*r.import_recipe_path);
+    if (r.seal_history)
+        history_.seal();
     if (r.open_path)
         open(*r.open_path);
     if (r.save_path)

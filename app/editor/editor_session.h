@@ -65,6 +65,8 @@ public:
     void set_elements(ElementKind kind);
     bool undo();
     bool redo();
+    //! The next edit is an undo step of its own (see History::seal).
+    void seal_history() { history_.seal(); }
 
     //! Carries out what the interface or the keys asked for (views, files, ...); quit and
     //! screenshots are the caller's.
@@ -223,6 +225,10 @@ private:
     double dragged_depth_ = 0;           // its grabbed glyph's window depth
     glm::dvec3 dragged_from_{0.0};       // the grabbed point, in the world
     bool press_pins(double x, double y);
+    std::optional<size_t> aimed_normals_; // the normal set the AimNormals tool turns
+    double aim_x_ = 0, aim_y_ = 0;        // the cursor at the last turn
+    bool press_normals(double x, double y);
+    void aim_normals(double x, double y);
     void drag_pins(double x, double y);
     int steps_at_restart_ = 0; // steps_from_base when the solver last restarted
     bool run_open_ = false;    // play() began a run not yet recorded

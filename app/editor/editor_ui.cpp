@@ -26,6 +26,7 @@ constexpr KeyBinding kBindings[] = {
     {"Ctrl + tool", "take away from the selection"},
     {"N / K / C / R / L", "tool: navigate / click / brush / rectangle / lasso"},
     {"M", "tool: drag pins to new targets in the view plane"},
+    {"D", "tool: drag a normal set's arrows to turn its direction"},
     {"V", "select vertices / faces"},
     {"[ / ]", "brush radius smaller / larger"},
     {"Ctrl + A, Alt + A", "select all, select none"},
@@ -86,9 +87,10 @@ struct ToolItem
     const char* label;
 };
 constexpr ToolItem kToolItems[] = {
-    {ToolKind::Navigate, "navigate (N)"}, {ToolKind::Click, "click (K)"},
-    {ToolKind::Brush, "brush (C)"},       {ToolKind::Rectangle, "rectangle (R)"},
-    {ToolKind::Lasso, "lasso (L)"},       {ToolKind::MovePins, "move pins (M)"}};
+    {ToolKind::Navigate, "navigate (N)"},     {ToolKind::Click, "click (K)"},
+    {ToolKind::Brush, "brush (C)"},           {ToolKind::Rectangle, "rectangle (R)"},
+    {ToolKind::Lasso, "lasso (L)"},           {ToolKind::MovePins, "move pins (M)"},
+    {ToolKind::AimNormals, "aim normals (D)"}};
 
 std::string megabytes(std::size_t bytes)
 {
@@ -846,6 +848,9 @@ UiRequests EditorUi::build(const Document& document, EditorState& state, const C
         }
         ImGui::EndPopup();
     }
+    // A slider or a field let go ends its series of edits: the next one is a new undo step.
+    r.seal_history = ImGui::IsAnyItemActive() == false && was_editing_;
+    was_editing_ = ImGui::IsAnyItemActive();
     if (quit_prompt_)
     {
         ImGui::OpenPopup("Unsaved changes");

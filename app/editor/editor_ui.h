@@ -97,6 +97,7 @@ struct UiRequests
     std::optional<SetEdit> set_edit;
     std::optional<SolverSettings> solver; //!< new settings from the solver panel
     bool solver_merge = true;             //!< part of a slider's series of changes
+    bool seal_history = false;            //!< a widget was let go: its series of edits ends
     bool play = false, pause = false, step = false, reset_shape = false, apply_shape = false;
     std::optional<std::string> export_recipe_path, import_recipe_path;
     std::optional<std::pair<Scalar, std::uint64_t>> noise; //!< sigma (mean edges), seed
@@ -142,6 +143,7 @@ private:
     FileBrowser browser_;
     FileBrowser::Mode browser_mode_ = FileBrowser::Mode::Open;
     char rename_buffer_[128] = {};
+    bool was_editing_ = false; // a widget was active in the last frame
     size_t renaming_ = 0;
     bool quit_prompt_ = false;
 };

@@ -109,7 +109,7 @@ bool History::record(std::string label, EditState before, const Document& now, b
         bytes_ -= s.bytes;
     const bool was_redoable = !redo_.empty();
     redo_.clear();
-    if (merge && !was_redoable && !undo_.empty() && undo_.back().label == label)
+    if (merge && !sealed_ && !was_redoable && !undo_.empty() && undo_.back().label == label)
     {
         // The newest step already holds the state before the first change of the series;
         // it must hold every part this change touched (else keep this one's).
@@ -122,6 +122,7 @@ bool History::record(std::string label, EditState before, const Document& now, b
             return true;
     }
     undo_.push_back({std::move(label), std::move(before), bytes});
+    sealed_ = !merge;
     bytes_ += bytes;
     enforce_limit();
     return true;

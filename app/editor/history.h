@@ -55,8 +55,12 @@ public:
     //! \brief Records that `label` took the document from `before` to its current state.
     //! Parts that did not change are not kept; a step that changed nothing is not recorded
     //! (returns false). Clears the redo list. With `merge`, a step of the same label as the
-    //! newest one joins it (a slider dragged through many values is one step).
+    //! newest one joins it (a slider dragged through many values is one step), unless that
+    //! one was recorded without `merge` or seal() came since.
     bool record(std::string label, EditState before, const Document& now, bool merge = false);
+    //! Ends the newest step's series of merges: the next step is a step of its own (an
+    //! interaction ended: a drag released, a widget let go, a script's action done).
+    void seal() { sealed_ = true; }
 
     //! Undoes the newest step on `document`; returns the parts it changed (0: none).
     unsigned undo(Document& document);
@@ -89,6 +93,7 @@ private:
 
     std::deque<Step> undo_, redo_;
     std::size_t bytes_ = 0, limit_, dropped_ = 0;
+    bool sealed_ = true; // the newest step takes no merge
 };
 
 } // namespace meshfair::app

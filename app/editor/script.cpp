@@ -623,6 +623,7 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 break;
         }
         session.carry_out(r);
+        session.seal_history(); // each action is an undo step of its own
     }
 }
 

@@ -178,6 +178,9 @@ void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods)
         case GLFW_KEY_M:
             r.tool = ToolKind::MovePins;
             break;
+        case GLFW_KEY_D:
+            r.tool = ToolKind::AimNormals;
+            break;
         case GLFW_KEY_K:
             r.tool = ToolKind::Click;
             break;

@@ -12,13 +12,14 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<ToolKind, std::string_view>, 6> kToolNames = {{
+constexpr std::array<std::pair<ToolKind, std::string_view>, 7> kToolNames = {{
     {ToolKind::Navigate, "navigate"},
     {ToolKind::Click, "click"},
     {ToolKind::Brush, "brush"},
     {ToolKind::Rectangle, "rectangle"},
     {ToolKind::Lasso, "lasso"},
     {ToolKind::MovePins, "move_pins"},
+    {ToolKind::AimNormals, "aim_normals"},
 }};
 
 // Face centroids (the mean of the corners) as floats, as the renderer projects them.

@@ -32,10 +32,11 @@ enum class ToolKind
     Brush,     //!< BrushTool
     Rectangle, //!< RectangleTool
     Lasso,     //!< LassoTool
-    MovePins   //!< drag a pin set's glyphs to new targets in the view plane (the session's)
+    MovePins,  //!< drag a pin set's glyphs to new targets in the view plane (the session's)
+    AimNormals //!< drag a normal set's arrows to turn its direction (the session's)
 };
 
-//! "navigate", "click", "brush", "rectangle", "lasso", "move_pins".
+//! "navigate", "click", "brush", "rectangle", "lasso", "move_pins", "aim_normals".
 std::string_view tool_name(ToolKind tool);
 std::optional<ToolKind> tool_named(std::string_view name);
 

@@ -7,12 +7,17 @@
 // returns exact states.
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <random>
 #include <string>
 
+#include <glm/gtc/quaternion.hpp>
+
 #include "app/editor/editor_session.h"
 #include "app/render/gl_renderer.h"
+#include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 #include "tests/helpers.h"
@@ -209,6 +214,37 @@ TEST_SUITE("Live solving")
         const fs::path recipe = dir / "recipe.json";
         REQUIRE(s.export_recipe(recipe.string()));
         CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
+    }
+
+    TEST_CASE("a normal set's arrows dragged turn its direction like a trackball")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        s.set_elements(ElementKind::Faces);
+        b.rectangle(180, 120, 230, 170);
+        REQUIRE(s.create_set(ConstraintKind::Normal, "up"));
+        s.set_normal_direction(0, {0, 0, 2}); // normalized
+        REQUIRE(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
+        const Vec3 c = face_centroid(s.document().mesh, s.document().mesh.positions,
+                                     s.document().sets[0].faces[0]);
+        const glm::dvec3 at = s.camera().project({c[0], c[1], c[2]}, kWidth, kHeight);
+        s.set_tool(ToolKind::AimNormals);
+        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
+        for (int k = 1; k <= 4; ++k)
+            s.mouse_move(at.x + 25 * k, at.y); // 100 pixels to the right: one radian
+        s.mouse_release(MouseButton::Left, at.x + 100, at.y);
+        const Vec3 d = s.document().sets[0].normals.front();
+        const glm::dvec3 up = s.camera().rotation * glm::dvec3(0, 1, 0);
+        const glm::dvec3 turned(d[0], d[1], d[2]);
+        CHECK(glm::length(turned) == doctest::Approx(1).epsilon(1e-12));
+        CHECK(glm::dot(turned, up) == doctest::Approx(glm::dot(glm::dvec3(0, 0, 1), up)));
+        CHECK(std::acos(std::clamp(turned.z, -1.0, 1.0)) == doctest::Approx(1.0).epsilon(1e-9));
+        for (const Vec3& n : s.document().sets[0].normals)
+            CHECK(n == d); // the one direction for every face of the set
+        // The drag is one undo step.
+        REQUIRE(s.undo());
+        CHECK(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
     }
 
     TEST_CASE("a recipe changed during a run is reported as not reproducing the shape")
