@@ -17,6 +17,9 @@ mkdir -p "$work"
 export GALLIUM_DRIVER=llvmpipe
 # The recent-files list goes into the work folder, not the user's configuration.
 export XDG_CONFIG_HOME="$work/config"
+# Autosaves too: a recovery file left by an earlier run would be offered, in a dialog that
+# takes the keys.
+export XDG_STATE_HOME="$work/state"
 # Under AddressSanitizer: the GLX driver is unloaded before leaks are reported, so its
 # allocations cannot be told apart (the OSMesa tests keep leak detection).
 export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
