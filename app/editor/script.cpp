@@ -81,8 +81,9 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                                                                   {"direction", "normal_direction"},
                                                                   {"seed", "noise"}};
     std::string kind;
-    for (const auto& [key, value] : j.items())
+    for (const auto& item : j.items())
     {
+        const std::string& key = item.key();
         if (key == "modifiers" || key == "button" || key == "at")
             continue;
         if (std::any_of(std::begin(options), std::end(options),
