@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/live_solver.h"
@@ -250,7 +251,11 @@ int main(int argc, char** argv)
             areas{"face area vectors", {}}, normals{"vertex normals", {}},
             worker{"solver's thread, per frame (sum)", {}},
             gpu{"interface's thread: upload (update_geometry)", {}},
-            required{"iteration + normal update + upload", {}};
+            required{"iteration + normal update + upload", {}},
+            peer{"peer: STREAM triad over three position-sized arrays", {}};
+        // The peer, timed in the same frames: the machine's memory speed of the moment, so
+        // that the frame's parts can be read as ratios when the machine is shared.
+        bench::TriadBandwidth triad(published.size());
         for (int f = 0; f < frames; ++f)
         {
             const double a = timed([&] { run.step(); });
@@ -266,6 +271,8 @@ int main(int argc, char** argv)
                 renderer.update_geometry(g.positions, g.normals, g.face_areas);
                 (void)renderer.read_pixels(1, 1); // the upload has reached the GPU side
             });
+            const double bytes = 24.0 * double(published.size());
+            peer.ms.push_back(1e3 * bytes / triad.measure(1));
             step.ms.push_back(a);
             energy.ms.push_back(b);
             back.ms.push_back(c);
@@ -278,9 +285,11 @@ int main(int argc, char** argv)
         }
         std::printf("| %s | precomputation (once per recipe) | %.0f | |\n", name, precompute);
         for (const Series* x :
-             {&step, &energy, &back, &floats, &areas, &normals, &worker, &gpu, &required})
+             {&step, &energy, &back, &floats, &areas, &normals, &worker, &gpu, &required, &peer})
             std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
                         x->max());
+        std::printf("| %s | iteration + normal update + upload / peer | %.1fx | |\n", name,
+                    required.median() / peer.median());
     }
     return 0;
 }

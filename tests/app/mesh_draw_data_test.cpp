@@ -143,6 +143,31 @@ TEST_SUITE("MeshDrawData")
         CHECK(results[0] == results[2]);
     }
 
+    TEST_CASE("the triangle meshes' fast path gives the general Newell sum's bits")
+    {
+        Mesh m = test::icosphere(3);
+        test::perturb(m, 0.01, 3);
+        std::vector<float> fast(3 * static_cast<size_t>(m.face_count()));
+        face_area_vectors(m.positions, m, fast);
+        // The general loop, written out: corner k with k + 1, the last with the first.
+        for (Index f = 0; f < m.face_count(); ++f)
+        {
+            double n[3] = {0, 0, 0};
+            const std::span<const Index> face = m.face(f);
+            for (size_t k = 0; k < face.size(); ++k)
+            {
+                const double* p = &m.positions[3 * static_cast<size_t>(face[k])];
+                const double* q =
+                    &m.positions[3 * static_cast<size_t>(face[(k + 1) % face.size()])];
+                n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+                n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+                n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+            }
+            for (int a = 0; a < 3; ++a)
+                REQUIRE(fast[3 * static_cast<size_t>(f) + a] == static_cast<float>(0.5 * n[a]));
+        }
+    }
+
     TEST_CASE("a vertex in no face gets a zero normal")
     {
         const Mesh m = test::with_isolated_vertex();
