@@ -779,12 +779,8 @@ void EditorSession::reset_shape()
     close_run();
     EditState before = capture(document_, kPositions);
     document_.mesh.positions = document_.base_positions;
-    document_.steps_from_base = 0;
-    document_.reproducible = true;
     positions_changed();
-    recipe_dirty_ = true;
-    restarted_recipe_.clear();
-    restarted_shape_.clear();
+    start_from_base();
     record("reset shape", std::move(before));
 }
 
@@ -795,12 +791,18 @@ void EditorSession::apply_shape()
     close_run();
     EditState before = capture(document_, kPositions | kBasePositions);
     document_.base_positions = document_.mesh.positions;
+    start_from_base();
+    record("apply shape", std::move(before));
+}
+
+void EditorSession::start_from_base()
+{
+    // The shape is the base: no steps from it, and the solver starts a run there.
     document_.steps_from_base = 0;
     document_.reproducible = true;
     recipe_dirty_ = true;
     restarted_recipe_.clear();
     restarted_shape_.clear();
-    record("apply shape", std::move(before));
 }
 
 void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
@@ -818,12 +820,8 @@ void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
             document_.mesh.positions[3 * k + a] =
                 noisy.positions[3 * static_cast<size_t>(document_.order.vertex_order[k]) + a];
     document_.base_positions = document_.mesh.positions;
-    document_.steps_from_base = 0;
-    document_.reproducible = true;
     positions_changed();
-    recipe_dirty_ = true;
-    restarted_recipe_.clear();
-    restarted_shape_.clear();
+    start_from_base();
     record("noise", std::move(before));
 }
 

@@ -201,6 +201,8 @@ private:
     DisplayGeometry display_;      // the solver's newest display geometry
     std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown
     void close_run();
+    //! The current shape is the base: the step count and the solver start again from it.
+    void start_from_base();
     Mesh base_mesh() const;
 
     Document document_;
