@@ -75,10 +75,10 @@ std::optional<Index> shared(const std::vector<Index>& a, const std::vector<Index
     return std::nullopt;
 }
 
-Vec3 position(const Mesh& mesh, Index v)
+Vec3 position(std::span<const Scalar> positions, Index v)
 {
     const size_t k = 3 * static_cast<size_t>(v);
-    return {mesh.positions[k], mesh.positions[k + 1], mesh.positions[k + 2]};
+    return {positions[k], positions[k + 1], positions[k + 2]};
 }
 
 // Per-face normals of the merged faces of `kind` when a set gives its own: the set's, else
@@ -193,7 +193,7 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& s
 }
 
 Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
-                    const Mesh& mesh, int iterations)
+                    const Mesh& mesh, std::span<const Scalar> positions, int iterations)
 {
     Recipe r;
     r.iterations = iterations;
@@ -212,8 +212,9 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         if (std::any_of(from.begin(), from.end(),
                         [](const ConstraintSet* s) { return !s->targets.empty(); }))
             for (size_t k = 0; k < hard.vertices.size(); ++k)
-                hard.targets.push_back(from[k]->targets.empty() ? position(mesh, hard.vertices[k])
-                                                                : from[k]->targets[at[k]]);
+                hard.targets.push_back(from[k]->targets.empty()
+                                           ? position(positions, hard.vertices[k])
+                                           : from[k]->targets[at[k]]);
         r.hard = std::move(hard);
     }
     if (any_of_kind(sets, ConstraintKind::Anchor))
@@ -224,7 +225,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
                                          settings.centroid_mu,
                                          {},
                                          settings.denominator};
-    const auto input_normal = [&](Index f) { return face_normal(mesh, mesh.positions, f); };
+    const auto input_normal = [&](Index f) { return face_normal(mesh, positions, f); };
     if (any_of_kind(sets, ConstraintKind::Normal))
     {
         NormalConstraints n;
@@ -251,6 +252,21 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
             r.joint = Joint{settings.gamma};
     }
     return r;
+}
+
+bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_settings,
+              const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
+              bool ignoring_pin_targets)
+{
+    SolverSettings x = a_settings, y = b_settings;
+    x.iterations_per_frame = y.iterations_per_frame = 0; // the pace, not the recipe
+    if (!(x == y) || a.size() != b.size())
+        return false;
+    for (size_t k = 0; k < a.size(); ++k)
+        if (a[k].kind != b[k].kind || a[k].vertices != b[k].vertices || a[k].faces != b[k].faces ||
+            a[k].normals != b[k].normals || (!ignoring_pin_targets && a[k].targets != b[k].targets))
+            return false;
+    return true;
 }
 
 ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)

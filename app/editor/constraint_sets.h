@@ -4,6 +4,7 @@
 
 #include <array>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -82,11 +83,21 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& s
                                              const SolverSettings& settings);
 
 //! \brief The core recipe of the sets and settings, running `iterations` steps, in the
-//! mesh's (file) numbering; `mesh` supplies the input normals of faces whose set has
-//! custom normals mixed with others.
+//! mesh's numbering; `positions` (3 #V, the base shape) place the pins without targets
+//! of a set list where others have targets, and give the input normals of faces whose set
+//! has custom normals mixed with others.
 //! \pre constraint_problems(sets, settings) is empty.
 Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
-                    const Mesh& mesh, int iterations);
+                    const Mesh& mesh, std::span<const Scalar> positions, int iterations);
+
+//! \brief Whether two lists of sets with their settings make the same solver run: the
+//! same kinds, elements, normals (and pin targets unless `ignoring_pin_targets`) in the
+//! same order and the same settings but the steps per frame. Names, colours and
+//! visibility do not count. What decides whether the editor's solver must precompute
+//! again, or only move its pins, or nothing.
+bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_settings,
+              const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
+              bool ignoring_pin_targets);
 
 //! The sets and settings of a recipe (Import recipe): one set per section, named by kind.
 struct ImportedRecipe

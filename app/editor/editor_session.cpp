@@ -359,8 +359,7 @@ void EditorSession::after_history(unsigned parts)
     {
         positions_changed();
         recipe_dirty_ = true; // the solver starts again from the restored shape
-        restarted_recipe_.clear();
-        restarted_shape_.clear();
+        restarted_.reset();
     }
 }
 
@@ -433,8 +432,7 @@ bool EditorSession::recover()
     positions_changed();
     selection_changed();
     sets_changed();
-    restarted_recipe_.clear();
-    restarted_shape_.clear();
+    restarted_.reset();
     recipe_dirty_ = true;
     ++edits_;
     state_.message = "recovered the session saved at " + info->saved_at;
@@ -651,7 +649,8 @@ void EditorSession::set_solver_settings(const SolverSettings& settings, bool mer
 
 Recipe EditorSession::current_recipe() const
 {
-    return build_recipe(document_.sets, document_.solver, base_mesh(), document_.steps_from_base);
+    return build_recipe(document_.sets, document_.solver, document_.mesh, document_.base_positions,
+                        document_.steps_from_base);
 }
 
 Recipe EditorSession::file_recipe() const
@@ -689,7 +688,7 @@ bool EditorSession::import_recipe(const std::string& path)
     try
     {
         const Recipe recipe = read_recipe(path);
-        check_recipe(recipe, base_mesh()); // the file's indices named in messages
+        check_recipe(recipe, document_.mesh); // the file's indices named in messages
         const Recipe internal =
             renumber_recipe(recipe, document_.order.vertex_index, document_.order.face_index);
         ImportedRecipe imported = sets_from_recipe(internal, document_.mesh);
@@ -801,8 +800,7 @@ void EditorSession::start_from_base()
     document_.steps_from_base = 0;
     document_.reproducible = true;
     recipe_dirty_ = true;
-    restarted_recipe_.clear();
-    restarted_shape_.clear();
+    restarted_.reset();
 }
 
 void EditorSession::add_noise(Scalar sigma, std::uint64_t seed)
@@ -848,43 +846,48 @@ void EditorSession::update()
         if (!problems_.empty())
         {
             solver_.clear();
-            restarted_recipe_.clear();
-            restarted_shape_.clear();
+            restarted_.reset();
         }
         else
         {
-            const Mesh base = base_mesh();
-            const Recipe recipe = build_recipe(document_.sets, document_.solver, base, 0);
-            const std::string json = recipe_to_json(recipe).dump();
-            Recipe shape = recipe; // the recipe but for where the pins go
-            if (shape.hard)
-                shape.hard->targets.clear();
-            const std::string shape_json = recipe_to_json(shape).dump();
-            if (json != restarted_recipe_ && shape_json == restarted_shape_ && recipe.hard &&
-                !recipe.hard->targets.empty())
+            const std::vector<ConstraintSet>& sets = document_.sets;
+            const SolverSettings& settings = document_.solver;
+            if (restarted_ && same_run(sets, settings, restarted_->sets, restarted_->solver, false))
+            {
+                // Names, colours, visibility or the pace changed: nothing for the solver.
+            }
+            else if (restarted_ &&
+                     same_run(sets, settings, restarted_->sets, restarted_->solver, true))
             {
                 // Only the pins moved: new right-hand sides, the run goes on.
+                const Recipe recipe =
+                    build_recipe(sets, settings, document_.mesh, document_.base_positions, 0);
                 std::vector<Scalar> targets;
                 for (const Vec3& t : recipe.hard->targets)
                     targets.insert(targets.end(), t.begin(), t.end());
+                if (targets.empty()) // no set has targets any more: the pins' base places
+                    for (const Index v : recipe.hard->vertices)
+                        for (size_t a = 0; a < 3; ++a)
+                            targets.push_back(
+                                document_.base_positions[3 * static_cast<size_t>(v) + a]);
                 solver_.move_hard_targets(targets);
                 if (document_.steps_from_base > 0)
                     document_.reproducible = false;
-                restarted_recipe_ = json;
+                restarted_ = RunInputs{sets, settings};
             }
-            else if (json != restarted_recipe_)
+            else
             {
                 // From the base (the recipe's input shape), starting at the current positions.
                 const bool at_base = document_.steps_from_base == 0;
-                solver_.restart(base, document_.order, recipe,
-                                at_base ? std::vector<Scalar>{} : document_.mesh.positions,
-                                document_.draw_data.vertex_face_offsets,
-                                document_.draw_data.vertex_faces);
+                solver_.restart(
+                    base_mesh(), document_.order,
+                    build_recipe(sets, settings, document_.mesh, document_.base_positions, 0),
+                    at_base ? std::vector<Scalar>{} : document_.mesh.positions,
+                    document_.draw_data.vertex_face_offsets, document_.draw_data.vertex_faces);
                 if (!at_base)
                     document_.reproducible = false;
                 steps_at_restart_ = document_.steps_from_base;
-                restarted_recipe_ = json;
-                restarted_shape_ = shape_json;
+                restarted_ = RunInputs{sets, settings};
                 if (run_open_)
                     solver_.set_playing(true);
             }
@@ -1035,8 +1038,7 @@ void EditorSession::reset_for_document()
     run_open_ = false;
     run_before_.reset();
     solver_.clear();
-    restarted_recipe_.clear();
-    restarted_shape_.clear();
+    restarted_.reset();
     recipe_dirty_ = true;
     problems_ = constraint_problems(document_.sets, document_.solver);
     border_ = region_border(document_);

@@ -203,6 +203,7 @@ private:
     void close_run();
     //! The current shape is the base: the step count and the solver start again from it.
     void start_from_base();
+    //! The base shape as a mesh, for the solver's restarts (a copy: the solver keeps it).
     Mesh base_mesh() const;
 
     Document document_;
@@ -220,9 +221,14 @@ private:
     std::optional<EditState> step_before_; // the state when the current step began
     LiveSolver solver_;
     std::vector<std::string> problems_;
-    bool recipe_dirty_ = true;           // the sets or settings changed since the last restart
-    std::string restarted_recipe_;       // the recipe of the last restart, as JSON
-    std::string restarted_shape_;        // the same without the hard targets
+    bool recipe_dirty_ = true; // the sets or settings changed since the last restart
+    //! The sets and settings of the solver's last restart (none: restart at the next update).
+    struct RunInputs
+    {
+        std::vector<ConstraintSet> sets;
+        SolverSettings solver;
+    };
+    std::optional<RunInputs> restarted_;
     std::optional<size_t> dragged_pins_; // the pin set the MovePins tool drags
     double dragged_depth_ = 0;           // its grabbed glyph's window depth
     glm::dvec3 dragged_from_{0.0};       // the grabbed point, in the world

@@ -314,6 +314,13 @@ void LiveSolver::worker()
             try
             {
                 check_recipe(r.recipe, r.base);
+                // Pins without targets hold their place in the base shape, as the recipe
+                // says, wherever a run before put them.
+                if (!r.start.empty() && r.recipe.hard && r.recipe.hard->targets.empty())
+                    for (const Index v : r.recipe.hard->vertices)
+                        for (size_t a = 0; a < 3; ++a)
+                            r.start[3 * static_cast<size_t>(v) + a] =
+                                r.base.positions[3 * static_cast<size_t>(v) + a];
                 run =
                     std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe);
                 if (!r.start.empty())

@@ -216,6 +216,38 @@ TEST_SUITE("Live solving")
         CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
     }
 
+    TEST_CASE("what does not change the recipe restarts nothing; undoing a pin move puts pins back")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(150, 100, 175, 125);
+        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
+        s.step(1);
+        const int restarts = s.solver_status().restarts;
+        SolverSettings pace = s.document().solver;
+        pace.iterations_per_frame = 7; // not part of the recipe
+        s.set_solver_settings(pace, false);
+        s.rename_set(0, "feet");
+        s.set_color(0, {0, 1, 0});
+        s.set_visible(0, false);
+        s.step(1);
+        CHECK(s.solver_status().restarts == restarts);
+        // Moved pins: right-hand sides only; undone: the pins go back to their base places.
+        s.move_pins(0, {0.0, 0.01, 0.0});
+        s.step(1);
+        CHECK(s.solver_status().restarts == restarts);
+        REQUIRE(s.undo()); // the step
+        REQUIRE(s.undo()); // the move
+        CHECK(s.document().sets[0].targets.empty());
+        s.step(1);
+        const ConstraintSet& pins = s.document().sets[0];
+        for (const Index v : pins.vertices)
+            for (size_t a = 0; a < 3; ++a)
+                CHECK(s.document().mesh.positions[3 * static_cast<size_t>(v) + a] ==
+                      s.document().base_positions[3 * static_cast<size_t>(v) + a]);
+    }
+
     TEST_CASE("a normal set's arrows dragged turn its direction like a trackball")
     {
         const fs::path dir = test::temp_dir();
