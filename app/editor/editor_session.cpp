@@ -10,7 +10,6 @@
 
 #include <glm/gtc/quaternion.hpp>
 
-#include "app/editor/heat_map.h"
 #include "app/tools/brush_tool.h"
 #include "app/tools/click_tool.h"
 #include "app/tools/lasso_tool.h"
@@ -381,7 +380,9 @@ double steady_seconds()
 
 void EditorSession::autosave(double interval_s)
 {
-    if (recovery_root_.empty() || edits_ == autosaved_edits_)
+    // Not while playing: the run's start is saved, and writing the positions of a large
+    // mesh every few seconds would stall the frames; the end of the run is saved after it.
+    if (recovery_root_.empty() || edits_ == autosaved_edits_ || run_open_)
         return;
     const double now = steady_seconds();
     if (interval_s > 0 && now - last_autosave_ < interval_s)
@@ -900,15 +901,11 @@ void EditorSession::update()
     {
         std::swap(incoming_, document_.mesh.positions);
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
-        // The solver's thread computed the normals: the interface only uploads them.
-        if (display_.positions.size() == document_.mesh.positions.size())
-            geometry_changed(true);
-        else
-            positions_changed();
+        geometry_changed(true); // the solver's thread computed the normals: only uploads here
     }
     if (state_.heat_map && solver_.take_heat(heat_))
     {
-        renderer_.set_vertex_colors(heat_colors(heat_));
+        renderer_.set_vertex_colors(heat_);
         state_.display.vertex_colors = true;
     }
     if (run_open_ && !solver_.status().playing && solver_.status().ready)
@@ -1075,7 +1072,11 @@ void EditorSession::prepare_ui()
         p.y += view_.y;
     }
     state_.solver = solver_.status();
-    state_.energies = solver_.energies();
+    if (state_.solver.energy_version != shown_energy_version_) // the curve, once per change
+    {
+        state_.energies = solver_.energies();
+        shown_energy_version_ = state_.solver.energy_version;
+    }
     state_.problems = problems_;
     state_.playing = run_open_;
     HistoryStatus& h = state_.history;

@@ -242,7 +242,8 @@ private:
     bool run_open_ = false;    // play() began a run not yet recorded
     std::optional<EditState> run_before_;
     std::uint64_t geometry_ = 0;
-    std::vector<Scalar> heat_; // the newest shares of the heat map's term
+    std::vector<float> heat_;                                // the newest heat-map colours
+    std::uint64_t shown_energy_version_ = ~std::uint64_t(0); // the curve in state_.energies
     std::string recovery_root_ = recovery_root();
     std::uint64_t edits_ = 0, autosaved_edits_ = 0; // changes so far, and at the last autosave
     double last_autosave_ = 0;                      // seconds on the steady clock

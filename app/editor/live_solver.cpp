@@ -5,6 +5,7 @@
 #include <chrono>
 #include <utility>
 
+#include "app/editor/heat_map.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/solver/solver.h"
 
@@ -47,6 +48,7 @@ void LiveSolver::restart(const Mesh& base, const LocalityOrder& order, const Rec
         status_.error.clear();
         status_.steps = 0;
         energies_.clear();
+        ++status_.energy_version;
         fresh_ = false;
     }
     wake_.notify_all();
@@ -60,8 +62,10 @@ void LiveSolver::clear()
     done_.wait(lock, [&] { return !busy_; });
     run_.reset();
     const int restarts = status_.restarts;
+    const std::uint64_t version = status_.energy_version;
     status_ = {};
     status_.restarts = restarts;
+    status_.energy_version = version + 1; // the curve is gone
     energies_.clear();
     fresh_ = false;
 }
@@ -127,8 +131,6 @@ void LiveSolver::wait_idle()
 
 void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
 {
-    if (vertex_face_offsets_.empty())
-        return;
     DisplayGeometry& g = display_back_;
     g.positions.resize(x.size());
     g.normals.resize(x.size());
@@ -152,19 +154,6 @@ bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry)
     return true;
 }
 
-bool LiveSolver::take(std::vector<Scalar>& positions)
-{
-    {
-        std::lock_guard lock(mutex_);
-        if (!fresh_)
-            return false;
-        std::swap(positions, published_);
-        fresh_ = false;
-    }
-    wake_.notify_all(); // a playing worker waits for this
-    return true;
-}
-
 void LiveSolver::set_heat(std::optional<EnergyTerm> term)
 {
     {
@@ -176,7 +165,7 @@ void LiveSolver::set_heat(std::optional<EnergyTerm> term)
     wake_.notify_all();
 }
 
-bool LiveSolver::take_heat(std::vector<Scalar>& heat)
+bool LiveSolver::take_heat(std::vector<float>& heat)
 {
     std::lock_guard lock(mutex_);
     if (!heat_fresh_)
@@ -190,8 +179,9 @@ void LiveSolver::compute_heat(std::optional<EnergyTerm> term)
 {
     if (!term || !run_)
         return;
-    heat_back_.resize(run_->session().positions().size() / 3);
-    run_->session().vertex_energy(run_->session().positions(), *term, heat_back_);
+    shares_.resize(run_->session().positions().size() / 3);
+    run_->session().vertex_energy(run_->session().positions(), *term, shares_);
+    heat_back_ = heat_colors(shares_); // the colours too: the interface only uploads them
 }
 
 SolverStatus LiveSolver::status() const
@@ -246,6 +236,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         if (converged_now || (frames_left_ > 0 && --frames_left_ == 0))
             status_.playing = false;
         energies_.push_back({status_.steps, energy});
+        ++status_.energy_version;
         if (energies_.size() > kMaxEnergySamples) // keep the whole curve, at half the detail
         {
             size_t kept = 0;
@@ -359,6 +350,7 @@ void LiveSolver::worker()
                 {
                     heat_dirty_ = heat_term_.has_value();
                     energies_ = {{0, energy}};
+                    ++status_.energy_version;
                     published_ = std::move(published);
                     std::swap(display_back_, display_published_);
                     fresh_ = true; // the pins may have moved to their targets

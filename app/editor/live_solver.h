@@ -33,14 +33,15 @@ struct DisplayGeometry
 //! What the solver has done, for the solver panel.
 struct SolverStatus
 {
-    bool ready = false;       //!< precomputed for the current recipe
-    bool playing = false;     //!< stepping on the worker thread
-    bool converged = false;   //!< stopped by the recipe's tolerance
-    int steps = 0;            //!< steps of the current run
-    std::string error;        //!< why the last restart failed (the recipe did not fit)
-    double step_ms = 0;       //!< the last frame's steps, on the worker
-    double precompute_ms = 0; //!< the last precomputation
-    int restarts = 0;         //!< precomputations so far
+    bool ready = false;               //!< precomputed for the current recipe
+    bool playing = false;             //!< stepping on the worker thread
+    bool converged = false;           //!< stopped by the recipe's tolerance
+    int steps = 0;                    //!< steps of the current run
+    std::string error;                //!< why the last restart failed (the recipe did not fit)
+    double step_ms = 0;               //!< the last frame's steps, on the worker
+    double precompute_ms = 0;         //!< the last precomputation
+    int restarts = 0;                 //!< precomputations so far
+    std::uint64_t energy_version = 0; //!< changes of the energy curve so far
 };
 
 //! \brief The editor's solver: a LocalityRun (the command line's pipeline) of the
@@ -66,8 +67,8 @@ public:
     //! `vertex_face_offsets` and `vertex_faces` (the draw data's faces around each vertex)
     //! let the solver's thread compute the display geometry of each frame.
     void restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
-                 std::vector<Scalar> start, std::vector<Index> vertex_face_offsets = {},
-                 std::vector<Index> vertex_faces = {});
+                 std::vector<Scalar> start, std::vector<Index> vertex_face_offsets,
+                 std::vector<Index> vertex_faces);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
 
@@ -90,12 +91,11 @@ public:
     //! \brief Also publish each vertex's share of `term` with every frame (a heat map;
     //! nullopt: none). Computed on the worker, at once for the current positions.
     void set_heat(std::optional<EnergyTerm> term);
-    //! The newest shares not yet taken (file order, #V), swapped into `heat`.
-    bool take_heat(std::vector<Scalar>& heat);
-    //! \brief The newest positions not yet taken, swapped into `positions` (file order);
-    //! false when there are none. Called once per frame by the interface.
-    bool take(std::vector<Scalar>& positions);
-    //! take(), with the frame's display geometry swapped into `geometry` (when computed).
+    //! The newest heat-map colours not yet taken (heat_colors of the shares), into `heat`.
+    bool take_heat(std::vector<float>& heat);
+    //! \brief The newest positions not yet taken, swapped into `positions`, with the
+    //! frame's display geometry into `geometry`; false when there are none. Called once per
+    //! frame by the interface.
     bool take(std::vector<Scalar>& positions, DisplayGeometry& geometry);
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
@@ -134,11 +134,12 @@ private:
     bool fresh_ = false; // published_ not yet taken
     std::vector<EnergySample> energies_;
     std::optional<EnergyTerm> heat_term_;
-    bool heat_dirty_ = false;            // shares wanted for the current positions
-    std::vector<Scalar> heat_published_; // file order, newest
-    std::vector<Scalar> heat_back_;      // being written (while busy_)
+    bool heat_dirty_ = false;           // shares wanted for the current positions
+    std::vector<float> heat_published_; // colours (heat_colors), newest
+    std::vector<float> heat_back_;      // being written (while busy_)
+    std::vector<Scalar> shares_;        // the shares behind heat_back_
     bool heat_fresh_ = false;
-    //! Computes the shares into heat_back_ (outside the lock, while busy_).
+    //! The shares and their colours into heat_back_ (outside the lock, while busy_).
     void compute_heat(std::optional<EnergyTerm> term);
     std::thread thread_; // last: started once everything else exists
 };

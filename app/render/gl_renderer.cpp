@@ -44,6 +44,22 @@ void upload(GLenum target, GLuint buffer, std::span<const T> data, int& allocati
                  data.empty() ? nullptr : data.data(), GL_DYNAMIC_DRAW);
 }
 
+// Data that changes every frame (glyphs, heat-map colours) of a size that rarely does:
+// rewritten in place, reallocated (and counted) only when its size changes.
+template <class T>
+void update(GLenum target, GLuint buffer, std::span<const T> data, size_t& bytes, int& allocations)
+{
+    if (data.size_bytes() != bytes)
+    {
+        upload<T>(target, buffer, data, allocations);
+        bytes = data.size_bytes();
+        return;
+    }
+    glBindBuffer(target, buffer);
+    if (bytes > 0)
+        glBufferSubData(target, 0, static_cast<GLsizeiptr>(bytes), data.data());
+}
+
 void set_matrices(const gl::Program& p, const glm::mat4& view, const glm::mat4& projection)
 {
     glUniformMatrix4fv(p["u_view"], 1, GL_FALSE, glm::value_ptr(view));
@@ -274,7 +290,7 @@ void GlRenderer::set_vertex_colors(std::span<const float> rgb)
     if (has_colors_ && rgb.size() != positions_.size())
         throw RenderError("GlRenderer::set_vertex_colors: " + std::to_string(rgb.size()) +
                           " values for " + std::to_string(positions_.size() / 3) + " vertices");
-    upload<float>(GL_ARRAY_BUFFER, gl_->colors, rgb, buffer_allocations_);
+    update<float>(GL_ARRAY_BUFFER, gl_->colors, rgb, color_bytes_, buffer_allocations_);
     check("set_vertex_colors");
 }
 
@@ -314,7 +330,7 @@ void GlRenderer::set_glyphs(std::span<const GlyphGroup> groups)
         if (n > 0)
             glyphs_.push_back({g.shape, g.color, g.size_px, first, static_cast<int>(n / 3)});
     }
-    upload<float>(GL_ARRAY_BUFFER, gl_->glyph_points, points, buffer_allocations_);
+    update<float>(GL_ARRAY_BUFFER, gl_->glyph_points, points, glyph_bytes_, buffer_allocations_);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     check("set_glyphs");
 }

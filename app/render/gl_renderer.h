@@ -62,6 +62,7 @@ private:
     };
     std::vector<GlyphRange> glyphs_;
     int buffer_allocations_ = 0;
+    size_t color_bytes_ = 0, glyph_bytes_ = 0; // what the colour and glyph buffers hold
 };
 
 } // namespace meshfair::app

@@ -37,19 +37,6 @@ LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe
     session_.adopt_positions(std::move(mesh_.positions));
 }
 
-void LocalityRun::file_positions(std::span<Scalar> out) const
-{
-    positions_to_file_order(session_.positions(), order_, out);
-}
-
-void LocalityRun::file_vertex_energy(EnergyTerm term, std::span<Scalar> out) const
-{
-    std::vector<Scalar> internal(out.size());
-    session_.vertex_energy(session_.positions(), term, internal);
-    for (size_t k = 0; k < internal.size(); ++k)
-        out[static_cast<size_t>(order_.vertex_order[k])] = internal[k];
-}
-
 LocalityRun::Released LocalityRun::release() &&
 {
     mesh_.positions = session_.release_positions();

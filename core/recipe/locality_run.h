@@ -43,10 +43,6 @@ public:
     const Topology& topology() const { return topology_; }
     const LocalityOrder& order() const { return order_; }
 
-    //! The current positions in the file's vertex order (3 #V).
-    void file_positions(std::span<Scalar> out) const;
-    //! Each vertex's share of `term` (Session::vertex_energy) in the file's order (#V).
-    void file_vertex_energy(EnergyTerm term, std::span<Scalar> out) const;
     //! \brief Ends the run: the renumbered mesh with the current positions, and its order.
     //! Renumber it back with file_order_mesh once the run is gone, so that the solver's
     //! arrays are freed before the file-order copy is made.
