@@ -894,10 +894,7 @@ void EditorSession::update()
             }
         }
     }
-    // A restart publishes the positions it starts from (pins moved to their targets), most
-    // often the same as shown: those change nothing, not even the modified flag.
-    if (solver_.take(incoming_, display_) &&
-        !(solver_.status().steps == 0 && incoming_ == document_.mesh.positions))
+    if (solver_.take(incoming_, display_))
     {
         std::swap(incoming_, document_.mesh.positions);
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;

@@ -302,23 +302,32 @@ void LiveSolver::worker()
             std::string error;
             TermEnergies energy;
             std::vector<Scalar> published;
+            bool moved = false; // a pin moved: the start positions differ from those shown
             try
             {
                 check_recipe(r.recipe, r.base);
-                // Pins without targets hold their place in the base shape, as the recipe
-                // says, wherever a run before put them.
-                if (!r.start.empty() && r.recipe.hard && r.recipe.hard->targets.empty())
-                    for (const Index v : r.recipe.hard->vertices)
+                // The pins go where the recipe puts them: their targets, or without targets
+                // their place in the base shape, wherever a run before put them. Only if one
+                // of them moves are the start positions published: otherwise the interface
+                // already shows them, and taking them would change nothing.
+                const std::vector<Scalar>& shown = r.start.empty() ? r.base.positions : r.start;
+                if (r.recipe.hard)
+                    for (size_t k = 0; k < r.recipe.hard->vertices.size(); ++k)
                         for (size_t a = 0; a < 3; ++a)
-                            r.start[3 * static_cast<size_t>(v) + a] =
-                                r.base.positions[3 * static_cast<size_t>(v) + a];
+                        {
+                            const size_t i =
+                                3 * static_cast<size_t>(r.recipe.hard->vertices[k]) + a;
+                            const Scalar place = r.recipe.hard->targets.empty()
+                                                     ? r.base.positions[i]
+                                                     : r.recipe.hard->targets[k][a];
+                            moved = moved || shown[i] != place;
+                            if (!r.start.empty())
+                                r.start[i] = place;
+                        }
                 run =
                     std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe);
                 if (!r.start.empty())
-                {
-                    run->session().apply_hard_targets(r.start); // pins where the recipe puts them
                     run->session().set_positions(r.start);
-                }
                 energy = run->energy();
                 published.assign(run->session().positions().begin(),
                                  run->session().positions().end());
@@ -353,7 +362,7 @@ void LiveSolver::worker()
                     ++status_.energy_version;
                     published_ = std::move(published);
                     std::swap(display_back_, display_published_);
-                    fresh_ = true; // the pins may have moved to their targets
+                    fresh_ = moved;
                 }
             }
             done_.notify_all();
