@@ -89,6 +89,15 @@ bool same(const State& a, const State& b)
            a.positions == b.positions && a.base == b.base;
 }
 
+// Exports the session's recipe into `dir` and runs it through meshfair-cli on the mesh:
+// true when the command line gives the editor's positions bit for bit.
+bool cli_reproduces(EditorSession& s, const fs::path& mesh, const fs::path& dir)
+{
+    const fs::path recipe = dir / "recipe.json";
+    REQUIRE(s.export_recipe(recipe.string()));
+    return cli_positions(mesh, recipe) == file_order_mesh(s.document()).positions;
+}
+
 } // namespace
 
 TEST_SUITE("Live solving")
@@ -159,8 +168,7 @@ TEST_SUITE("Live solving")
         CHECK(s.document().mesh.positions == s.document().base_positions);
         // Stepping again from there gives the same bits as the first time.
         s.step(6);
-        REQUIRE(s.export_recipe(recipe.string()));
-        CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
+        CHECK(cli_reproduces(s, b.path, dir));
     }
 
     TEST_CASE("pins dragged in the view plane move their targets without a precomputation")
@@ -186,7 +194,6 @@ TEST_SUITE("Live solving")
         s.mouse_move(at.x + 30, at.y);
         s.mouse_release(MouseButton::Left, at.x + 30, at.y);
         s.update();
-        s.solver_status(); // the drag's targets reached the solver
         const ConstraintSet& pins = s.document().sets[0];
         REQUIRE(pins.targets.size() == pins.vertices.size());
         // The grabbed point moved with the cursor, in the view plane (same depth).
@@ -211,9 +218,7 @@ TEST_SUITE("Live solving")
         s.reset_shape();
         s.step(4);
         CHECK(s.document().reproducible);
-        const fs::path recipe = dir / "recipe.json";
-        REQUIRE(s.export_recipe(recipe.string()));
-        CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
+        CHECK(cli_reproduces(s, b.path, dir));
     }
 
     TEST_CASE("what does not change the recipe restarts nothing; undoing a pin move puts pins back")
@@ -295,9 +300,7 @@ TEST_SUITE("Live solving")
         s.reset_shape();
         s.step(6);
         CHECK(s.document().reproducible);
-        const fs::path recipe = dir / "recipe.json";
-        REQUIRE(s.export_recipe(recipe.string()));
-        CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
+        CHECK(cli_reproduces(s, b.path, dir));
         // Apply makes the shape the new base: 0 steps from it.
         s.apply_shape();
         CHECK(s.document().steps_from_base == 0);

@@ -12,6 +12,7 @@ if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
+. "$(dirname "$0")/window_support.sh"
 rm -rf "$work"
 mkdir -p "$work"
 export GALLIUM_DRIVER=llvmpipe
@@ -24,12 +25,7 @@ cp "$work/bunny.obj" "$work/loaded.obj"
 log="$work/editor.log"
 "$meshfair" "$work/bunny.obj" --size 1000x700 >"$log" 2>&1 &
 pid=$!
-for _ in $(seq 1 300); do
-    grep -qs "window open" "$log" && break
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.1
-done
-grep -q "window open" "$log" || { echo "FAIL: no first frame"; cat "$log"; exit 1; }
+wait_first_frame "$pid" "$log" session
 window=$(xdotool search --sync --name "MeshFair - bunny.obj" | head -1)
 xdotool windowfocus --sync "$window"
 sleep 0.3
@@ -55,6 +51,10 @@ key shift+p # a pin set of the selected vertices
 key space   # play
 sleep 2
 key space # pause
+# The autosave (every 3 s, not while playing) has written the session's recovery files.
+sleep 3.5
+ls "$XDG_STATE_HOME"/meshfair/recovery/*/state.json >/dev/null 2>&1 ||
+    { echo "FAIL: no recovery files 3.5 s after the run"; exit 1; }
 stamp=$(stat -c %Y.%s "$work/bunny.obj")
 sleep 1.1 # a new modification time
 key ctrl+s
@@ -66,18 +66,7 @@ sleep 1.1
 key ctrl+s
 saved_after "$stamp" || { echo "FAIL: the second Ctrl+S wrote nothing"; cat "$log"; exit 1; }
 key ctrl+q
-for _ in $(seq 1 100); do
-    kill -0 "$pid" 2>/dev/null || break
-    sleep 0.1
-done
-if kill -0 "$pid" 2>/dev/null; then
-    echo "FAIL: still running 10 s after Ctrl+Q (unsaved changes?)"
-    kill "$pid"
-    exit 1
-fi
-rc=0
-wait "$pid" || rc=$?
-[ "$rc" = 0 ] || { echo "FAIL: exit code $rc"; cat "$log"; exit 1; }
+wait_exit "$pid" "$log" session "Ctrl+Q (unsaved changes?)"
 
 # After the run: the pinned vertices kept their lines, all the others moved.
 read -r same moved < <(awk 'FNR == NR { if ($1 == "v") a[++n] = $0; next }

@@ -12,6 +12,7 @@ if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     exec xvfb-run -a -s "-screen 0 1024x768x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4 send_close=$5
+. "$(dirname "$0")/window_support.sh"
 rm -rf "$work"
 mkdir -p "$work"
 export GALLIUM_DRIVER=llvmpipe
@@ -85,17 +86,7 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
     log="$work/$name.log"
     "$meshfair" "$mesh" --size 800x600 >"$log" 2>&1 &
     pid=$!
-    for _ in $(seq 1 300); do
-        grep -qs "window open" "$log" && break
-        kill -0 "$pid" 2>/dev/null || break
-        sleep 0.1
-    done
-    if ! grep -q "window open" "$log"; then
-        echo "FAIL $name: no first frame"
-        cat "$log"
-        kill "$pid" 2>/dev/null || true
-        exit 1
-    fi
+    wait_first_frame "$pid" "$log" "$name"
     sleep 0.5
     shot="$work/$name.png"
     xwd -root -silent | convert xwd:- "$shot"
@@ -115,22 +106,7 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
         how="a close request"
         "$send_close" "$window"
     fi
-    for _ in $(seq 1 100); do
-        kill -0 "$pid" 2>/dev/null || break
-        sleep 0.1
-    done
-    if kill -0 "$pid" 2>/dev/null; then
-        echo "FAIL $name: still running 10 s after $how"
-        kill "$pid"
-        exit 1
-    fi
-    rc=0
-    wait "$pid" || rc=$?
-    if [ "$rc" != 0 ]; then
-        echo "FAIL $name: exit code $rc"
-        cat "$log"
-        exit 1
-    fi
+    wait_exit "$pid" "$log" "$name" "$how"
     if ! grep -qx "$(cd "$(dirname "$mesh")" && pwd)/$name" "$XDG_CONFIG_HOME/meshfair/recent.txt"; then
         echo "FAIL $name: not in the recent files"
         exit 1
