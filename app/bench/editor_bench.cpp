@@ -135,8 +135,8 @@ int main(int argc, char** argv)
     const double y = 0.5 * height;
     // A brush stroke of radius 40 px across the middle of the view, in zigzag.
     const auto stroke = [&](Series& pressed) {
-        session.set_tool(ToolKind::Brush);
-        session.tool_settings().brush_radius_px = 40;
+        session.dispatch(cmd::SetTool{ToolKind::Brush});
+        session.dispatch(cmd::SetBrushRadius{40});
         pressed.ms.push_back(
             timed([&] { session.mouse_press(MouseButton::Left, {}, 0.2 * width, y); }));
         for (int e = 1; e <= events; ++e)
@@ -150,7 +150,7 @@ int main(int argc, char** argv)
     };
     // A rectangle over the left half of the view.
     const auto rectangle = [&](Series& released) {
-        session.set_tool(ToolKind::Rectangle);
+        session.dispatch(cmd::SetTool{ToolKind::Rectangle});
         rect_press.ms.push_back(timed([&] { session.mouse_press(MouseButton::Left, {}, 0, 0); }));
         session.mouse_move(0.5 * width, height - 1);
         released.ms.push_back(
@@ -164,8 +164,9 @@ int main(int argc, char** argv)
             timed([&] { (void)renderer.visibility(session.camera(), session.view_rect()); }));
         for (int kind = 0; kind < 2; ++kind)
         {
-            session.set_elements(kind == 0 ? ElementKind::Vertices : ElementKind::Faces);
-            session.tool_settings().through = false;
+            session.dispatch(
+                cmd::SetElements{kind == 0 ? ElementKind::Vertices : ElementKind::Faces});
+            session.dispatch(cmd::SetThrough{false});
             // A small orbit first: the first press renders the ID buffer, the next reuse it.
             session.camera().orbit(OrbitStyle::Turntable, 0, 0, 2, 0, width, height);
             stroke(press_moved[kind]);
@@ -178,11 +179,11 @@ int main(int argc, char** argv)
             rectangle(rect_release[kind]);
             rectangled = std::max(rectangled, count(kind == 0 ? session.document().selected_vertices
                                                               : session.document().selected_faces));
-            undo.ms.push_back(timed([&] { session.undo(); }));
-            session.redo();
+            undo.ms.push_back(timed([&] { session.dispatch(cmd::Undo{}); }));
+            session.dispatch(cmd::Redo{});
         }
-        session.set_elements(ElementKind::Vertices);
-        session.tool_settings().through = true;
+        session.dispatch(cmd::SetElements{ElementKind::Vertices});
+        session.dispatch(cmd::SetThrough{true});
         rectangle(rect_through);
         through = std::max(through, count(session.document().selected_vertices));
     }

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include "app/editor/constraint_sets.h"
@@ -14,6 +15,19 @@
 #include "core/topology/vertex_order.h"
 
 namespace meshfair::app {
+
+//! \brief How many times each part of a document changed: what the renderer, the solver,
+//! the glyphs and the autosave compare with what they last saw, instead of being told of
+//! each change. Bumped by EditorSession::dispatch for what a command edits, by undo and redo
+//! for what they restore, and by the solver for the positions it publishes.
+struct DocumentVersions
+{
+    std::uint64_t selection = 0, sets = 0, settings = 0, positions = 0, base = 0;
+    //! Bumps the parts of `parts` (EditPart flags of history.h).
+    void bump(unsigned parts);
+    //! Every change so far (the autosave's "something changed").
+    std::uint64_t total() const { return selection + sets + settings + positions + base; }
+};
 
 //! \brief The mesh the editor shows, with what it derives from it once per connectivity:
 //! the topology (edges, corners), the draw data and the bounding box. The editor owns
@@ -44,6 +58,7 @@ struct Document
     std::vector<ConstraintSet> sets; //!< the recipe's constraint sets
     SolverSettings solver;           //!< the recipe's weights and iteration settings
     bool modified = false;           //!< changed since it was read or saved
+    DocumentVersions versions;
 };
 
 //! \brief Reads a mesh file into a document.

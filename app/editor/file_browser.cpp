@@ -51,9 +51,11 @@ std::vector<fs::directory_entry> FileBrowser::listing(const fs::path& dir, Files
     return folders;
 }
 
-void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file_name, Files files)
+void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file_name, Files files,
+                       std::string title)
 {
     mode_ = mode;
+    title_ = title.empty() ? (mode == Mode::Open ? "Open mesh" : "Save mesh as") : std::move(title);
     files_ = files;
     std::error_code ec;
     directory_ = fs::is_directory(start, ec) ? start : start.parent_path();
@@ -67,11 +69,22 @@ void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file
     just_opened_ = true;
 }
 
-std::optional<std::string> FileBrowser::draw()
+std::optional<std::string> FileBrowser::draw(WidgetMap* widgets)
 {
     if (!open_)
         return std::nullopt;
-    const char* title = mode_ == Mode::Open ? "Open mesh###file" : "Save mesh as###file";
+    // Where each widget was drawn, for scripts that click and type as a person does.
+    const auto track = [&](const char* name) {
+        if (widgets == nullptr)
+            return;
+        const ImGuiIO& io = ImGui::GetIO();
+        const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+        const double sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0;
+        const double sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0;
+        (*widgets)[std::string("dialog/") + name] = {a.x * sx, a.y * sy, b.x * sx, b.y * sy};
+    };
+    const std::string title_id = title_ + "###file";
+    const char* title = title_id.c_str();
     if (just_opened_)
     {
         ImGui::OpenPopup(title);
@@ -83,6 +96,7 @@ std::optional<std::string> FileBrowser::draw()
         return std::nullopt;
     if (ImGui::Button("Up") && directory_.has_parent_path())
         directory_ = directory_.parent_path();
+    track("Up");
     ImGui::SameLine();
     ImGui::TextUnformatted(directory_.string().c_str());
     ImGui::BeginChild("entries", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 2), true);
@@ -114,14 +128,22 @@ std::optional<std::string> FileBrowser::draw()
     std::array<char, 512> name{};
     std::strncpy(name.data(), file_name_.c_str(), name.size() - 1);
     ImGui::SetNextItemWidth(-160);
-    if (ImGui::InputText("##name", name.data(), name.size()))
-        file_name_ = name.data();
+    if (ImGui::IsWindowAppearing())
+        ImGui::SetKeyboardFocusHere(); // the name field takes the keys at once
+    const bool enter =
+        ImGui::InputText("##name", name.data(), name.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    track("name");
+    file_name_ = name.data();
     ImGui::SameLine();
-    if (ImGui::Button(mode_ == Mode::Open ? "Open" : "Save") && !file_name_.empty())
-        chosen = (directory_ / file_name_).string();
+    if ((ImGui::Button(mode_ == Mode::Open ? "Open" : "Save") || enter) && !file_name_.empty())
+        chosen =
+            (fs::path(file_name_).is_absolute() ? fs::path(file_name_) : directory_ / file_name_)
+                .string();
+    track("OK");
     ImGui::SameLine();
     if (ImGui::Button("Cancel"))
         open_ = false;
+    track("Cancel");
     if (!error_.empty())
         ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", error_.c_str());
     if (chosen)

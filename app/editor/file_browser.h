@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/widget_rect.h"
+
 namespace meshfair::app {
 
 //! \brief A file dialog drawn with Dear ImGui (Debian ships no native dialog library):
@@ -29,11 +31,14 @@ public:
         Recipes //!< .json
     };
 
+    //! Shows the dialog under `title` (empty: "Open mesh" or "Save mesh as").
     void open(Mode mode, const std::filesystem::path& start, const std::string& file_name = {},
-              Files files = Files::Meshes);
+              Files files = Files::Meshes, std::string title = {});
     Files files() const { return files_; }
     bool is_open() const { return open_; }
-    std::optional<std::string> draw();
+    //! Where each widget was drawn, by name ("dialog/name", "dialog/OK", "dialog/Cancel").
+    std::optional<std::string> draw(WidgetMap* widgets = nullptr);
+    const std::string& title() const { return title_; }
 
     //! The entries of `dir` shown to the user: folders (but not hidden ones), then files with
     //! a mesh extension (or .json for recipes), each group sorted by name.
@@ -41,6 +46,7 @@ public:
                                                                  Files files = Files::Meshes);
 
 private:
+    std::string title_;
     Mode mode_ = Mode::Open;
     Files files_ = Files::Meshes;
     bool open_ = false;

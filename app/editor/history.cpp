@@ -181,3 +181,16 @@ void History::clear()
 }
 
 } // namespace meshfair::app
+
+namespace meshfair::app {
+
+void DocumentVersions::bump(unsigned parts)
+{
+    selection += (parts & kSelection) ? 1 : 0;
+    sets += (parts & kSets) ? 1 : 0;
+    settings += (parts & kSettings) ? 1 : 0;
+    positions += (parts & kPositions) ? 1 : 0;
+    base += (parts & kBasePositions) ? 1 : 0;
+}
+
+} // namespace meshfair::app

@@ -21,31 +21,22 @@ OffscreenHost::OffscreenHost(EditorSession& session, int width, int height, bool
 {
     if (ui)
         layer_ = std::make_unique<InterfaceContext>();
+    frame_ = std::make_unique<EditorFrame>(session_, layer_.get());
 }
 
 OffscreenHost::~OffscreenHost() = default;
 
-void OffscreenHost::layout()
+void OffscreenHost::run_frame()
 {
-    if (!layer_)
-    {
-        session_.set_view_rect(ViewRect::whole(width_, height_));
-        return;
-    }
-    // The panels first: they decide the rectangle left to the view.
-    session_.prepare_ui();
-    ui_->prepare_offscreen(*layer_, session_.document(), session_.state(), session_.camera(),
-                           width_, height_);
-    session_.set_view_rect(EditorUi::view_rect(width_, height_, session_.state()));
+    frame_->run({width_, height_, width_, height_}, 1.0 / 60.0);
 }
 
 Image OffscreenHost::frame()
 {
-    layout();
-    session_.update();
-    session_.draw();
+    run_frame();
     if (layer_)
-        layer_->draw();
+        run_frame(); // windows that size themselves to their contents settle in the first
+    frame_->draw();
     return session_.renderer().read_pixels(width_, height_);
 }
 
@@ -73,7 +64,7 @@ void render_screenshot(const ScreenshotRequest& request)
     state.renderer_name = context.renderer_name();
     state.offscreen = true;
     OffscreenHost host(session, request.width, request.height, request.ui);
-    host.layout();
+    host.run_frame();
     if (camera)
         session.camera() = *camera;
     else

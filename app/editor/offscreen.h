@@ -5,31 +5,33 @@
 #include <memory>
 #include <string>
 
+#include "app/editor/editor_frame.h"
 #include "app/editor/script.h"
 #include "app/render/renderer.h"
 
 namespace meshfair::app {
 
-class EditorUi;
 class InterfaceContext;
 
-//! \brief Frames of a session without a window: its view, and the panels when asked for
-//! (laid out first, as they decide the view's rectangle). The context must be current.
+//! \brief Frames of a session without a window, through the same EditorFrame as the
+//! window: its view, and the panels when asked for (laid out first, as they decide the
+//! view's rectangle). The context must be current.
 class OffscreenHost final : public ScriptHost
 {
 public:
     OffscreenHost(EditorSession& session, int width, int height, bool ui);
     ~OffscreenHost() override;
-    void layout() override;
+    void run_frame() override;
+    EditorFrame& frame_driver() override { return *frame_; }
     void screenshot(const std::string& path) override;
-    //! Lays out, updates the session, draws, and returns the frame's pixels.
+    //! Runs a frame, draws it, and returns its pixels.
     Image frame();
 
 private:
     EditorSession& session_;
     int width_, height_;
     std::unique_ptr<InterfaceContext> layer_;
-    std::unique_ptr<EditorUi> ui_ = std::make_unique<EditorUi>();
+    std::unique_ptr<EditorFrame> frame_;
 };
 
 //! What `meshfair --offscreen` renders.

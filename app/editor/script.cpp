@@ -6,7 +6,9 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "app/editor/editor_frame.h"
 #include "app/editor/heat_map.h"
+#include "app/editor/key_map.h"
 #include "core/errors.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
@@ -58,34 +60,92 @@ const std::pair<const char*, StandardView> kViews[] = {
     {"front", StandardView::Front}, {"back", StandardView::Back}, {"right", StandardView::Right},
     {"left", StandardView::Left},   {"top", StandardView::Top},   {"bottom", StandardView::Bottom}};
 
+// The session's settings with the keys an action gives replaced, kept apart: the action
+// is parsed before any is played, its keys merged into the settings of the moment.
+struct SolverChange
+{
+    SolverSettings settings;
+    std::vector<std::string> keys;
+};
+
+InputEvent event(InputEvent::Type type, ScreenPoint p, MouseButton button = MouseButton::Left,
+                 Modifiers mods = {})
+{
+    InputEvent e;
+    e.type = type;
+    e.x = p.x;
+    e.y = p.y;
+    e.button = button;
+    e.mods = mods;
+    return e;
+}
+
+// A drag as a mouse gives it: move there, press, move through the points, release.
+std::vector<InputEvent> drag_events(const std::vector<ScreenPoint>& points, MouseButton button,
+                                    Modifiers mods)
+{
+    std::vector<InputEvent> events{
+        event(InputEvent::Type::MouseMove, points.front()),
+        event(InputEvent::Type::MousePress, points.front(), button, mods)};
+    for (size_t k = 1; k < points.size(); ++k)
+        events.push_back(event(InputEvent::Type::MouseMove, points[k]));
+    events.push_back(event(InputEvent::Type::MouseRelease, points.back(), button, mods));
+    return events;
+}
+
+// UTF-8 text as the characters a keyboard types.
+std::vector<InputEvent> typed(const std::string& text)
+{
+    std::vector<InputEvent> events;
+    for (size_t k = 0; k < text.size();)
+    {
+        const auto c = static_cast<unsigned char>(text[k]);
+        const int length = c < 0x80 ? 1 : c < 0xE0 ? 2 : c < 0xF0 ? 3 : 4;
+        unsigned code = length == 1 ? c : c & (0x3F >> (length - 1));
+        for (int i = 1; i < length && k + static_cast<size_t>(i) < text.size(); ++i)
+            code =
+                (code << 6) | (static_cast<unsigned char>(text[k + static_cast<size_t>(i)]) & 0x3F);
+        InputEvent e;
+        e.type = InputEvent::Type::Char;
+        e.key = static_cast<int>(code);
+        events.push_back(e);
+        k += static_cast<size_t>(length);
+    }
+    return events;
+}
+
 ScriptAction parse_action(const Json& j, const Reader& r)
 {
     ScriptAction a;
     a.where = r.where;
     if (!j.is_object())
         fail(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",          "elements",  "through",
-                                        "brush_radius",  "drag",      "click",
-                                        "scroll",        "select",    "undo",
-                                        "redo",          "view",      "projection",
-                                        "screenshot",    "save_mesh", "create_set",
-                                        "delete_set",    "show_set",  "hide_set",
-                                        "select_set",    "move_pins", "normal_direction",
-                                        "solver",        "step",      "play",
-                                        "reset",         "apply",     "export_recipe",
-                                        "import_recipe", "noise",     "heat_map",
+    static const char* const kinds[] = {"tool",          "elements",     "through",
+                                        "brush_radius",  "drag",         "click",
+                                        "scroll",        "move",         "key",
+                                        "type",          "click_widget", "frames",
+                                        "select",        "undo",         "redo",
+                                        "view",          "projection",   "screenshot",
+                                        "save_mesh",     "create_set",   "delete_set",
+                                        "show_set",      "hide_set",     "select_set",
+                                        "move_pins",     "rename_set",   "normal_direction",
+                                        "solver",        "step",         "play",
+                                        "reset",         "apply",        "export_recipe",
+                                        "import_recipe", "noise",        "heat_map",
                                         "autosave",      "recover"};
-    // Options, and the one action each belongs to.
-    static const std::pair<const char*, const char*> options[] = {{"name", "create_set"},
-                                                                  {"offset", "move_pins"},
-                                                                  {"direction", "normal_direction"},
-                                                                  {"seed", "noise"}};
+    // Options, and the actions each belongs to.
+    static const std::pair<const char*, const char*> options[] = {
+        {"name", "create_set rename_set"},
+        {"offset", "move_pins"},
+        {"direction", "normal_direction"},
+        {"seed", "noise"},
+        {"modifiers", "drag click click_widget"},
+        {"button", "drag"},
+        {"at", "scroll"}};
     std::string kind;
     for (const auto& item : j.items())
     {
         const std::string& key = item.key();
-        if (key == "modifiers" || key == "button" || key == "at")
-            continue;
         if (std::any_of(std::begin(options), std::end(options),
                         [&](const auto& o) { return key == o.first; }))
             continue;
@@ -97,11 +157,27 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     }
     if (kind.empty())
         fail(r.name, r.where, "names no action");
+    for (const auto& [option, owners] : options)
+    {
+        const std::string list = std::string(" ") + owners + " ";
+        if (j.contains(option) && list.find(" " + kind + " ") == std::string::npos)
+        {
+            // "only drag or click takes 'button'"
+            std::string who, word;
+            for (size_t p = 0, q; p < std::string(owners).size(); p = q + 1)
+            {
+                q = std::string(owners).find(' ', p);
+                word = std::string(owners).substr(p, q == std::string::npos ? q : q - p);
+                who += (who.empty() ? "" : q == std::string::npos ? " or " : ", ") + word;
+                if (q == std::string::npos)
+                    break;
+            }
+            r.bad(option, "only " + who + " takes '" + option + "'");
+        }
+    }
     const Json& v = j[kind];
     if (j.contains("modifiers"))
     {
-        if (kind != "drag" && kind != "click")
-            r.bad("modifiers", "only a drag or a click takes modifiers");
         if (!j["modifiers"].is_array())
             r.bad("modifiers", "must be a list of \"shift\", \"ctrl\", \"alt\"");
         for (const Json& m : j["modifiers"])
@@ -117,25 +193,19 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                 r.bad("modifiers", "'" + s + "' is not shift, ctrl or alt");
         }
     }
+    MouseButton button = MouseButton::Left;
     if (j.contains("button"))
     {
-        if (kind != "drag")
-            r.bad("button", "only a drag takes a button");
         const std::string b = r.text(j["button"], "button");
         if (b == "left")
-            a.button = MouseButton::Left;
+            button = MouseButton::Left;
         else if (b == "middle")
-            a.button = MouseButton::Middle;
+            button = MouseButton::Middle;
         else if (b == "right")
-            a.button = MouseButton::Right;
+            button = MouseButton::Right;
         else
             r.bad("button", "'" + b + "' is not left, middle or right");
     }
-    if (j.contains("at") && kind != "scroll")
-        r.bad("at", "only a scroll takes 'at'");
-    for (const auto& [option, owner] : options)
-        if (j.contains(option) && kind != owner)
-            r.bad(option, std::string("only ") + owner + " takes '" + option + "'");
     const auto vector = [&](const char* key) {
         const Json& x = j[key];
         if (!x.is_array() || x.size() != 3)
@@ -148,133 +218,194 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             r.bad(kind, "must be a count from " + std::to_string(lo) + " to " + std::to_string(hi));
         return static_cast<int>(v.get<long long>());
     };
+    const auto command = [&](Command c) { a.commands.push_back(std::move(c)); };
+    using namespace cmd;
 
     if (kind == "tool")
     {
-        a.kind = Kind::Tool;
-        a.text = r.text(v, kind);
-        if (!tool_named(a.text))
-            r.bad(kind, "'" + a.text + "' is not navigate, click, brush, rectangle or lasso");
+        const std::string t = r.text(v, kind);
+        const std::optional<ToolKind> tool = tool_named(t);
+        if (!tool)
+            r.bad(kind, "'" + t +
+                            "' is not navigate, click, brush, rectangle, lasso, move_pins or "
+                            "aim_normals");
+        command(SetTool{*tool});
     }
     else if (kind == "elements")
     {
-        a.kind = Kind::Elements;
-        a.text = r.text(v, kind);
-        if (a.text != "vertices" && a.text != "faces")
+        const std::string e = r.text(v, kind);
+        if (e != "vertices" && e != "faces")
             r.bad(kind, "must be \"vertices\" or \"faces\"");
+        command(SetElements{e == "faces" ? ElementKind::Faces : ElementKind::Vertices});
     }
     else if (kind == "through")
     {
-        a.kind = Kind::Through;
         if (!v.is_boolean())
             r.bad(kind, "must be true or false");
-        a.value = v.get<bool>() ? 1 : 0;
+        command(SetThrough{v.get<bool>()});
     }
     else if (kind == "brush_radius")
-    {
-        a.kind = Kind::BrushRadius;
-        a.value = r.number(v, kind, 1, 1000);
-    }
+        command(SetBrushRadius{r.number(v, kind, 1, 1000)});
     else if (kind == "drag")
     {
-        a.kind = Kind::Drag;
+        a.kind = Kind::Input;
         if (!v.is_array() || v.size() < 2)
             r.bad(kind, "must be a list of at least 2 points [x, y]");
+        std::vector<ScreenPoint> points;
         for (const Json& p : v)
-            a.points.push_back(r.point(p, kind));
+            points.push_back(r.point(p, kind));
+        a.events = drag_events(points, button, a.mods);
     }
     else if (kind == "click")
     {
-        a.kind = Kind::Click;
-        a.points.push_back(r.point(v, kind));
+        a.kind = Kind::Input;
+        const ScreenPoint p = r.point(v, kind);
+        a.events = drag_events({p, p}, MouseButton::Left, a.mods);
+        a.events.erase(a.events.begin() + 2); // no move between the press and the release
+    }
+    else if (kind == "move")
+    {
+        a.kind = Kind::Input;
+        a.events = {event(InputEvent::Type::MouseMove, r.point(v, kind))};
     }
     else if (kind == "scroll")
     {
-        a.kind = Kind::Scroll;
-        a.value = r.number(v, kind, -100, 100);
+        a.kind = Kind::Input;
         if (!j.contains("at"))
             r.bad(kind, "needs 'at': the cursor [x, y]");
-        a.points.push_back(r.point(j["at"], "at"));
+        const ScreenPoint at = r.point(j["at"], "at");
+        InputEvent wheel = event(InputEvent::Type::Scroll, at);
+        wheel.amount = r.number(v, kind, -100, 100);
+        a.events = {event(InputEvent::Type::MouseMove, at), wheel};
+    }
+    else if (kind == "key")
+    {
+        a.kind = Kind::Input;
+        const std::string text = r.text(v, kind);
+        const std::optional<KeyChord> chord = parse_key_chord(text);
+        if (!chord)
+            r.bad(kind, "'" + text + "' is not a key (\"ctrl+z\", \"space\", \"f1\", \"kp_5\")");
+        InputEvent press;
+        press.type = InputEvent::Type::KeyPress;
+        press.key = chord->key;
+        press.mods = chord->mods;
+        InputEvent release = press;
+        release.type = InputEvent::Type::KeyRelease;
+        a.events = {press, release};
+        // A printable key without Ctrl or Alt also types its character, as a keyboard does.
+        if (!chord->mods.ctrl && !chord->mods.alt && chord->key >= key::Space &&
+            chord->key < key::Escape)
+        {
+            char c = static_cast<char>(chord->key);
+            if (c >= 'A' && c <= 'Z' && !chord->mods.shift)
+                c = static_cast<char>(c - 'A' + 'a');
+            a.events.insert(a.events.begin() + 1, typed(std::string(1, c)).front());
+        }
+    }
+    else if (kind == "type")
+    {
+        a.kind = Kind::Input;
+        a.events = typed(r.text(v, kind));
+    }
+    else if (kind == "click_widget")
+    {
+        a.kind = Kind::ClickWidget;
+        a.text = r.text(v, kind);
+        if (a.text.empty())
+            r.bad(kind, "must be a widget's label");
+    }
+    else if (kind == "frames")
+    {
+        a.kind = Kind::Frames;
+        a.count = count(1, 10000);
     }
     else if (kind == "select")
     {
-        a.kind = Kind::Select;
-        a.text = r.text(v, kind);
-        if (!selection_command_named(a.text))
-            r.bad(kind, "'" + a.text +
-                            "' is not all, clear, invert, grow, shrink, connected or boundary");
+        const std::string c = r.text(v, kind);
+        const std::optional<SelectionCommand> sc = selection_command_named(c);
+        if (!sc)
+            r.bad(kind,
+                  "'" + c + "' is not all, clear, invert, grow, shrink, connected or boundary");
+        command(RunSelection{*sc});
     }
     else if (kind == "undo" || kind == "redo")
     {
-        a.kind = kind == "undo" ? Kind::Undo : Kind::Redo;
         if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
             r.bad(kind, "must be a count from 1 to 100000");
-        a.count = static_cast<int>(v.get<long long>());
+        for (long long k = 0; k < v.get<long long>(); ++k)
+            command(kind == "undo" ? Command(Undo{}) : Command(Redo{}));
     }
     else if (kind == "view")
     {
-        a.kind = Kind::View;
-        a.text = r.text(v, kind);
-        bool known = a.text == "all" || a.text == "selection";
-        for (const auto& [view_name, view] : kViews)
-            known = known || a.text == view_name;
-        if (!known)
-            r.bad(kind, "'" + a.text +
-                            "' is not front, back, right, left, top, bottom, all or selection");
+        const std::string name = r.text(v, kind);
+        if (name == "all")
+            command(FrameAll{});
+        else if (name == "selection")
+            command(FrameSelection{});
+        else
+        {
+            for (const auto& [view_name, view] : kViews)
+                if (name == view_name)
+                    command(SetView{view});
+            if (a.commands.empty())
+                r.bad(kind, "'" + name +
+                                "' is not front, back, right, left, top, bottom, all or selection");
+        }
     }
     else if (kind == "projection")
     {
-        a.kind = Kind::Projection;
-        a.text = r.text(v, kind);
-        if (a.text != "perspective" && a.text != "orthographic")
+        const std::string p = r.text(v, kind);
+        if (p != "perspective" && p != "orthographic")
             r.bad(kind, "must be \"perspective\" or \"orthographic\"");
+        command(SetProjection{p == "orthographic" ? Projection::Orthographic
+                                                  : Projection::Perspective});
     }
     else if (kind == "create_set")
     {
-        a.kind = Kind::CreateSet;
-        a.text = r.text(v, kind);
-        if (!kind_named(a.text))
-            r.bad(kind, "'" + a.text +
-                            "' is not region, pin, anchor, centroid, normal, "
-                            "hard_normal or soft_normal");
-        if (j.contains("name"))
-            a.name = r.text(j["name"], "name");
+        const std::string k = r.text(v, kind);
+        if (!kind_named(k))
+            r.bad(kind, "'" + k +
+                            "' is not region, pin, anchor, centroid, normal, hard_normal or "
+                            "soft_normal");
+        command(CreateSet{*kind_named(k), j.contains("name") ? r.text(j["name"], "name") : ""});
     }
-    else if (kind == "delete_set" || kind == "show_set" || kind == "hide_set" ||
-             kind == "select_set" || kind == "move_pins" || kind == "normal_direction")
+    else if (kind == "delete_set")
+        command(DeleteSet{r.text(v, kind)});
+    else if (kind == "show_set" || kind == "hide_set")
+        command(ShowSet{r.text(v, kind), kind == "show_set"});
+    else if (kind == "select_set")
+        command(SelectSet{r.text(v, kind)});
+    else if (kind == "rename_set")
     {
-        a.kind = kind == "delete_set"         ? Kind::DeleteSet
-                 : kind == "select_set"       ? Kind::SelectSet
-                 : kind == "move_pins"        ? Kind::MovePins
-                 : kind == "normal_direction" ? Kind::NormalDirection
-                                              : Kind::ShowSet;
-        a.value = kind == "hide_set" ? 0 : 1;
-        a.name = r.text(v, kind);
-        if (kind == "move_pins")
-        {
-            if (!j.contains("offset"))
-                r.bad(kind, "needs 'offset': [x, y, z]");
-            a.vector = vector("offset");
-        }
-        if (kind == "normal_direction")
-        {
-            if (!j.contains("direction"))
-                r.bad(kind, "needs 'direction': [x, y, z]");
-            a.vector = vector("direction");
-            if (a.vector == Vec3{0, 0, 0})
-                r.bad("direction", "must not be zero");
-        }
+        if (!j.contains("name"))
+            r.bad(kind, "needs 'name': the new name");
+        command(RenameSet{r.text(v, kind), r.text(j["name"], "name")});
+    }
+    else if (kind == "move_pins")
+    {
+        if (!j.contains("offset"))
+            r.bad(kind, "needs 'offset': [x, y, z]");
+        command(MovePins{r.text(v, kind), vector("offset")});
+    }
+    else if (kind == "normal_direction")
+    {
+        if (!j.contains("direction"))
+            r.bad(kind, "needs 'direction': [x, y, z]");
+        const Vec3 d = vector("direction");
+        if (d == Vec3{0, 0, 0})
+            r.bad("direction", "must not be zero");
+        command(SetNormalDirection{r.text(v, kind), d});
     }
     else if (kind == "solver")
     {
-        a.kind = Kind::Solver;
         if (!v.is_object())
             r.bad(kind, "must be an object of solver settings");
-        SolverSettings& s = a.settings;
+        SolverChange change;
+        SolverSettings& s = change.settings;
         for (const auto& [key, value] : v.items())
         {
             const std::string k = "solver." + key;
-            a.keys.push_back(key);
+            change.keys.push_back(key);
             if (key == "lambda")
             {
                 if (value.is_string() && value.get<std::string>() == "optimal")
@@ -324,57 +455,69 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else
                 r.bad(k, "is not a solver setting");
         }
+        // The settings of the moment with these keys: merged when the action is played.
+        a.keys = change.keys;
+        command(SetSolverSettings{change.settings});
     }
-    else if (kind == "step" || kind == "play")
+    else if (kind == "step")
+        command(Step{count(1, 1000000)});
+    else if (kind == "play")
     {
-        a.kind = kind == "step" ? Kind::Step : Kind::Play;
+        a.kind = Kind::Play;
         a.count = count(1, 1000000);
     }
     else if (kind == "heat_map")
     {
-        a.kind = Kind::HeatMap;
-        a.text = r.text(v, kind);
-        if (a.text != "off" && !heat_term_named(a.text))
-            r.bad(kind, "'" + a.text + "' is not off, total, edge, anchor, centroid or normal");
+        const std::string t = r.text(v, kind);
+        if (t != "off" && !heat_term_named(t))
+            r.bad(kind, "'" + t + "' is not off, total, edge, anchor, centroid or normal");
+        command(SetHeatMap{heat_term_named(t)});
+        a.waits_for_heat = true;
     }
     else if (kind == "noise")
     {
-        a.kind = Kind::Noise;
-        a.value = r.number(v, kind, 0, 10);
-        a.count = 1;
+        std::uint64_t seed = 1;
         if (j.contains("seed"))
         {
-            const Json& seed = j["seed"];
-            if (!seed.is_number_integer() || seed.get<long long>() < 0 ||
-                seed.get<long long>() > 2147483647)
+            const Json& s = j["seed"];
+            if (!s.is_number_integer() || s.get<long long>() < 0 || s.get<long long>() > 2147483647)
                 r.bad("seed", "must be an integer from 0 to 2147483647");
-            a.count = static_cast<int>(seed.get<long long>());
+            seed = static_cast<std::uint64_t>(s.get<long long>());
         }
+        command(AddNoise{r.number(v, kind, 0, 10), seed});
     }
     else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover")
     {
-        a.kind = kind == "reset"      ? Kind::Reset
-                 : kind == "apply"    ? Kind::Apply
-                 : kind == "autosave" ? Kind::Autosave
-                                      : Kind::Recover;
         if (!v.is_boolean() || !v.get<bool>())
             r.bad(kind, "must be true");
+        command(kind == "reset"      ? Command(ResetShape{})
+                : kind == "apply"    ? Command(ApplyShape{})
+                : kind == "autosave" ? Command(Autosave{})
+                                     : Command(Recover{}));
     }
     else
     {
-        a.kind = kind == "screenshot"      ? Kind::Screenshot
-                 : kind == "save_mesh"     ? Kind::SaveMesh
-                 : kind == "export_recipe" ? Kind::ExportRecipe
-                                           : Kind::ImportRecipe;
-        a.text = r.text(v, kind);
-        if (a.text.empty())
+        const std::string path = r.text(v, kind);
+        if (path.empty())
             r.bad(kind, "must be a file name");
+        if (kind == "screenshot")
+        {
+            a.kind = Kind::Screenshot;
+            a.text = path;
+        }
+        else if (kind == "save_mesh")
+            command(SaveMesh{path});
+        else if (kind == "export_recipe")
+            command(ExportRecipe{path});
+        else
+            command(ImportRecipe{path});
+        a.writes = kind != "import_recipe";
     }
     return a;
 }
 
 // The session's settings with the keys an action gives replaced.
-SolverSettings merged_settings(const ScriptAction& a, SolverSettings s)
+SolverSettings merged_settings(const SolverChange& a, SolverSettings s)
 {
     const SolverSettings& g = a.settings;
     for (const std::string& key : a.keys)
@@ -412,12 +555,12 @@ SolverSettings merged_settings(const ScriptAction& a, SolverSettings s)
     return s;
 }
 
-// Live solving for `frames` frames of the solver's thread, as the window shows them.
-void play_frames(EditorSession& session, int frames)
+// The frames it takes for queued input to reach the session (one batch a frame).
+void run_until_taken(EditorFrame& frame, ScriptHost& host)
 {
-    session.play(frames); // the solver pauses by itself after them
-    while (session.playing())
-        session.take_frame();
+    while (frame.input().pending())
+        host.run_frame();
+    host.run_frame();
 }
 
 } // namespace
@@ -464,167 +607,73 @@ Script read_script(const std::string& path)
 
 void play_script(const Script& script, EditorSession& session, ScriptHost& host)
 {
-    const auto set_index = [&](const ScriptAction& a) {
-        const std::optional<size_t> k = session.set_named(a.name);
-        if (!k)
-            fail(script.name, a.where, "no set named '" + a.name + "'");
-        return *k;
-    };
-    // Framebuffer pixels to the view's, as the window's cursor() does.
-    auto in_view = [&](const ScreenPoint& p) {
-        const ViewRect& v = session.view_rect();
-        return ScreenPoint{p.x - v.x, p.y - v.y, 0};
-    };
+    EditorFrame& frame = host.frame_driver();
+    host.run_frame(); // the interface laid out: widgets and the view's rectangle known
     for (const ScriptAction& a : script.actions)
     {
-        host.layout();
-        UiRequests r;
         switch (a.kind)
         {
-            case Kind::Tool:
-                r.tool = tool_named(a.text);
-                break;
-            case Kind::Elements:
-                r.elements = a.text == "faces" ? ElementKind::Faces : ElementKind::Vertices;
-                break;
-            case Kind::Through:
-                session.tool_settings().through = a.value != 0;
-                break;
-            case Kind::BrushRadius:
-                session.tool_settings().brush_radius_px = a.value;
-                break;
-            case Kind::Drag:
-            {
-                const ScreenPoint first = in_view(a.points.front());
-                session.mouse_press(a.button, a.mods, first.x, first.y);
-                for (size_t k = 1; k < a.points.size(); ++k)
+            case Kind::Commands:
+                for (const Command& c : a.commands)
                 {
-                    const ScreenPoint p = in_view(a.points[k]);
-                    session.mouse_move(p.x, p.y);
+                    Command command = c;
+                    if (auto* s = std::get_if<cmd::SetSolverSettings>(&command))
+                    {
+                        s->settings =
+                            merged_settings({s->settings, a.keys}, session.document().solver);
+                    }
+                    if (!session.dispatch(command) && session.state().message_is_error)
+                    {
+                        if (a.writes)
+                            throw WriteError(a.where + ": " + session.state().message);
+                        fail(script.name, a.where, session.state().message);
+                    }
                 }
-                const ScreenPoint last = in_view(a.points.back());
-                session.mouse_release(a.button, last.x, last.y);
+                if (a.waits_for_heat)
+                    session.wait_for_heat();
+                host.run_frame();
                 break;
-            }
-            case Kind::Click:
+            case Kind::Input:
+                for (const InputEvent& e : a.events)
+                    frame.input().push(e);
+                run_until_taken(frame, host);
+                break;
+            case Kind::ClickWidget:
             {
-                const ScreenPoint p = in_view(a.points[0]);
-                session.mouse_press(MouseButton::Left, a.mods, p.x, p.y);
-                session.mouse_release(MouseButton::Left, p.x, p.y);
-                break;
-            }
-            case Kind::Scroll:
-            {
-                const ScreenPoint p = in_view(a.points[0]);
-                session.scroll(a.value, p.x, p.y);
-                break;
-            }
-            case Kind::Select:
-                r.command = selection_command_named(a.text);
-                break;
-            case Kind::Undo:
-            case Kind::Redo:
-                for (int k = 0; k < a.count; ++k)
+                const std::optional<WidgetRect> w = frame.ui().widget(a.text);
+                if (!w)
                 {
-                    UiRequests step;
-                    (a.kind == Kind::Undo ? step.undo : step.redo) = true;
-                    session.carry_out(step);
+                    std::string names;
+                    for (const std::string& n : frame.ui().widget_names())
+                        names += (names.empty() ? "" : ", ") + n;
+                    fail(script.name, a.where,
+                         "no widget '" + a.text + "' on screen (" +
+                             (frame.has_interface() ? "shown: " + names
+                                                    : std::string("no interface: run with --ui")) +
+                             ")");
                 }
+                const ScreenPoint p{w->center_x(), w->center_y(), 0};
+                for (const InputEvent& e : drag_events({p, p}, MouseButton::Left, a.mods))
+                    frame.input().push(e);
+                run_until_taken(frame, host);
                 break;
-            case Kind::View:
-                if (a.text == "all")
-                    r.frame_all = true;
-                else if (a.text == "selection")
-                    r.frame_selection = true;
-                else
-                    for (const auto& [view_name, view] : kViews)
-                        if (a.text == view_name)
-                            r.view = view;
-                break;
-            case Kind::Projection:
-                if ((a.text == "orthographic") !=
-                    (session.camera().projection == Projection::Orthographic))
-                    r.toggle_projection = true;
-                break;
+            }
             case Kind::Screenshot:
                 host.screenshot(a.text);
                 break;
-            case Kind::SaveMesh:
-                if (!session.save(a.text))
-                    throw WriteError(a.where + ": " + session.state().message);
-                break;
-            case Kind::CreateSet:
-                if (!session.create_set(*kind_named(a.text), a.name))
-                    fail(script.name, a.where, session.state().message);
-                break;
-            case Kind::DeleteSet:
-                session.delete_set(set_index(a));
-                break;
-            case Kind::ShowSet:
-                session.set_visible(set_index(a), a.value != 0);
-                break;
-            case Kind::SelectSet:
-                session.select_set(set_index(a));
-                break;
-            case Kind::MovePins:
-            {
-                const size_t k = set_index(a);
-                if (session.document().sets[k].kind != ConstraintKind::Pin)
-                    fail(script.name, a.where, "set '" + a.name + "' is not a pin set");
-                session.move_pins(k, a.vector);
-                break;
-            }
-            case Kind::NormalDirection:
-            {
-                const size_t k = set_index(a);
-                if (session.document().sets[k].faces.empty())
-                    fail(script.name, a.where, "set '" + a.name + "' has no faces");
-                session.set_normal_direction(k, a.vector);
-                break;
-            }
-            case Kind::Solver:
-                session.set_solver_settings(merged_settings(a, session.document().solver), false);
-                break;
-            case Kind::Step:
             case Kind::Play:
-                if (!session.problems().empty())
-                    fail(script.name, a.where, "cannot solve: " + session.problems().front());
-                if (a.kind == Kind::Step)
-                    session.step(a.count);
-                else
-                    play_frames(session, a.count);
-                break;
-            case Kind::Autosave:
-                session.autosave(0);
-                break;
-            case Kind::Recover:
-                if (!session.recover())
+                if (!session.dispatch(cmd::Play{a.count}))
                     fail(script.name, a.where, session.state().message);
+                while (session.playing())
+                    session.take_frame();
+                host.run_frame();
                 break;
-            case Kind::HeatMap:
-                session.set_heat_map(heat_term_named(a.text));
-                session.wait_for_heat();
-                break;
-            case Kind::Noise:
-                session.add_noise(a.value, static_cast<std::uint64_t>(a.count));
-                break;
-            case Kind::Reset:
-                session.reset_shape();
-                break;
-            case Kind::Apply:
-                session.apply_shape();
-                break;
-            case Kind::ExportRecipe:
-                if (!session.export_recipe(a.text))
-                    throw WriteError(a.where + ": " + session.state().message);
-                break;
-            case Kind::ImportRecipe:
-                if (!session.import_recipe(a.text))
-                    fail(script.name, a.where, session.state().message);
+            case Kind::Frames:
+                for (int k = 0; k < a.count; ++k)
+                    host.run_frame();
                 break;
         }
-        session.carry_out(r);
-        session.seal_history(); // each action is an undo step of its own
+        session.end_interaction(); // each action is an undo step of its own
     }
 }
 

@@ -5,60 +5,42 @@
 #include <string>
 #include <vector>
 
+#include "app/editor/command.h"
 #include "app/editor/editor_session.h"
+#include "app/editor/input_event.h"
 
 namespace meshfair::app {
 
-//! \brief One step of a scripted session (docs/editor.md, "Scripted sessions"). Points are
-//! in framebuffer pixels, (0, 0) the top-left corner, as a mouse gives them.
+class EditorFrame;
+
+//! \brief One step of a scripted session (docs/editor.md, "Scripted sessions"): editor
+//! commands, as the key map and the panels give them, or raw input a person gives (mouse
+//! moves, presses and releases, keys, typed text, clicks on a widget of the interface by
+//! its label), fed through the window's input router. Points are framebuffer pixels,
+//! (0, 0) the top-left corner, as a mouse gives them.
 struct ScriptAction
 {
     enum class Kind
     {
-        Tool,            //!< text: a tool name ("brush")
-        Elements,        //!< text: "vertices" or "faces"
-        Through,         //!< value: 1 selects through the surface
-        BrushRadius,     //!< value: pixels
-        Drag,            //!< points: press at the first, move through the rest, release at the last
-        Click,           //!< points[0]: press and release there
-        Scroll,          //!< value: wheel notches, points[0] the cursor
-        Select,          //!< text: a selection command ("grow")
-        Undo,            //!< count times
-        Redo,            //!< count times
-        View,            //!< text: a standard view ("front") or "all" / "selection" to frame
-        Projection,      //!< text: "perspective" or "orthographic"
-        Screenshot,      //!< text: a PNG path
-        SaveMesh,        //!< text: a mesh path (format from the extension)
-        CreateSet,       //!< text: a kind ("pin"); name: the set's name (empty: numbered)
-        DeleteSet,       //!< name
-        ShowSet,         //!< name; value: 1 show, 0 hide
-        SelectSet,       //!< name
-        MovePins,        //!< name; vector: the offset
-        NormalDirection, //!< name; vector: the direction
-        Solver,          //!< settings: the solver panel's values
-        Step,            //!< count steps now
-        Play,            //!< count frames of live solving on the solver's thread, then pause
-        Reset,           //!< back to the base shape
-        Apply,           //!< the current shape becomes the base
-        ExportRecipe,    //!< text: a JSON path
-        ImportRecipe,    //!< text: a JSON path
-        Noise,           //!< value: sigma in mean edge lengths; count: the seed
-        HeatMap,         //!< text: a term ("total") or "off"
-        Autosave,        //!< write the recovery files now
-        Recover          //!< restore the recovery files a crashed session left
+        Commands,    //!< `commands`, dispatched in turn
+        Input,       //!< `events`, through the input router, frames run until they are taken
+        ClickWidget, //!< `text`: a widget's label (EditorUi::widget); a press and a release on it
+        Screenshot,  //!< `text`: a PNG path
+        Play,        //!< `count` frames of live solving on the solver's thread, then pause
+        Frames       //!< `count` frames of the interface with no input
     };
-    Kind kind = Kind::Tool;
+    Kind kind = Kind::Commands;
     std::string where; //!< "actions[3]", for messages
+    std::vector<Command> commands;
+    std::vector<InputEvent> events;
     std::string text;
-    double value = 0;
     int count = 1;
-    std::vector<ScreenPoint> points;
-    MouseButton button = MouseButton::Left;
-    Modifiers mods;
-    std::string name; //!< a set's name
-    Vec3 vector{0, 0, 0};
-    SolverSettings settings;       //!< Solver: the values given, the others as they were...
-    std::vector<std::string> keys; //!< ...these keys given
+    Modifiers mods;      //!< ClickWidget's
+    bool writes = false; //!< a failure is an output that could not be written
+    bool waits_for_heat = false;
+    //! A solver action's keys: its command's settings give only these, merged into the
+    //! settings of the moment when it is played.
+    std::vector<std::string> keys;
 };
 
 struct Script
@@ -79,17 +61,19 @@ class ScriptHost
 {
 public:
     virtual ~ScriptHost() = default;
-    //! Lays out a frame of the interface, so that the view's rectangle is current.
-    virtual void layout() = 0;
+    //! Runs one frame of the interface and input (EditorFrame::run), without drawing.
+    virtual void run_frame() = 0;
+    //! The frame driver: its input router takes the script's raw input.
+    virtual EditorFrame& frame_driver() = 0;
     //! Draws a frame and writes it as PNG.
     virtual void screenshot(const std::string& path) = 0;
 };
 
-//! \brief Plays the actions through the calls the window's mouse and keys make.
+//! \brief Plays the actions as a person's input and the key map's commands would.
 //! \throw WriteError when a screenshot, a mesh or a recipe cannot be written (files
-//! already there are kept whole); InvalidInputError naming the action when it names a set
-//! that does not exist, imports a recipe that cannot be read or does not fit, or runs the
-//! solver on sets that cannot run (constraint_problems).
+//! already there are kept whole); InvalidInputError naming the action when a command fails
+//! (a set that does not exist, a recipe that cannot be read or does not fit, sets that
+//! cannot run) or a widget it clicks is not on screen.
 void play_script(const Script& script, EditorSession& session, ScriptHost& host);
 
 } // namespace meshfair::app

@@ -9,6 +9,7 @@
 
 #include "app/editor/document.h"
 #include "app/editor/file_browser.h"
+#include "app/editor/key_map.h"
 #include "core/io/io.h"
 #include "tests/helpers.h"
 

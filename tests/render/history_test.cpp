@@ -42,23 +42,23 @@ void random_action(EditorSession& s, std::mt19937& rng)
     const Modifiers mods{.shift = pick(rng) < 30, .ctrl = pick(rng) < 20, .alt = false};
     if (what < 10)
     {
-        s.run(static_cast<SelectionCommand>(pick(rng) % 7));
+        s.dispatch(cmd::RunSelection{static_cast<SelectionCommand>(pick(rng) % 7)});
         return;
     }
     if (what < 15)
     {
-        s.set_elements(pick(rng) % 2 ? ElementKind::Faces : ElementKind::Vertices);
+        s.dispatch(cmd::SetElements{pick(rng) % 2 ? ElementKind::Faces : ElementKind::Vertices});
         return;
     }
     if (what < 20)
     {
-        s.tool_settings().through = !s.tool_settings().through;
+        s.dispatch(cmd::SetThrough{!s.tool_settings().through});
         return;
     }
     if (what < 25)
     {
         // An orbit in between: the next gestures see another view.
-        s.set_tool(ToolKind::Navigate);
+        s.dispatch(cmd::SetTool{ToolKind::Navigate});
         s.mouse_press(MouseButton::Left, {}, x(rng), y(rng));
         s.mouse_move(x(rng), y(rng));
         s.mouse_release(MouseButton::Left, 0, 0);
@@ -66,8 +66,8 @@ void random_action(EditorSession& s, std::mt19937& rng)
     }
     const ToolKind tools[] = {ToolKind::Click, ToolKind::Brush, ToolKind::Rectangle,
                               ToolKind::Lasso};
-    s.set_tool(tools[pick(rng) % 4]);
-    s.tool_settings().brush_radius_px = 4 + pick(rng) % 40;
+    s.dispatch(cmd::SetTool{tools[pick(rng) % 4]});
+    s.dispatch(cmd::SetBrushRadius{double(4 + pick(rng) % 40)});
     s.mouse_press(MouseButton::Left, mods, x(rng), y(rng));
     for (int k = pick(rng) % 8; k > 0; --k)
         s.mouse_move(x(rng), y(rng));
@@ -93,7 +93,7 @@ TEST_SUITE("History")
             std::mt19937 rng(seed);
 
             // A non-empty start, so that "back to the start" is not "back to nothing".
-            s.set_tool(ToolKind::Rectangle);
+            s.dispatch(cmd::SetTool{ToolKind::Rectangle});
             s.mouse_press(MouseButton::Left, {}, 100, 80);
             s.mouse_release(MouseButton::Left, 200, 160);
             s.history().clear();
@@ -115,21 +115,21 @@ TEST_SUITE("History")
             REQUIRE(s.history().undo_count() == states.size() - 1);
             for (size_t k = states.size() - 1; k > 0; --k)
             {
-                REQUIRE(s.undo());
+                REQUIRE(s.dispatch(cmd::Undo{}));
                 CHECK(selection_of(s.document()) == states[k - 1]);
             }
-            CHECK_FALSE(s.undo());
+            CHECK_FALSE(s.dispatch(cmd::Undo{}));
             CHECK(selection_of(s.document()) == initial);
             for (size_t k = 1; k < states.size(); ++k)
             {
-                REQUIRE(s.redo());
+                REQUIRE(s.dispatch(cmd::Redo{}));
                 CHECK(selection_of(s.document()) == states[k]);
             }
-            CHECK_FALSE(s.redo());
+            CHECK_FALSE(s.dispatch(cmd::Redo{}));
             // A new step after some undos drops what could have been redone.
-            s.undo();
-            s.undo();
-            s.run(SelectionCommand::Invert);
+            s.dispatch(cmd::Undo{});
+            s.dispatch(cmd::Undo{});
+            s.dispatch(cmd::RunSelection{SelectionCommand::Invert});
             CHECK(s.history().redo_count() == 0);
         }
     }

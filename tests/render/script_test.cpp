@@ -152,7 +152,7 @@ TEST_SUITE("Scripted sessions")
         session.state().offscreen = true;
         session.state().renderer_name = "llvmpipe";
         app::OffscreenHost host(session, 1280, 800, true);
-        host.layout();
+        host.run_frame();
         session.camera().frame(session.document().box, session.aspect());
         const app::Script script = app::parse_script(
             R"([{"noise": 0.3, "seed": 5}, {"tool": "rectangle"}, {"elements": "faces"},
@@ -233,8 +233,8 @@ TEST_SUITE("Scripted sessions")
             return std::string("accepted");
         };
         CHECK(message(R"({"actions": [{"tool": "brush"}, {"tool": "spray"}]})") ==
-              "'s.json': actions[1].tool: 'spray' is not navigate, click, brush, rectangle or "
-              "lasso");
+              "'s.json': actions[1].tool: 'spray' is not navigate, click, brush, rectangle, "
+              "lasso, move_pins or aim_normals");
         CHECK(message("[{\"drag\": [[1, 2]]}]") ==
               "'s.json': actions[0].drag: must be a list of at least 2 points [x, y]");
         CHECK(message("[{\"click\": [1, 2], \"undo\": 1}]") ==
@@ -243,7 +243,7 @@ TEST_SUITE("Scripted sessions")
               "'s.json': actions[0].undo: must be a count from 1 "
               "to 100000");
         CHECK(message("[{\"select\": \"grow\", \"modifiers\": [\"shift\"]}]") ==
-              "'s.json': actions[0].modifiers: only a drag or a click takes modifiers");
+              "'s.json': actions[0].modifiers: only drag, click or click_widget takes 'modifiers'");
         CHECK(message("[{\"drag\": [[0, 0], [1, 1]], \"modifiers\": [\"hyper\"]}]") ==
               "'s.json': actions[0].modifiers: 'hyper' is not shift, ctrl or alt");
         CHECK(message("[{\"scroll\": 2}]") ==

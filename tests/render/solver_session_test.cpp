@@ -56,7 +56,7 @@ struct NoisyBunny
     }
     void rectangle(double x0, double y0, double x1, double y1, Modifiers mods = {})
     {
-        session.set_tool(ToolKind::Rectangle);
+        session.dispatch(cmd::SetTool{ToolKind::Rectangle});
         session.mouse_press(MouseButton::Left, mods, x0, y0);
         session.mouse_move(x1, y1);
         session.mouse_release(MouseButton::Left, x1, y1);
@@ -94,7 +94,7 @@ bool same(const State& a, const State& b)
 bool cli_reproduces(EditorSession& s, const fs::path& mesh, const fs::path& dir)
 {
     const fs::path recipe = dir / "recipe.json";
-    REQUIRE(s.export_recipe(recipe.string()));
+    REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
     return cli_positions(mesh, recipe) == file_order_mesh(s.document()).positions;
 }
 
@@ -114,7 +114,7 @@ TEST_SUITE("Live solving")
         CHECK_FALSE(s.document().modified); // Ctrl+Q quits without asking
         CHECK(s.document().mesh.positions == loaded);
         CHECK(s.history().undo_count() == 0);
-        s.step(1);
+        s.dispatch(cmd::Step{1});
         CHECK(s.document().modified);
     }
 
@@ -125,28 +125,28 @@ TEST_SUITE("Live solving")
         EditorSession& s = b.session;
         // A region, pins inside it moved away, anchors, centroids and normals on faces.
         b.rectangle(120, 80, 300, 220);
-        REQUIRE(s.create_set(ConstraintKind::Region, "patch"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
         b.rectangle(150, 100, 180, 130);
-        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
-        s.move_pins(*s.set_named("pins"), {0.0, 0.004, 0.0});
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        s.dispatch(cmd::MovePins{"pins", {0.0, 0.004, 0.0}});
         b.rectangle(200, 150, 260, 200);
-        REQUIRE(s.create_set(ConstraintKind::Anchor, "anchors"));
-        s.set_elements(ElementKind::Faces);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+        s.dispatch(cmd::SetElements{ElementKind::Faces});
         b.rectangle(130, 160, 200, 215);
-        REQUIRE(s.create_set(ConstraintKind::Centroid, "centroids"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Centroid, "centroids"}));
         b.rectangle(230, 90, 290, 140);
-        REQUIRE(s.create_set(ConstraintKind::Normal, "normals"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
         CHECK(s.problems().empty());
         SolverSettings settings = s.document().solver;
         settings.lambda = 0.4;
         settings.anchor_mu = 2;
         settings.centroid_mu = 0.5;
         settings.iterations_per_frame = 4;
-        s.set_solver_settings(settings);
+        s.dispatch(cmd::SetSolverSettings{settings});
 
         // Steps on the caller's thread, then frames on the solver's.
-        s.step(6);
-        s.play(5);
+        s.dispatch(cmd::Step{6});
+        s.dispatch(cmd::Play{5});
         while (s.playing())
             s.take_frame();
         CHECK(s.document().steps_from_base == 6 + 5 * 4);
@@ -154,7 +154,7 @@ TEST_SUITE("Live solving")
         CHECK(s.document().mesh.positions != s.document().base_positions);
 
         const fs::path recipe = dir / "recipe.json";
-        REQUIRE(s.export_recipe(recipe.string()));
+        REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
         const Recipe r = read_recipe(recipe.string());
         CHECK(r.iterations == 26);
         REQUIRE(r.hard);
@@ -162,12 +162,12 @@ TEST_SUITE("Live solving")
         CHECK(cli_positions(b.path, recipe) == file_order_mesh(s.document()).positions);
 
         // Undo of the run, then of the steps: back to the loaded positions exactly.
-        REQUIRE(s.undo());
+        REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().steps_from_base == 6);
-        REQUIRE(s.undo());
+        REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().mesh.positions == s.document().base_positions);
         // Stepping again from there gives the same bits as the first time.
-        s.step(6);
+        s.dispatch(cmd::Step{6});
         CHECK(cli_reproduces(s, b.path, dir));
     }
 
@@ -177,8 +177,8 @@ TEST_SUITE("Live solving")
         NoisyBunny b(dir);
         EditorSession& s = b.session;
         b.rectangle(150, 100, 175, 125);
-        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
-        s.step(5);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        s.dispatch(cmd::Step{5});
         const int restarts = s.solver_status().restarts;
         const Vec3 before = [&] {
             const size_t i = 3 * static_cast<size_t>(s.document().sets[0].vertices[0]);
@@ -188,7 +188,7 @@ TEST_SUITE("Live solving")
         // Grab the first pin where it is drawn and drag it 30 pixels to the right.
         const glm::dvec3 at =
             s.camera().project({before[0], before[1], before[2]}, kWidth, kHeight);
-        s.set_tool(ToolKind::MovePins);
+        s.dispatch(cmd::SetTool{ToolKind::MovePins});
         s.mouse_press(MouseButton::Left, {}, at.x, at.y);
         s.mouse_move(at.x + 10, at.y);
         s.mouse_move(at.x + 30, at.y);
@@ -203,7 +203,7 @@ TEST_SUITE("Live solving")
         CHECK(moved.y == doctest::Approx(at.y).epsilon(1e-6));
         CHECK(moved.z == doctest::Approx(at.z).epsilon(1e-9));
         // The pins sit on their targets, with no new precomputation; one undo step.
-        s.step(1);
+        s.dispatch(cmd::Step{1});
         for (size_t k = 0; k < pins.vertices.size(); ++k)
             for (size_t a = 0; a < 3; ++a)
                 CHECK(s.document().mesh.positions[3 * static_cast<size_t>(pins.vertices[k]) + a] ==
@@ -211,12 +211,12 @@ TEST_SUITE("Live solving")
         CHECK(s.solver_status().restarts == restarts);
         CHECK_FALSE(s.document().reproducible); // the targets moved during the run
         CHECK(s.history().undo_label() == "step 1");
-        REQUIRE(s.undo());
+        REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.history().undo_label() == "move pins");
         // From the base with the moved targets the command line agrees.
-        s.redo();
-        s.reset_shape();
-        s.step(4);
+        s.dispatch(cmd::Redo{});
+        s.dispatch(cmd::ResetShape{});
+        s.dispatch(cmd::Step{4});
         CHECK(s.document().reproducible);
         CHECK(cli_reproduces(s, b.path, dir));
     }
@@ -227,25 +227,25 @@ TEST_SUITE("Live solving")
         NoisyBunny b(dir);
         EditorSession& s = b.session;
         b.rectangle(150, 100, 175, 125);
-        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
-        s.step(1);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        s.dispatch(cmd::Step{1});
         const int restarts = s.solver_status().restarts;
         SolverSettings pace = s.document().solver;
         pace.iterations_per_frame = 7; // not part of the recipe
-        s.set_solver_settings(pace, false);
-        s.rename_set(0, "feet");
-        s.set_color(0, {0, 1, 0});
-        s.set_visible(0, false);
-        s.step(1);
+        s.dispatch(cmd::SetSolverSettings{pace});
+        s.dispatch(cmd::RenameSet{"pins", "feet"});
+        s.dispatch(cmd::SetColor{"feet", {0, 1, 0}});
+        s.dispatch(cmd::ShowSet{"feet", false});
+        s.dispatch(cmd::Step{1});
         CHECK(s.solver_status().restarts == restarts);
         // Moved pins: right-hand sides only; undone: the pins go back to their base places.
-        s.move_pins(0, {0.0, 0.01, 0.0});
-        s.step(1);
+        s.dispatch(cmd::MovePins{"feet", {0.0, 0.01, 0.0}});
+        s.dispatch(cmd::Step{1});
         CHECK(s.solver_status().restarts == restarts);
-        REQUIRE(s.undo()); // the step
-        REQUIRE(s.undo()); // the move
+        REQUIRE(s.dispatch(cmd::Undo{})); // the step
+        REQUIRE(s.dispatch(cmd::Undo{})); // the move
         CHECK(s.document().sets[0].targets.empty());
-        s.step(1);
+        s.dispatch(cmd::Step{1});
         const ConstraintSet& pins = s.document().sets[0];
         for (const Index v : pins.vertices)
             for (size_t a = 0; a < 3; ++a)
@@ -258,15 +258,15 @@ TEST_SUITE("Live solving")
         const fs::path dir = test::temp_dir();
         NoisyBunny b(dir);
         EditorSession& s = b.session;
-        s.set_elements(ElementKind::Faces);
+        s.dispatch(cmd::SetElements{ElementKind::Faces});
         b.rectangle(180, 120, 230, 170);
-        REQUIRE(s.create_set(ConstraintKind::Normal, "up"));
-        s.set_normal_direction(0, {0, 0, 2}); // normalized
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "up"}));
+        s.dispatch(cmd::SetNormalDirection{"up", {0, 0, 2}}); // normalized
         REQUIRE(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
         const Vec3 c = face_centroid(s.document().mesh, s.document().mesh.positions,
                                      s.document().sets[0].faces[0]);
         const glm::dvec3 at = s.camera().project({c[0], c[1], c[2]}, kWidth, kHeight);
-        s.set_tool(ToolKind::AimNormals);
+        s.dispatch(cmd::SetTool{ToolKind::AimNormals});
         s.mouse_press(MouseButton::Left, {}, at.x, at.y);
         for (int k = 1; k <= 4; ++k)
             s.mouse_move(at.x + 25 * k, at.y); // 100 pixels to the right: one radian
@@ -280,7 +280,7 @@ TEST_SUITE("Live solving")
         for (const Vec3& n : s.document().sets[0].normals)
             CHECK(n == d); // the one direction for every face of the set
         // The drag is one undo step.
-        REQUIRE(s.undo());
+        REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
     }
 
@@ -289,23 +289,23 @@ TEST_SUITE("Live solving")
         const fs::path dir = test::temp_dir();
         NoisyBunny b(dir);
         EditorSession& s = b.session;
-        s.step(3);
+        s.dispatch(cmd::Step{3});
         SolverSettings settings = s.document().solver;
         settings.lambda = 0.3;
-        s.set_solver_settings(settings);
-        s.step(3);
+        s.dispatch(cmd::SetSolverSettings{settings});
+        s.dispatch(cmd::Step{3});
         CHECK(s.document().steps_from_base == 6);
         CHECK_FALSE(s.document().reproducible);
         // Reset and run again: reproducible, and the command line agrees.
-        s.reset_shape();
-        s.step(6);
+        s.dispatch(cmd::ResetShape{});
+        s.dispatch(cmd::Step{6});
         CHECK(s.document().reproducible);
         CHECK(cli_reproduces(s, b.path, dir));
         // Apply makes the shape the new base: 0 steps from it.
-        s.apply_shape();
+        s.dispatch(cmd::ApplyShape{});
         CHECK(s.document().steps_from_base == 0);
         CHECK(s.document().base_positions == s.document().mesh.positions);
-        REQUIRE(s.undo());
+        REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().base_positions != s.document().mesh.positions);
     }
 
@@ -315,23 +315,23 @@ TEST_SUITE("Live solving")
         NoisyBunny b(dir);
         EditorSession& s = b.session;
         b.rectangle(150, 100, 200, 150);
-        REQUIRE(s.create_set(ConstraintKind::Pin, "feet"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "feet"}));
         b.rectangle(180, 120, 230, 170);
-        REQUIRE(s.create_set(ConstraintKind::Anchor, "back"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "back"}));
         REQUIRE(s.problems().size() == 1);
         CHECK(s.problems()[0].find("pin set 'feet' and anchor set 'back' share vertex") == 0);
         const std::vector<Scalar> before = s.document().mesh.positions;
-        s.step(3);
+        s.dispatch(cmd::Step{3});
         CHECK(s.document().mesh.positions == before);
         CHECK(s.state().message.find("cannot solve") == 0);
-        CHECK_FALSE(s.export_recipe((dir / "r.json").string()));
+        CHECK_FALSE(s.dispatch(cmd::ExportRecipe{(dir / "r.json").string()}));
         CHECK_FALSE(fs::exists(dir / "r.json"));
         // Deleting one of them clears the problem.
-        s.delete_set(*s.set_named("back"));
+        s.dispatch(cmd::DeleteSet{"back"});
         CHECK(s.problems().empty());
         // An empty selection makes no set.
-        s.run(SelectionCommand::Clear);
-        CHECK_FALSE(s.create_set(ConstraintKind::Anchor));
+        s.dispatch(cmd::RunSelection{SelectionCommand::Clear});
+        CHECK_FALSE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, {}}));
         CHECK(s.document().sets.size() == 1);
     }
 
@@ -341,26 +341,26 @@ TEST_SUITE("Live solving")
         NoisyBunny b(dir);
         EditorSession& s = b.session;
         b.rectangle(120, 80, 300, 220);
-        REQUIRE(s.create_set(ConstraintKind::Region, "patch"));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
         b.rectangle(150, 100, 180, 130);
-        REQUIRE(s.create_set(ConstraintKind::Pin, "pins"));
-        s.move_pins(1, {0.001, 0.0, 0.0});
-        s.step(4);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        s.dispatch(cmd::MovePins{"pins", {0.001, 0.0, 0.0}});
+        s.dispatch(cmd::Step{4});
         const fs::path recipe = dir / "recipe.json";
-        REQUIRE(s.export_recipe(recipe.string()));
-        const Recipe exported = s.current_recipe();
-        s.delete_set(1);
-        s.delete_set(0);
-        REQUIRE(s.import_recipe(recipe.string()));
+        REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
+        const Recipe exported = current_recipe(s.document());
+        s.dispatch(cmd::DeleteSet{"pins"});
+        s.dispatch(cmd::DeleteSet{"patch"});
+        REQUIRE(s.dispatch(cmd::ImportRecipe{recipe.string()}));
         REQUIRE(s.document().sets.size() == 2);
         CHECK(s.document().sets[0].kind == ConstraintKind::Region);
         CHECK(s.document().sets[1].kind == ConstraintKind::Pin);
-        Recipe again = s.current_recipe();
+        Recipe again = current_recipe(s.document());
         again.iterations = exported.iterations;
         CHECK(recipe_to_json(again) == recipe_to_json(exported));
-        CHECK_FALSE(s.import_recipe((dir / "missing.json").string()));
+        CHECK_FALSE(s.dispatch(cmd::ImportRecipe{(dir / "missing.json").string()}));
         test::write_bytes(dir / "bad.json", R"({"hard": {"vertices": [99999999]}})");
-        CHECK_FALSE(s.import_recipe((dir / "bad.json").string()));
+        CHECK_FALSE(s.dispatch(cmd::ImportRecipe{(dir / "bad.json").string()}));
         CHECK(s.state().message.find("hard.vertices[0]") != std::string::npos);
     }
 
@@ -385,33 +385,36 @@ TEST_SUITE("Live solving")
                 b.rectangle(pick(rng) * 4, pick(rng) * 3, pick(rng) * 4, pick(rng) * 3,
                             {.shift = pick(rng) < 50});
             else if (what < 45)
-                s.create_set(static_cast<ConstraintKind>(pick(rng) % 3));
+                s.dispatch(cmd::CreateSet{static_cast<ConstraintKind>(pick(rng) % 3), {}});
             else if (what < 55 && !s.document().sets.empty())
-                s.delete_set(static_cast<size_t>(pick(rng)) % s.document().sets.size());
+                s.dispatch(cmd::DeleteSet{
+                    s.document()
+                        .sets[static_cast<size_t>(pick(rng)) % s.document().sets.size()]
+                        .name});
             else if (what < 65)
             {
                 SolverSettings settings = s.document().solver;
                 settings.lambda = 0.1 + 0.005 * pick(rng);
-                s.set_solver_settings(settings, false);
+                s.dispatch(cmd::SetSolverSettings{settings});
             }
             else if (what < 85)
-                s.step(1 + pick(rng) % 3);
+                s.dispatch(cmd::Step{1 + pick(rng) % 3});
             else if (what < 92)
-                s.reset_shape();
+                s.dispatch(cmd::ResetShape{});
             else
-                s.apply_shape();
+                s.dispatch(cmd::ApplyShape{});
             if (s.history().undo_count() > before)
                 states.push_back(state());
         }
         REQUIRE(states.size() > 15);
         for (size_t k = states.size() - 1; k > 0; --k)
         {
-            REQUIRE(s.undo());
+            REQUIRE(s.dispatch(cmd::Undo{}));
             CHECK(same(state(), states[k - 1]));
         }
         for (size_t k = 1; k < states.size(); ++k)
         {
-            REQUIRE(s.redo());
+            REQUIRE(s.dispatch(cmd::Redo{}));
             CHECK(same(state(), states[k]));
         }
     }

@@ -91,7 +91,7 @@ TEST_SUITE("Selection tools")
     TEST_CASE("a rectangle selects the vertices inside it, and Shift / Ctrl add and take away")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Rectangle);
+        g.session.dispatch(cmd::SetTool{ToolKind::Rectangle});
         g.drag({g.at(2.5, 2.5), g.at(4, 4), g.at(5.5, 4.5)});
         CHECK(g.vertices() == grid_vertices([](double x, double y) {
                   return x >= 3 && x <= 5 && y >= 3 && y <= 4;
@@ -113,8 +113,8 @@ TEST_SUITE("Selection tools")
     TEST_CASE("in face mode a rectangle selects the faces whose centroid is inside")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Rectangle);
-        g.session.set_elements(ElementKind::Faces);
+        g.session.dispatch(cmd::SetTool{ToolKind::Rectangle});
+        g.session.dispatch(cmd::SetElements{ElementKind::Faces});
         g.drag({g.at(2.1, 2.1), g.at(5.9, 4.9)});
         std::vector<Index> expected;
         for (int y = 0; y < kN; ++y)
@@ -129,7 +129,7 @@ TEST_SUITE("Selection tools")
     TEST_CASE("a lasso selects what is inside the drawn curve")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Lasso);
+        g.session.dispatch(cmd::SetTool{ToolKind::Lasso});
         // A triangle with corners (1.5, 1.5), (8.5, 1.5), (1.5, 8.5), drawn with points
         // along its sides, as a mouse gives them.
         std::vector<ScreenPoint> curve;
@@ -156,11 +156,11 @@ TEST_SUITE("Selection tools")
     TEST_CASE("a brush stroke selects what is within its radius of the path")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Brush);
+        g.session.dispatch(cmd::SetTool{ToolKind::Brush});
         // Radius 1.3 grid units: from the path y = 5, x in [2, 8], the vertices at distance
         // 0 and 1 are in, those at sqrt(2) (diagonal from the ends) and 2 are out.
         const double px_per_unit = g.at(1, 0).x - g.at(0, 0).x;
-        g.session.tool_settings().brush_radius_px = 1.3 * px_per_unit;
+        g.session.dispatch(cmd::SetBrushRadius{1.3 * px_per_unit});
         g.drag({g.at(2, 5), g.at(3.7, 5), g.at(6.1, 5), g.at(8, 5)});
         CHECK(g.vertices() == grid_vertices([](double x, double y) {
                   return (y == 5 && x >= 1 && x <= 9) || ((y == 4 || y == 6) && x >= 2 && x <= 8);
@@ -175,12 +175,12 @@ TEST_SUITE("Selection tools")
     TEST_CASE("a click selects the nearest vertex of the face under it, or that face")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Click);
+        g.session.dispatch(cmd::SetTool{ToolKind::Click});
         g.click(g.at(3.2, 4.3));
         CHECK(g.vertices() == std::vector<Index>{vertex(3, 4)});
         g.click(g.at(6.7, 1.6), {.shift = true});
         CHECK(g.vertices() == std::vector<Index>{vertex(7, 2), vertex(3, 4)});
-        g.session.set_elements(ElementKind::Faces);
+        g.session.dispatch(cmd::SetElements{ElementKind::Faces});
         g.click(g.at(3.2, 4.3));
         CHECK(g.faces() == std::vector<Index>{face(3, 4)});
         // On the background, without a modifier: nothing (the face selection is cleared).
@@ -209,29 +209,29 @@ TEST_SUITE("Selection tools")
         GridSession g(std::move(two));
         g.session.camera().projection = Projection::Orthographic;
         const double px_per_unit = g.at(1, 0).x - g.at(0, 0).x;
-        g.session.tool_settings().brush_radius_px = 0.25 * px_per_unit;
+        g.session.dispatch(cmd::SetBrushRadius{0.25 * px_per_unit});
         for (const ToolKind tool : {ToolKind::Rectangle, ToolKind::Brush})
         {
             CAPTURE(tool_name(tool));
-            g.session.set_tool(tool);
-            g.session.tool_settings().through = false;
-            g.session.set_elements(ElementKind::Vertices);
+            g.session.dispatch(cmd::SetTool{tool});
+            g.session.dispatch(cmd::SetThrough{false});
+            g.session.dispatch(cmd::SetElements{ElementKind::Vertices});
             // The rectangle (3.4, 3.4)-(4.6, 4.6), or a brush of radius 0.25 along its
             // diagonal: vertex (4, 4) of the front grid only.
             g.drag({g.at(3.4, 3.4), g.at(4.6, 4.6)});
             CHECK(g.vertices() == std::vector<Index>{vertex(4, 4)});
-            g.session.set_elements(ElementKind::Faces);
+            g.session.dispatch(cmd::SetElements{ElementKind::Faces});
             g.drag({g.at(3.4, 3.4), g.at(4.6, 4.6)});
             if (tool == ToolKind::Rectangle)
                 CHECK(g.faces() ==
                       std::vector<Index>{face(3, 3), face(4, 3), face(3, 4), face(4, 4)});
             else
                 CHECK(g.faces() == std::vector<Index>{face(3, 3), face(4, 4)});
-            g.session.tool_settings().through = true;
+            g.session.dispatch(cmd::SetThrough{true});
             g.drag({g.at(3.4, 3.4), g.at(4.6, 4.6)});
             CHECK(g.faces().size() == (tool == ToolKind::Rectangle ? 8 : 4));
             CHECK(g.faces().back() >= back.face_count()); // the hidden grid's faces too
-            g.session.set_elements(ElementKind::Vertices);
+            g.session.dispatch(cmd::SetElements{ElementKind::Vertices});
             g.drag({g.at(3.4, 3.4), g.at(4.6, 4.6)});
             CHECK(g.vertices() == std::vector<Index>{vertex(4, 4), vertex(4, 4) + offset});
         }
@@ -240,22 +240,22 @@ TEST_SUITE("Selection tools")
     TEST_CASE("selection commands work on the current mode's selection")
     {
         GridSession g;
-        g.session.set_tool(ToolKind::Click);
+        g.session.dispatch(cmd::SetTool{ToolKind::Click});
         g.click(g.at(5.1, 5.1));
-        g.session.run(SelectionCommand::Grow);
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::Grow});
         CHECK(g.vertices() == grid_vertices([](double x, double y) {
                   return std::abs(x - 5) + std::abs(y - 5) <= 1; // V(i) on a quad grid
               }));
-        g.session.run(SelectionCommand::Shrink);
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::Shrink});
         CHECK(g.vertices() == std::vector<Index>{vertex(5, 5)});
-        g.session.run(SelectionCommand::Boundary);
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::Boundary});
         CHECK(g.vertices().size() == 4 * kN);
-        g.session.run(SelectionCommand::Invert);
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::Invert});
         CHECK(g.vertices().size() == (kN - 1) * (kN - 1));
-        g.session.set_elements(ElementKind::Faces);
-        g.session.run(SelectionCommand::All);
+        g.session.dispatch(cmd::SetElements{ElementKind::Faces});
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::All});
         CHECK(g.faces().size() == kN * kN);
-        g.session.run(SelectionCommand::Clear);
+        g.session.dispatch(cmd::RunSelection{SelectionCommand::Clear});
         CHECK(g.faces().empty());
         CHECK(g.vertices().size() == (kN - 1) * (kN - 1));
         // Each command that changed something is one step of the history.

@@ -1,0 +1,291 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "app/editor/constraint_sets.h"
+#include "app/render/camera.h"
+#include "app/render/renderer.h"
+#include "app/tools/selection_commands.h"
+#include "app/tools/selection_tool.h"
+#include "core/recipe/locality_run.h"
+#include "core/select/mesh_select.h"
+
+//! \file
+//! \brief Every action of the editor, as one vocabulary: the key map, the menus, the
+//! panels, the mouse tools and scripts all produce these commands, and
+//! EditorSession::dispatch carries each out (undo state, the step's record, errors into the
+//! status bar, what changed in the document). Sets are named by their (unique) names.
+
+namespace meshfair::app::cmd {
+
+// --- Selection and tools.
+struct SetTool
+{
+    ToolKind tool = ToolKind::Navigate;
+};
+struct SetElements
+{
+    ElementKind elements = ElementKind::Vertices;
+};
+struct ToggleElements
+{
+};
+struct SetThrough
+{
+    bool through = false;
+};
+struct SetBrushRadius
+{
+    double pixels = 24;
+};
+//! The brush radius times `factor`, within [2, 400] pixels ([ and ]).
+struct ScaleBrushRadius
+{
+    double factor = 1;
+};
+//! A command of the Select menu on the current mode's selection.
+struct RunSelection
+{
+    SelectionCommand command = SelectionCommand::All;
+};
+//! What a selection gesture covered: Replace clears the mode's selection first.
+struct ApplySelection
+{
+    ElementKind elements = ElementKind::Vertices;
+    SelectOp op = SelectOp::Add;
+    std::vector<Index> indices;
+    ToolKind tool = ToolKind::Click; //!< the gesture's tool, for the undo step's name
+};
+
+// --- History.
+struct Undo
+{
+};
+struct Redo
+{
+};
+
+// --- The view (not undo steps).
+struct FrameAll
+{
+};
+struct FrameSelection
+{
+};
+struct SetView
+{
+    StandardView view = StandardView::Front;
+};
+struct SetProjection
+{
+    Projection projection = Projection::Perspective;
+};
+struct ToggleProjection
+{
+};
+struct SetOrbit
+{
+    OrbitStyle orbit = OrbitStyle::Turntable;
+};
+struct ToggleOrbit
+{
+};
+//! What the display toggles flip (keys and menus).
+enum class DisplayToggle
+{
+    Shading,
+    Wireframe,
+    BoundaryEdges,
+    VertexPoints,
+    BackFaceTint,
+    SidePanel,
+    Help,
+    EnergyPlot,
+    EnergyLogScale
+};
+struct Toggle
+{
+    DisplayToggle what = DisplayToggle::Wireframe;
+};
+//! New display options (the Display panel's widgets).
+struct SetDisplay
+{
+    DisplayOptions display;
+};
+
+// --- Constraint sets (each an undo step).
+//! A set of `kind` from the selection; empty name: numbered ("pin 2").
+struct CreateSet
+{
+    ConstraintKind kind = ConstraintKind::Region;
+    std::string name;
+};
+struct DeleteSet
+{
+    std::string set;
+};
+struct RenameSet
+{
+    std::string set, name;
+};
+//! Shows or hides the set's glyphs (display only, not an undo step).
+struct ShowSet
+{
+    std::string set;
+    bool visible = true;
+};
+struct SetColor
+{
+    std::string set;
+    std::array<float, 3> color{1, 1, 1};
+};
+//! Replaces the selection with the set's elements (and switches to its mode).
+struct SelectSet
+{
+    std::string set;
+};
+//! Gives every face of a normal set the unit direction of `direction` (not zero).
+struct SetNormalDirection
+{
+    std::string set;
+    Vec3 direction{0, 0, 1};
+};
+//! Moves a pin set's targets by `offset`.
+struct MovePins
+{
+    std::string set;
+    Vec3 offset{0, 0, 0};
+};
+
+// --- Solving.
+//! New solver settings (a slider dragged through many values is one undo step: the
+//! dispatch's interaction merges them).
+struct SetSolverSettings
+{
+    SolverSettings settings;
+};
+//! Live solving on the solver's thread; `frames` > 0: pause by itself after them.
+struct Play
+{
+    int frames = 0;
+};
+struct Pause
+{
+};
+struct TogglePlay
+{
+};
+//! `steps` steps now (0: the settings' steps per frame).
+struct Step
+{
+    int steps = 0;
+};
+struct ResetShape
+{
+};
+struct ApplyShape
+{
+};
+//! Gaussian noise of `sigma` mean edge lengths (as meshfair-cli noise); the noisy shape
+//! becomes the base.
+struct AddNoise
+{
+    Scalar sigma = 0.3;
+    std::uint64_t seed = 1;
+};
+//! The heat map of a term's energy shares (nullopt: off). Display only.
+struct SetHeatMap
+{
+    std::optional<EnergyTerm> term;
+};
+
+// --- Files and the program.
+struct OpenMesh
+{
+    std::string path;
+};
+//! Saves the mesh (format from the extension, atomic); empty path: the file it came from.
+struct SaveMesh
+{
+    std::string path;
+};
+struct ExportRecipe
+{
+    std::string path;
+};
+struct ImportRecipe
+{
+    std::string path;
+};
+//! The file dialogs and prompts of the interface.
+enum class Dialog
+{
+    OpenMesh,
+    SaveMeshAs,
+    ExportRecipe,
+    ImportRecipe
+};
+struct ShowDialog
+{
+    Dialog dialog = Dialog::OpenMesh;
+};
+//! The view as PNG (empty path: meshfair-screenshot-N.png, or the --screenshot path).
+struct Screenshot
+{
+    std::string path;
+};
+//! Quits, asking first when there are unsaved changes.
+struct Quit
+{
+};
+//! Quits without asking (the prompt's "Discard and quit").
+struct QuitDiscarding
+{
+};
+struct Recover
+{
+};
+struct DiscardRecovery
+{
+};
+//! Writes the recovery files now.
+struct Autosave
+{
+};
+
+} // namespace meshfair::app::cmd
+
+namespace meshfair::app {
+
+using Command = std::variant<
+    cmd::SetTool, cmd::SetElements, cmd::ToggleElements, cmd::SetThrough, cmd::SetBrushRadius,
+    cmd::ScaleBrushRadius, cmd::RunSelection, cmd::ApplySelection, cmd::Undo, cmd::Redo,
+    cmd::FrameAll, cmd::FrameSelection, cmd::SetView, cmd::SetProjection, cmd::ToggleProjection,
+    cmd::SetOrbit, cmd::ToggleOrbit, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet, cmd::DeleteSet,
+    cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::SetNormalDirection,
+    cmd::MovePins, cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step,
+    cmd::ResetShape, cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
+    cmd::ExportRecipe, cmd::ImportRecipe, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,
+    cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
+
+//! \brief Where a command comes from, for the undo step it makes: commands of one
+//! interaction (a drag of a tool, a slider held) with the same key merge into one step,
+//! which ends when the interaction does (EditorSession::end_interaction). Empty: the
+//! command is a step of its own.
+struct Interaction
+{
+    std::string key;
+};
+
+//! A short name of the command, for messages ("create set", "undo").
+std::string_view command_name(const Command& command);
+
+} // namespace meshfair::app

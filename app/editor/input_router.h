@@ -1,0 +1,48 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <array>
+#include <deque>
+#include <vector>
+
+#include "app/editor/input_event.h"
+
+namespace meshfair::app {
+
+class EditorSession;
+
+//! \brief The one way raw input reaches the editor, from the window's callbacks and from
+//! scripts alike. Events are queued and handed out a batch per frame of the interface:
+//! the cursor moves, then at most one press, release, wheel turn, key or character, so
+//! that no press is lost between two frames and every press is judged where it happened.
+//! Each batch goes first to Dear ImGui; what the interface did not capture (ImGui's
+//! WantCaptureMouse and WantCaptureKeyboard, or a modal dialog for keys) then goes to the
+//! view: the mouse to the session's tools and navigation, keys to the key map's commands.
+//! A release goes to the view only when the view took the press.
+class InputRouter
+{
+public:
+    void push(const InputEvent& event);
+    //! Whether events wait for a frame.
+    bool pending() const { return !queue_.empty(); }
+
+    //! \brief Takes the next batch and, with an interface, gives it to ImGui's io. Call
+    //! before ImGui::NewFrame.
+    void feed_interface(bool with_interface);
+    //! \brief Gives the batch's events the interface did not capture to the session.
+    //! Call after the interface's frame was built; without an interface nothing is captured.
+    void route(EditorSession& session, bool with_interface);
+
+    //! Where the cursor was last seen, in framebuffer pixels.
+    double cursor_x() const { return x_; }
+    double cursor_y() const { return y_; }
+
+private:
+    std::deque<InputEvent> queue_;
+    std::vector<InputEvent> batch_;
+    std::array<bool, 3> view_owns_{}; // the view took the press of this button
+    double x_ = 0, y_ = 0;
+};
+
+} // namespace meshfair::app

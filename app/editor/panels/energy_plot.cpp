@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <imgui.h>
+
+#include "app/editor/panels/panel_context.h"
+
+namespace meshfair::app {
+
+namespace {
+
+// The energy curve of the current run: the total and each active term, log scale or not.
+void energy_plot(const PanelContext& ui)
+{
+    const EditorState& state = ui.state;
+    const std::vector<EnergySample>& e = state.energies;
+    bool log_scale = state.energy_log_scale;
+    if (ui.checkbox("log scale", &log_scale))
+        ui.give(cmd::Toggle{cmd::DisplayToggle::EnergyLogScale});
+    const ImVec2 size(ImGui::GetContentRegionAvail().x, 120);
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
+                        IM_COL32(25, 27, 31, 255));
+    ImGui::Dummy(size);
+    if (e.size() < 2)
+    {
+        draw->AddText(ImVec2(origin.x + 8, origin.y + 8), IM_COL32(170, 170, 170, 255),
+                      "Play or Step to draw the energy of the run");
+        return;
+    }
+    struct Curve
+    {
+        Scalar TermEnergies::*term;
+        const char* name;
+        ImU32 color;
+    };
+    const Curve curves[] = {{&TermEnergies::edge, "edge", IM_COL32(120, 200, 120, 255)},
+                            {&TermEnergies::soft, "anchor", IM_COL32(240, 190, 40, 255)},
+                            {&TermEnergies::centroid, "centroid", IM_COL32(70, 140, 240, 255)},
+                            {&TermEnergies::normal, "normal", IM_COL32(180, 90, 230, 255)}};
+    // Each curve relative to its own largest value over the run, so that terms of very
+    // different sizes all show how they converge (a term that starts at 0, as a soft
+    // constraint on the input does, rises and settles).
+    std::vector<double> top(std::size(curves) + 1, 0.0);
+    for (const EnergySample& s : e)
+    {
+        for (size_t c = 0; c < std::size(curves); ++c)
+            top[c] = std::max(top[c], s.energy.*curves[c].term);
+        top.back() = std::max(top.back(), s.energy.total());
+    }
+    const double floor_value = 1e-6; // the log scale's bottom: a millionth of the largest
+    const auto value = [&](double v, double largest) {
+        const double r = largest > 0 ? v / largest : 0;
+        return state.energy_log_scale ? std::log10(std::max(r, floor_value)) : r;
+    };
+    double lo = 1e300;
+    for (const EnergySample& s : e)
+    {
+        lo = std::min(lo, value(s.energy.total(), top.back()));
+        for (size_t c = 0; c < std::size(curves); ++c)
+            if (top[c] > 0)
+                lo = std::min(lo, value(s.energy.*curves[c].term, top[c]));
+    }
+    const double hi = state.energy_log_scale ? 0.0 : 1.0;
+    lo = std::min(lo, hi - (state.energy_log_scale ? 0.5 : 0.1));
+    const double last = std::max(e.back().step, 1);
+    const auto at = [&](const EnergySample& s, double v, double largest) {
+        return ImVec2(origin.x + float(s.step / last) * (size.x - 1),
+                      origin.y + float((hi - value(v, largest)) / (hi - lo)) * (size.y - 1));
+    };
+    std::vector<ImVec2> line;
+    for (size_t c = 0; c < std::size(curves); ++c)
+    {
+        if (!(top[c] > 0))
+            continue;
+        line.clear();
+        for (const EnergySample& s : e)
+            line.push_back(at(s, s.energy.*curves[c].term, top[c]));
+        draw->AddPolyline(line.data(), static_cast<int>(line.size()), curves[c].color, 0, 1.5f);
+    }
+    line.clear();
+    for (const EnergySample& s : e)
+        line.push_back(at(s, s.energy.total(), top.back()));
+    draw->AddPolyline(line.data(), static_cast<int>(line.size()), IM_COL32(255, 255, 255, 255), 0,
+                      2.0f);
+    // The vertical range, at the plot's corners.
+    char label[64];
+    std::snprintf(label, sizeof label, state.energy_log_scale ? "1e%.1f" : "%.2g", lo);
+    draw->AddText(ImVec2(origin.x + 4, origin.y + size.y - ImGui::GetFontSize() - 2),
+                  IM_COL32(170, 170, 170, 255), label);
+    draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(170, 170, 170, 255),
+                  "1 = each curve's largest value");
+    const TermEnergies& now = e.back().energy;
+    ImGui::Text("step %d   total %.6g", e.back().step, now.total());
+    bool first = true;
+    for (const Curve& c : curves)
+        if (now.*c.term > 0)
+        {
+            if (!first)
+                ImGui::SameLine();
+            first = false;
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.color), "%s %.4g ", c.name,
+                               now.*c.term);
+        }
+}
+
+} // namespace
+
+// The energy plot in its own window at the bottom left of the view, always in sight.
+void energy_window(const PanelContext& ui)
+{
+    EditorState& state = ui.state;
+    if (!state.show_energy)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float bottom = ImGui::GetFrameHeight() + 8;
+    ImGui::SetNextWindowPos(ImVec2(8, io.DisplaySize.y - bottom - 8), ImGuiCond_Always,
+                            ImVec2(0, 1));
+    ImGui::SetNextWindowSize(ImVec2(420, 0));
+    ImGui::SetNextWindowBgAlpha(0.85f);
+    bool open = true;
+    ImGui::Begin("Energy", &open,
+                 ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoCollapse);
+    energy_plot(ui);
+    ImGui::End();
+    if (!open)
+        ui.give(cmd::Toggle{cmd::DisplayToggle::EnergyPlot});
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+// What is drawn over the view: the tool's overlay, the status bar and the help overlay.
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "app/editor/key_map.h"
+#include "app/editor/panels/panel_context.h"
+
+namespace meshfair::app {
+
+// The active tool's ring, rectangle or lasso line, under the panels.
+void tool_overlay(const EditorState& state)
+{
+    const ToolOverlay& o = state.overlay;
+    if (o.shape == ToolOverlay::Shape::None || o.points.empty())
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+    const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+    auto at = [&](const ScreenPoint& p) { return ImVec2(float(p.x) / sx, float(p.y) / sy); };
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const ImU32 color = IM_COL32(255, 160, 40, 230);
+    switch (o.shape)
+    {
+        case ToolOverlay::Shape::Circle:
+            draw->AddCircle(at(o.points[0]), float(o.radius) / sx, color, 48, 1.5f);
+            break;
+        case ToolOverlay::Shape::Rectangle:
+            if (o.points.size() == 2)
+            {
+                const ImVec2 a = at(o.points[0]), b = at(o.points[1]);
+                draw->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
+                                    ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
+                                    IM_COL32(255, 160, 40, 40));
+                draw->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
+                              ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)), color, 0, 0, 1.5f);
+            }
+            break;
+        case ToolOverlay::Shape::Polyline:
+        {
+            std::vector<ImVec2> line;
+            for (const ScreenPoint& p : o.points)
+                line.push_back(at(p));
+            draw->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, 1.5f);
+            break;
+        }
+        case ToolOverlay::Shape::None:
+            break;
+    }
+}
+
+void status_bar(const PanelContext& ui)
+{
+    const Document& document = ui.document;
+    const EditorState& state = ui.state;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float height = ImGui::GetFrameHeight() + 8;
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+    ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+    ImGui::Begin("##status", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoSavedSettings);
+    const Topology& t = document.topology;
+    const std::string frame = state.frame_ms > 0
+                                  ? std::to_string(static_cast<int>(state.frame_ms + 0.5)) + " ms"
+                                  : "offscreen";
+    ImGui::Text(
+        "V %s  F %s  E %s  |  boundary %s  singular %s  |  %s  |  %s",
+        with_separators(document.mesh.vertex_count()).c_str(),
+        with_separators(document.mesh.face_count()).c_str(),
+        with_separators(t.edge_count()).c_str(), with_separators(t.boundary_edge_count).c_str(),
+        with_separators(t.singular_edge_count).c_str(), frame.c_str(), state.renderer_name.c_str());
+    if (!state.message.empty())
+    {
+        ImGui::SameLine();
+        ImGui::TextColored(
+            state.message_is_error ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.85f, 0.85f, 0.85f, 1),
+            "|  %s", state.message.c_str());
+    }
+    ImGui::End();
+}
+
+void help_overlay(const PanelContext& ui)
+{
+    const EditorState& state = ui.state;
+    if (!state.show_help)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
+                            ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+    bool open = true;
+    ImGui::Begin("Keys and mouse", &open,
+                 ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse);
+    if (ImGui::BeginTable("bindings", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV))
+    {
+        for (const KeyBinding& b : key_bindings())
+        {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(b.input);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(b.action);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+    if (!open)
+        ui.give(cmd::Toggle{cmd::DisplayToggle::Help});
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/panels/panel_context.h"
+
+#include <imgui.h>
+
+namespace meshfair::app {
+
+namespace {
+
+// The text a person reads on a widget: its label before any "##" or "###".
+std::string visible_label(const char* label)
+{
+    const std::string text(label);
+    return text.substr(0, text.find("##"));
+}
+
+} // namespace
+
+void PanelContext::track(const std::string& label) const
+{
+    const ImGuiIO& io = ImGui::GetIO();
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    const double sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0;
+    const double sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0;
+    widgets[label] = {a.x * sx, a.y * sy, b.x * sx, b.y * sy};
+}
+
+bool PanelContext::button(const char* label, const std::string& key) const
+{
+    const bool pressed = ImGui::Button(label);
+    track(key.empty() ? visible_label(label) : key);
+    return pressed;
+}
+
+bool PanelContext::small_button(const char* label, const std::string& key) const
+{
+    const bool pressed = ImGui::SmallButton(label);
+    track(key.empty() ? visible_label(label) : key);
+    return pressed;
+}
+
+bool PanelContext::checkbox(const char* label, bool* value, const std::string& key) const
+{
+    const bool changed = ImGui::Checkbox(label, value);
+    track(key.empty() ? visible_label(label) : key);
+    return changed;
+}
+
+bool PanelContext::radio(const char* label, bool active, const std::string& key) const
+{
+    const bool pressed = ImGui::RadioButton(label, active);
+    track(key.empty() ? visible_label(label) : key);
+    return pressed;
+}
+
+const char* view_name(StandardView v)
+{
+    switch (v)
+    {
+        case StandardView::Front:
+            return "Front";
+        case StandardView::Back:
+            return "Back";
+        case StandardView::Right:
+            return "Right";
+        case StandardView::Left:
+            return "Left";
+        case StandardView::Top:
+            return "Top";
+        case StandardView::Bottom:
+            return "Bottom";
+    }
+    return "";
+}
+
+const char* kind_label(ConstraintKind kind)
+{
+    switch (kind)
+    {
+        case ConstraintKind::Region:
+            return "region";
+        case ConstraintKind::Pin:
+            return "pin";
+        case ConstraintKind::Anchor:
+            return "anchor";
+        case ConstraintKind::Centroid:
+            return "centroid";
+        case ConstraintKind::Normal:
+            return "normal";
+        case ConstraintKind::HardNormal:
+            return "hard normal";
+        case ConstraintKind::SoftNormal:
+            return "soft normal";
+    }
+    return "";
+}
+
+} // namespace meshfair::app

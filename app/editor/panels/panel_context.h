@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <map>
+#include <string>
+
+#include "app/editor/editor_ui.h"
+
+namespace meshfair::app {
+
+//! \brief What every panel of the interface reads and writes: the document and state it
+//! shows, the commands it gives, and where its widgets were drawn (for scripts).
+struct PanelContext
+{
+    const Document& document;
+    EditorState& state;
+    const Camera& camera;
+    UiOutput& out;
+    WidgetMap& widgets;
+
+    void give(Command command, Interaction from = {}) const
+    {
+        out.commands.push_back({std::move(command), std::move(from)});
+    }
+    //! Records where the last widget was drawn under `label`.
+    void track(const std::string& label) const;
+    //! ImGui::Button, tracked under `label` (or `key`).
+    bool button(const char* label, const std::string& key = {}) const;
+    bool small_button(const char* label, const std::string& key = {}) const;
+    bool checkbox(const char* label, bool* value, const std::string& key = {}) const;
+    bool radio(const char* label, bool active, const std::string& key = {}) const;
+};
+
+// The sections of the interface, one file each in app/editor/panels/.
+void menu_bar(const PanelContext& ui);
+void select_panel(const PanelContext& ui);
+//! The rename field's text and the set being renamed live in the EditorUi.
+void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string& renaming);
+void solver_panel(const PanelContext& ui);
+void energy_window(const PanelContext& ui);
+void mesh_panel(const PanelContext& ui);
+void display_panel(const PanelContext& ui);
+void camera_panel(const PanelContext& ui);
+void status_bar(const PanelContext& ui);
+void help_overlay(const PanelContext& ui);
+//! The active tool's ring, rectangle or lasso line, over the view.
+void tool_overlay(const EditorState& state);
+
+//! The side panel's width, in window units.
+inline constexpr float kSidePanelWidth = 340;
+
+const char* view_name(StandardView view);
+const char* kind_label(ConstraintKind kind);
+
+} // namespace meshfair::app

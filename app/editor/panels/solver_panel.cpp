@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include <algorithm>
+
+#include <imgui.h>
+
+#include "app/editor/panels/panel_context.h"
+
+namespace meshfair::app {
+
+namespace {
+
+// A weight's slider: logarithmic over [1e-3, 1e3] (a pixel is a fixed ratio, never a
+// jump from 1 to 0.04), with Ctrl+click to type a value.
+bool weight_slider(const PanelContext& ui, const char* label, Scalar& value)
+{
+    float v = float(value);
+    const bool changed =
+        ImGui::SliderFloat(label, &v, 1e-3f, 1e3f, "%.4g", ImGuiSliderFlags_Logarithmic);
+    ui.track(label);
+    if (changed)
+        value = std::clamp(Scalar(v), Scalar(1e-3), Scalar(1e3));
+    return changed;
+}
+
+} // namespace
+
+void solver_panel(const PanelContext& ui)
+{
+    using namespace cmd;
+    if (!ImGui::CollapsingHeader("Solver", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    const Document& document = ui.document;
+    const EditorState& state = ui.state;
+    SolverSettings s = document.solver;
+    bool toggled = false, dragged = false;
+    toggled |= ui.checkbox("optimal step (line search, safe)", &s.optimal_step, "optimal step");
+    if (!s.optimal_step)
+    {
+        // Within (0, 1): the step never overshoots a vertex's own minimizer.
+        float lambda = float(s.lambda);
+        if (ImGui::SliderFloat("lambda", &lambda, 0.01f, 0.99f, "%.3f"))
+        {
+            s.lambda = std::clamp(lambda, 0.01f, 0.99f);
+            dragged = true;
+        }
+        ui.track("lambda");
+    }
+    if (ImGui::SliderInt("steps/frame", &s.iterations_per_frame, 1, 200))
+    {
+        s.iterations_per_frame = std::clamp(s.iterations_per_frame, 1, 200);
+        dragged = true;
+    }
+    ui.track("steps/frame");
+    float tolerance = float(s.tolerance);
+    if (ImGui::InputFloat("tolerance", &tolerance, 0, 0, "%.2e"))
+    {
+        s.tolerance = std::max(tolerance, 0.0f);
+        dragged = true;
+    }
+    ui.track("tolerance");
+    dragged |= weight_slider(ui, "anchor mu", s.anchor_mu);
+    dragged |= weight_slider(ui, "centroid mu", s.centroid_mu);
+    dragged |= weight_slider(ui, "normal mu", s.normal_mu);
+    bool exact = s.denominator == CentroidDenominator::Exact;
+    if (ui.checkbox("exact centroid denominator", &exact))
+    {
+        s.denominator = exact ? CentroidDenominator::Exact : CentroidDenominator::Paper;
+        toggled = true;
+    }
+    bool smoothed = s.normal_source == NormalSource::Smoothed;
+    if (ui.checkbox("smoothed normals", &smoothed))
+    {
+        s.normal_source = smoothed ? NormalSource::Smoothed : NormalSource::Initial;
+        toggled = true;
+    }
+    toggled |= ui.checkbox("joint mode", &s.joint);
+    if (s.joint)
+        dragged |= weight_slider(ui, "gamma", s.gamma);
+    if ((toggled || dragged) && !(s == document.solver))
+        // A slider held is one interaction: its values make one undo step.
+        ui.give(SetSolverSettings{s}, dragged ? Interaction{"solver panel"} : Interaction{});
+
+    if (ui.button(state.playing ? "Pause###play" : "Play###play", "Play"))
+        ui.give(TogglePlay{});
+    ImGui::SameLine();
+    if (ui.button("Step"))
+        ui.give(Step{});
+    ImGui::SameLine();
+    if (ui.button("Reset"))
+        ui.give(ResetShape{});
+    ImGui::SameLine();
+    if (ui.button("Apply"))
+        ui.give(ApplyShape{});
+    const SolverStatus& st = state.solver;
+    ImGui::TextWrapped("%d steps from the base%s", document.steps_from_base,
+                       document.reproducible ? "" : " (recipe changed during the run)");
+    if (!state.offscreen) // a time would make offscreen frames differ from run to run
+        ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
+    const char* heat_items[] = {"off", "total", "edge", "anchor", "centroid", "normal"};
+    int heat = state.heat_map ? 1 + static_cast<int>(*state.heat_map) : 0;
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::Combo("heat map: energy share", &heat, heat_items, 6))
+        ui.give(SetHeatMap{heat == 0
+                               ? std::nullopt
+                               : std::optional<EnergyTerm>(static_cast<EnergyTerm>(heat - 1))});
+    ui.track("heat map");
+    ImGui::SetNextItemWidth(100);
+    ImGui::SliderFloat("##sigma", &ui.state.noise_sigma, 0.0f, 1.0f, "sigma %.2f");
+    ui.track("noise sigma");
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(70);
+    ImGui::InputInt("##seed", &ui.state.noise_seed, 0);
+    ui.track("noise seed");
+    ImGui::SameLine();
+    if (ui.button("Add noise"))
+        ui.give(
+            AddNoise{state.noise_sigma, static_cast<std::uint64_t>(std::max(state.noise_seed, 0))});
+    if (!st.error.empty())
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1, 0.45f, 0.35f, 1));
+        ImGui::TextWrapped("%s", st.error.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (st.converged)
+        ImGui::TextUnformatted("converged (tolerance)");
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+// The side panel's Mesh, Display and Camera sections.
+#include <filesystem>
+
+#include <imgui.h>
+
+#include "app/editor/panels/panel_context.h"
+
+namespace meshfair::app {
+
+void mesh_panel(const PanelContext& ui)
+{
+    if (!ImGui::CollapsingHeader("Mesh"))
+        return;
+    const Document& document = ui.document;
+    const Topology& t = document.topology;
+    ImGui::TextUnformatted(std::filesystem::path(document.path).filename().string().c_str());
+    ImGui::Text("vertices  %s", with_separators(document.mesh.vertex_count()).c_str());
+    ImGui::Text("faces     %s", with_separators(document.mesh.face_count()).c_str());
+    ImGui::Text("edges     %s", with_separators(t.edge_count()).c_str());
+    ImGui::Text("boundary  %s   singular  %s", with_separators(t.boundary_edge_count).c_str(),
+                with_separators(t.singular_edge_count).c_str());
+    for (const std::string& note : document.report.notes)
+        ImGui::TextWrapped("note: %s", note.c_str());
+}
+
+void display_panel(const PanelContext& ui)
+{
+    if (!ImGui::CollapsingHeader("Display"))
+        return;
+    DisplayOptions d = ui.state.display;
+    if (ui.radio("flat", d.shading == Shading::Flat))
+        d.shading = Shading::Flat;
+    ImGui::SameLine();
+    if (ui.radio("smooth", d.shading == Shading::Smooth))
+        d.shading = Shading::Smooth;
+    ui.checkbox("wireframe (polygon edges)", &d.wireframe);
+    ui.checkbox("boundary and singular edges", &d.boundary_edges);
+    ui.checkbox("vertex points", &d.vertex_points);
+    ui.checkbox("tint back faces", &d.back_face_tint);
+    ImGui::SliderFloat("edge width", &d.edge_width_px, 1.0f, 4.0f, "%.1f px");
+    ImGui::SliderFloat("point size", &d.point_size_px, 1.0f, 12.0f, "%.0f px");
+    ImGui::ColorEdit3("surface", d.surface_color.data(), ImGuiColorEditFlags_NoInputs);
+    ImGui::SameLine();
+    ImGui::ColorEdit3("background", d.background.data(), ImGuiColorEditFlags_NoInputs);
+    const DisplayOptions& now = ui.state.display;
+    if (d.shading != now.shading || d.wireframe != now.wireframe ||
+        d.boundary_edges != now.boundary_edges || d.vertex_points != now.vertex_points ||
+        d.back_face_tint != now.back_face_tint || d.edge_width_px != now.edge_width_px ||
+        d.point_size_px != now.point_size_px || d.surface_color != now.surface_color ||
+        d.background != now.background)
+        ui.give(cmd::SetDisplay{d});
+}
+
+void camera_panel(const PanelContext& ui)
+{
+    using namespace cmd;
+    if (!ImGui::CollapsingHeader("Camera"))
+        return;
+    if (ui.radio("perspective", ui.camera.projection == Projection::Perspective))
+        ui.give(SetProjection{Projection::Perspective});
+    ImGui::SameLine();
+    if (ui.radio("orthographic", ui.camera.projection == Projection::Orthographic))
+        ui.give(SetProjection{Projection::Orthographic});
+    if (ui.radio("turntable", ui.state.orbit == OrbitStyle::Turntable))
+        ui.give(SetOrbit{OrbitStyle::Turntable});
+    ImGui::SameLine();
+    if (ui.radio("trackball", ui.state.orbit == OrbitStyle::Trackball))
+        ui.give(SetOrbit{OrbitStyle::Trackball});
+    int column = 0;
+    for (StandardView v : {StandardView::Front, StandardView::Right, StandardView::Top,
+                           StandardView::Back, StandardView::Left, StandardView::Bottom})
+    {
+        if (column++ % 3 != 0)
+            ImGui::SameLine();
+        if (ImGui::Button(view_name(v), ImVec2(86, 0)))
+            ui.give(SetView{v});
+        ui.track(std::string("view ") + view_name(v));
+    }
+    if (ImGui::Button("Frame all", ImVec2(-1, 0)))
+        ui.give(FrameAll{});
+    ui.track("Frame all");
+}
+
+} // namespace meshfair::app

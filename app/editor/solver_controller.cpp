@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/editor/solver_controller.h"
+
+#include <utility>
+
+namespace meshfair::app {
+
+namespace {
+
+// The base shape with the document's connectivity, for a restart (the solver keeps it).
+Mesh base_mesh(const Document& d)
+{
+    Mesh base;
+    base.positions = d.base_positions;
+    base.face_offsets = d.mesh.face_offsets;
+    base.face_vertices = d.mesh.face_vertices;
+    return base;
+}
+
+} // namespace
+
+SolverController::SolverController(Document& document, History& history)
+    : document_(document), history_(history)
+{
+}
+
+const std::vector<std::string>& SolverController::problems()
+{
+    const DocumentVersions& v = document_.versions;
+    if (!problems_for_ || problems_for_->sets != v.sets || problems_for_->settings != v.settings)
+    {
+        problems_ = constraint_problems(document_.sets, document_.solver);
+        problems_for_ = v;
+    }
+    return problems_;
+}
+
+void SolverController::clear()
+{
+    run_open_ = false;
+    run_before_.reset();
+    solver_.clear();
+    restarted_.reset();
+    seen_.reset();
+    problems_for_.reset();
+}
+
+void SolverController::start_from_base()
+{
+    document_.steps_from_base = 0;
+    document_.reproducible = true;
+    restarted_.reset(); // the next update restarts from the base
+    seen_.reset();
+}
+
+void SolverController::restart_if_needed()
+{
+    const DocumentVersions& v = document_.versions;
+    const auto same = [&](const DocumentVersions& w) {
+        return w.sets == v.sets && w.settings == v.settings && w.positions == v.positions &&
+               w.base == v.base;
+    };
+    if (seen_ && same(*seen_))
+        return;
+    seen_ = v;
+    if (!problems().empty())
+    {
+        solver_.clear();
+        restarted_.reset(); // a valid recipe restarts from scratch
+        return;
+    }
+    const std::vector<ConstraintSet>& sets = document_.sets;
+    const SolverSettings& settings = document_.solver;
+    // An edit of the shape (undo, reset, noise, apply) starts the run again from it.
+    const bool shape_edited = !restarted_ || restarted_->versions.positions != v.positions ||
+                              restarted_->versions.base != v.base;
+    if (!shape_edited && same_run(sets, settings, restarted_->sets, restarted_->solver, false))
+    {
+        // Names, colours, visibility or the pace changed: nothing for the solver.
+    }
+    else if (!shape_edited && same_run(sets, settings, restarted_->sets, restarted_->solver, true))
+    {
+        // Only the pins moved: new right-hand sides, the run goes on.
+        const Recipe recipe =
+            build_recipe(sets, settings, document_.mesh, document_.base_positions, 0);
+        std::vector<Scalar> targets;
+        for (const Vec3& t : recipe.hard->targets)
+            targets.insert(targets.end(), t.begin(), t.end());
+        if (targets.empty()) // no set has targets any more: the pins' base places
+            for (const Index vertex : recipe.hard->vertices)
+                for (size_t a = 0; a < 3; ++a)
+                    targets.push_back(
+                        document_.base_positions[3 * static_cast<size_t>(vertex) + a]);
+        solver_.move_hard_targets(targets);
+        if (document_.steps_from_base > 0)
+            document_.reproducible = false;
+    }
+    else
+    {
+        // From the base (the recipe's input shape), starting at the current positions.
+        const bool at_base = document_.steps_from_base == 0;
+        solver_.restart(base_mesh(document_), document_.order,
+                        build_recipe(sets, settings, document_.mesh, document_.base_positions, 0),
+                        at_base ? std::vector<Scalar>{} : document_.mesh.positions,
+                        document_.draw_data.vertex_face_offsets, document_.draw_data.vertex_faces);
+        if (!at_base)
+            document_.reproducible = false;
+        steps_at_restart_ = document_.steps_from_base;
+        if (run_open_)
+            solver_.set_playing(true);
+    }
+    restarted_ = RunInputs{sets, settings, v};
+}
+
+bool SolverController::update()
+{
+    restart_if_needed();
+    bool fresh = false;
+    if (solver_.take(incoming_, display_))
+    {
+        std::swap(incoming_, document_.mesh.positions);
+        document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
+        document_.modified = true;
+        document_.versions.bump(kPositions);
+        // The run's own positions: no restart for them.
+        if (seen_)
+            seen_->positions = document_.versions.positions;
+        if (restarted_)
+            restarted_->versions.positions = document_.versions.positions;
+        fresh = true;
+    }
+    if (run_open_ && !solver_.status().playing && solver_.status().ready)
+    {
+        run_open_ = false; // converged, or the frames asked for are done
+        record_segment();
+    }
+    return fresh;
+}
+
+bool SolverController::play(int frames, std::string& why)
+{
+    if (run_open_)
+        return true;
+    update(); // the recipe restarted if it changed
+    if (!problems().empty())
+    {
+        why = "cannot solve: " + problems().front();
+        return false;
+    }
+    run_before_ = capture(document_, kPositions);
+    run_open_ = true;
+    solver_.set_playing(true, frames);
+    return true;
+}
+
+void SolverController::record_segment()
+{
+    if (!run_before_)
+        return;
+    const int steps = document_.steps_from_base - *run_before_->steps_from_base;
+    history_.record("solve " + std::to_string(steps) + " steps", std::move(*run_before_),
+                    document_);
+    run_before_.reset();
+}
+
+void SolverController::pause()
+{
+    if (!run_open_)
+        return;
+    run_open_ = false; // before update(), which would close a converged run
+    solver_.set_playing(false);
+    solver_.wait_idle();
+    update(); // the last frame's positions
+    record_segment();
+}
+
+void SolverController::segment()
+{
+    if (!run_open_)
+        return;
+    update();
+    record_segment();
+    run_before_ = capture(document_, kPositions);
+}
+
+bool SolverController::take_frame()
+{
+    const bool published = solver_.wait_published();
+    update();
+    return published;
+}
+
+bool SolverController::step(int n, std::string& why)
+{
+    pause();
+    update();
+    if (!problems().empty())
+    {
+        why = "cannot solve: " + problems().front();
+        return false;
+    }
+    solver_.step_now(n);
+    update();
+    return true;
+}
+
+void SolverController::wait_for_heat()
+{
+    update(); // a pending restart first
+    solver_.wait_idle();
+    update();
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/editor/document.h"
+#include "app/editor/history.h"
+#include "app/editor/live_solver.h"
+
+namespace meshfair::app {
+
+//! \brief Live solving of a document: the LiveSolver restarted when the recipe (the sets
+//! and settings) or the shape changed by an edit, precomputed once per change and never per
+//! frame; runs (play, pause, step) and what they leave in the history. Each Play→Pause
+//! segment is an undo step, and a segment also ends where a setting changes during the
+//! run, so any shape seen at a pause or at a change can be returned to.
+class SolverController
+{
+public:
+    SolverController(Document& document, History& history);
+
+    //! \brief Why the sets cannot run (constraint_problems), for the sets and settings as
+    //! they are now; empty when they can.
+    const std::vector<std::string>& problems();
+    //! \brief Starts live solving; `frames` > 0: pauses by itself after that many frames.
+    //! False (with `why`) when the sets cannot run.
+    bool play(int frames, std::string& why);
+    //! Stops playing: the run since play (or the last segment) is one undo step.
+    void pause();
+    bool playing() const { return run_open_; }
+    //! While playing: the run so far becomes an undo step and the run goes on.
+    void segment();
+    //! \brief While playing: waits for the solver's next frame and takes it (update());
+    //! false when playing stopped instead. For scripts, which need no display's pace.
+    bool take_frame();
+    //! \brief Runs `n` steps now on this thread (the caller records the undo step); false
+    //! (with `why`) when the sets cannot run.
+    bool step(int n, std::string& why);
+    void set_iterations_per_frame(int n) { solver_.set_iterations_per_frame(n); }
+    //! The shape is the base: no steps from it, and the next run starts there.
+    void start_from_base();
+    //! A new document: nothing runs until the next update.
+    void clear();
+
+    //! \brief Once per frame: restarts the solver when the recipe or the shape changed since
+    //! the last restart, takes the newest positions (bumping the positions' version) and
+    //! closes a run that converged. True when new positions came (display() holds their
+    //! geometry, computed on the solver's thread).
+    bool update();
+    const DisplayGeometry& display() const { return display_; }
+
+    void set_heat(std::optional<EnergyTerm> term) { solver_.set_heat(term); }
+    bool take_heat(std::vector<float>& heat) { return solver_.take_heat(heat); }
+    //! Waits for the solver's shares of the heat map's term (scripts).
+    void wait_for_heat();
+    SolverStatus status() const { return solver_.status(); }
+    std::vector<EnergySample> energies() const { return solver_.energies(); }
+
+private:
+    //! The run since it began (or since the last segment) as one undo step.
+    void record_segment();
+    void restart_if_needed();
+
+    Document& document_;
+    History& history_;
+    LiveSolver solver_;
+    std::vector<std::string> problems_;
+    std::optional<DocumentVersions> problems_for_;
+    //! The sets and settings of the solver's last restart, and the versions it saw.
+    struct RunInputs
+    {
+        std::vector<ConstraintSet> sets;
+        SolverSettings solver;
+        DocumentVersions versions;
+    };
+    std::optional<RunInputs> restarted_;
+    std::optional<DocumentVersions> seen_; // the versions of the last restart decision
+    int steps_at_restart_ = 0;             // steps_from_base when the solver last restarted
+    bool run_open_ = false;                // play() began a run not yet recorded
+    std::optional<EditState> run_before_;
+    DisplayGeometry display_;      // the solver's newest display geometry
+    std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown
+};
+
+} // namespace meshfair::app

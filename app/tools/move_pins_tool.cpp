@@ -1,0 +1,57 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/tools/move_pins_tool.h"
+
+namespace meshfair::app {
+
+bool MovePinsTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
+                         std::vector<Command>&)
+{
+    camera_ = *context.view.camera;
+    view_ = context.view.view;
+    set_.clear();
+    if (!context.pin_handles)
+        return false;
+    double best = kGrabRadiusPx * kGrabRadiusPx;
+    for (const GrabHandle& h : context.pin_handles())
+    {
+        const glm::dvec3 w = camera_.project(h.point, view_.width, view_.height);
+        const double d2 = (w.x - at.x) * (w.x - at.x) + (w.y - at.y) * (w.y - at.y);
+        if (w.z >= 0 && w.z <= 1 && d2 < best)
+        {
+            best = d2;
+            set_ = h.set;
+            depth_ = w.z;
+        }
+    }
+    if (set_.empty())
+        return false;
+    from_ = camera_.unproject({at.x, at.y, depth_}, view_.width, view_.height);
+    pressed_at_ = at;
+    return true;
+}
+
+void MovePinsTool::move(ScreenPoint to, std::vector<Command>& out)
+{
+    const glm::dvec3 p = camera_.unproject({to.x, to.y, depth_}, view_.width, view_.height);
+    const glm::dvec3 d = p - from_;
+    if (d == glm::dvec3(0.0))
+        return;
+    out.push_back(cmd::MovePins{set_, {d.x, d.y, d.z}});
+    from_ = p;
+}
+
+void MovePinsTool::release(ScreenPoint at, std::vector<Command>& out)
+{
+    move(at, out);
+}
+
+ToolOverlay MovePinsTool::overlay(ScreenPoint cursor, const ToolSettings&, bool active) const
+{
+    // The reach of a press, and while dragging the way from where the pins were grabbed.
+    if (active)
+        return {ToolOverlay::Shape::Polyline, {pressed_at_, cursor}, 0};
+    return {ToolOverlay::Shape::Circle, {cursor}, kGrabRadiusPx};
+}
+
+} // namespace meshfair::app

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "app/tools/tool_registry.h"
+
+#include "app/tools/aim_normals_tool.h"
+#include "app/tools/brush_tool.h"
+#include "app/tools/click_tool.h"
+#include "app/tools/lasso_tool.h"
+#include "app/tools/move_pins_tool.h"
+#include "app/tools/rectangle_tool.h"
+#include "app/tools/selection_gesture.h"
+
+namespace meshfair::app {
+
+static_assert(static_cast<int>(ToolKind::AimNormals) + 1 == kToolKinds);
+
+ToolRegistry::ToolRegistry()
+{
+    const auto slot = [&](ToolKind kind) -> std::unique_ptr<InteractiveTool>& {
+        return tools_[static_cast<size_t>(kind)];
+    };
+    slot(ToolKind::Click) =
+        std::make_unique<SelectionGesture>(ToolKind::Click, std::make_unique<ClickTool>());
+    slot(ToolKind::Brush) =
+        std::make_unique<SelectionGesture>(ToolKind::Brush, std::make_unique<BrushTool>());
+    slot(ToolKind::Rectangle) =
+        std::make_unique<SelectionGesture>(ToolKind::Rectangle, std::make_unique<RectangleTool>());
+    slot(ToolKind::Lasso) =
+        std::make_unique<SelectionGesture>(ToolKind::Lasso, std::make_unique<LassoTool>());
+    slot(ToolKind::MovePins) = std::make_unique<MovePinsTool>();
+    slot(ToolKind::AimNormals) = std::make_unique<AimNormalsTool>();
+}
+
+InteractiveTool* ToolRegistry::find(ToolKind kind) const
+{
+    const auto k = static_cast<size_t>(kind);
+    return k < tools_.size() ? tools_[k].get() : nullptr;
+}
+
+} // namespace meshfair::app
