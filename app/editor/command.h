@@ -288,4 +288,15 @@ struct Interaction
 //! A short name of the command, for messages ("create set", "undo").
 std::string_view command_name(const Command& command);
 
+//! What a command does to the document, for the undo step it makes.
+struct CommandSpec
+{
+    std::string label;             //!< the undo step's name
+    unsigned captures = 0;         //!< the parts its undo step keeps (0: not an undo step)
+    unsigned bumps = 0;            //!< the parts whose versions it bumps when done
+    bool stops_run = false;        //!< a run playing is paused (its segment recorded) first
+    bool waits_for_gesture = true; //!< refused while a tool's gesture is under way
+};
+CommandSpec spec_of(const Command& command);
+
 } // namespace meshfair::app

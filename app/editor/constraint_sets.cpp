@@ -260,6 +260,8 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
 {
     SolverSettings x = a_settings, y = b_settings;
     x.iterations_per_frame = y.iterations_per_frame = 0; // the pace, not the recipe
+    x.steps_per_run = y.steps_per_run = 0;
+    x.until_converged = y.until_converged = false;
     if (!(x == y) || a.size() != b.size())
         return false;
     for (size_t k = 0; k < a.size(); ++k)

@@ -61,6 +61,10 @@ struct SolverSettings
     Scalar lambda = 0.5;
     Scalar tolerance = 0;
     int iterations_per_frame = 1;
+    //! Play runs this many steps, then pauses (the pace of a run, not part of the recipe).
+    int steps_per_run = 20;
+    //! Play runs until the energy settles instead (the tolerance, or 1e-7 when it is 0).
+    bool until_converged = false;
     Scalar anchor_mu = 1;
     Scalar centroid_mu = 1;
     CentroidDenominator denominator = CentroidDenominator::Paper;

@@ -70,14 +70,32 @@ void LiveSolver::clear()
     fresh_ = false;
 }
 
-void LiveSolver::set_playing(bool playing, int frames)
+void LiveSolver::set_playing(bool playing, int frames, int steps, Scalar stop_tolerance)
 {
     {
         std::lock_guard lock(mutex_);
+        const bool was = status_.playing;
         status_.playing = playing && (run_ != nullptr || restart_.has_value() || busy_);
-        frames_left_ = playing ? std::max(frames, 0) : 0;
-        if (playing)
+        if (playing && !was)
+        {
+            frames_left_ = std::max(frames, 0);
+            steps_left_ = std::max(steps, 0);
+            stop_tolerance_ = std::max(stop_tolerance, Scalar(0));
+            status_.played = 0;
+            status_.goal = steps_left_;
             status_.converged = false;
+        }
+        if (!playing)
+            frames_left_ = steps_left_ = 0;
+    }
+    wake_.notify_all();
+}
+
+void LiveSolver::resume()
+{
+    {
+        std::lock_guard lock(mutex_);
+        status_.playing = run_ != nullptr || restart_.has_value() || busy_;
     }
     wake_.notify_all();
 }
@@ -200,7 +218,10 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
 {
     busy_ = true;
     const std::uint64_t generation = generation_;
-    const Scalar tolerance = run_->session().recipe().tolerance;
+    const Scalar tolerance =
+        stop_tolerance_ > 0 ? stop_tolerance_ : run_->session().recipe().tolerance;
+    if (status_.playing && steps_left_ > 0)
+        n = std::min(n, steps_left_); // the run's last frame: only the steps left
     TermEnergies before = energies_.empty() ? run_->energy() : energies_.back().energy;
     const std::optional<EnergyTerm> heat = heat_term_;
     lock.unlock();
@@ -233,8 +254,14 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         status_.steps += done;
         status_.step_ms = ms;
         status_.converged = converged_now;
-        if (converged_now || (frames_left_ > 0 && --frames_left_ == 0))
-            status_.playing = false;
+        if (status_.playing)
+        {
+            status_.played += done;
+            const bool steps_done = steps_left_ > 0 && (steps_left_ -= done) <= 0;
+            const bool frames_done = frames_left_ > 0 && --frames_left_ == 0;
+            if (converged_now || steps_done || frames_done)
+                status_.playing = false;
+        }
         energies_.push_back({status_.steps, energy});
         ++status_.energy_version;
         if (energies_.size() > kMaxEnergySamples) // keep the whole curve, at half the detail

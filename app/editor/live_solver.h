@@ -37,6 +37,8 @@ struct SolverStatus
     bool playing = false;             //!< stepping on the worker thread
     bool converged = false;           //!< stopped by the recipe's tolerance
     int steps = 0;                    //!< steps of the current run
+    int played = 0;                   //!< steps since the last play began
+    int goal = 0;                     //!< steps that play runs (0: until it settles)
     std::string error;                //!< why the last restart failed (the recipe did not fit)
     double step_ms = 0;               //!< the last frame's steps, on the worker
     double precompute_ms = 0;         //!< the last precomputation
@@ -72,8 +74,13 @@ public:
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
 
-    //! Plays (on the worker) or pauses; with `frames` > 0, pauses by itself after that many.
-    void set_playing(bool playing, int frames = 0);
+    //! \brief Plays (on the worker) or pauses. It pauses by itself after `frames` frames or
+    //! `steps` steps when > 0 (the last frame runs only the steps left), and when the
+    //! relative decrease of the energy in a step falls below `stop_tolerance` (> 0) or the
+    //! recipe's tolerance.
+    void set_playing(bool playing, int frames = 0, int steps = 0, Scalar stop_tolerance = 0);
+    //! Plays on after a restart during a run, with what was left of its steps and frames.
+    void resume();
     //! \brief New targets for the recipe's hard vertices (3 per vertex, in the recipe's
     //! order): the pins move there and the run goes on, with no precomputation (hard
     //! vertices are fixed: their targets are right-hand side only). Publishes the positions.
@@ -123,6 +130,8 @@ private:
     bool quit_ = false;
     int iterations_per_frame_ = 1;
     int frames_left_ = 0;          // > 0: frames to play before pausing
+    int steps_left_ = 0;           // > 0: steps to play before pausing
+    Scalar stop_tolerance_ = 0;    // > 0: pause when a step decreases the energy less
     std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest

@@ -114,6 +114,8 @@ Json settings_json(const SolverSettings& s)
             {"lambda", s.lambda},
             {"tolerance", s.tolerance},
             {"iterations_per_frame", s.iterations_per_frame},
+            {"steps_per_run", s.steps_per_run},
+            {"until_converged", s.until_converged},
             {"anchor_mu", s.anchor_mu},
             {"centroid_mu", s.centroid_mu},
             {"exact_denominator", s.denominator == CentroidDenominator::Exact},
@@ -133,6 +135,8 @@ SolverSettings settings_of(const Json& j)
     s.lambda = j.at("lambda").get<Scalar>();
     s.tolerance = j.at("tolerance").get<Scalar>();
     s.iterations_per_frame = j.at("iterations_per_frame").get<int>();
+    s.steps_per_run = j.value("steps_per_run", s.steps_per_run); // older files have none
+    s.until_converged = j.value("until_converged", s.until_converged);
     s.anchor_mu = j.at("anchor_mu").get<Scalar>();
     s.centroid_mu = j.at("centroid_mu").get<Scalar>();
     s.denominator = j.at("exact_denominator").get<bool>() ? CentroidDenominator::Exact

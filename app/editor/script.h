@@ -56,6 +56,18 @@ struct Script
 Script parse_script(const std::string& text, const std::string& name);
 Script read_script(const std::string& path);
 
+//! One input event of `type` at `p` (framebuffer pixels).
+InputEvent input_event(InputEvent::Type type, ScreenPoint p, MouseButton button = MouseButton::Left,
+                       Modifiers mods = {});
+//! \brief A drag as a mouse gives it: a move to the first point, a press, moves through the
+//! others, a release at the last (a click: two equal points).
+std::vector<InputEvent> drag_events(const std::vector<ScreenPoint>& points, MouseButton button,
+                                    Modifiers mods);
+
+//! \brief A key chord as a keyboard gives it: the modifiers pressed, the key pressed (with
+//! its character when it types one), the key released, the modifiers released.
+std::vector<InputEvent> key_events(const KeyChord& chord);
+
 //! What playing a script needs from the program around the session.
 class ScriptHost
 {

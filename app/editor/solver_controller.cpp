@@ -108,7 +108,7 @@ void SolverController::restart_if_needed()
             document_.reproducible = false;
         steps_at_restart_ = document_.steps_from_base;
         if (run_open_)
-            solver_.set_playing(true);
+            solver_.resume();
     }
     restarted_ = RunInputs{sets, settings, v};
 }
@@ -150,7 +150,10 @@ bool SolverController::play(int frames, std::string& why)
     }
     run_before_ = capture(document_, kPositions);
     run_open_ = true;
-    solver_.set_playing(true, frames);
+    // A run stops by itself: after its steps, or once the energy settles.
+    const SolverSettings& s = document_.solver;
+    solver_.set_playing(true, frames, frames > 0 || s.until_converged ? 0 : s.steps_per_run,
+                        s.until_converged && s.tolerance == 0 ? Scalar(1e-7) : Scalar(0));
     return true;
 }
 
@@ -186,6 +189,7 @@ void SolverController::segment()
 
 bool SolverController::take_frame()
 {
+    update(); // a change of the recipe restarts the run before its next frame
     const bool published = solver_.wait_published();
     update();
     return published;

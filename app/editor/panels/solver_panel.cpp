@@ -52,6 +52,17 @@ void solver_panel(const PanelContext& ui)
         dragged = true;
     }
     ui.track("steps/frame");
+    if (!s.until_converged)
+    {
+        if (ImGui::SliderInt("steps per run", &s.steps_per_run, 1, 2000, "%d",
+                             ImGuiSliderFlags_Logarithmic))
+        {
+            s.steps_per_run = std::clamp(s.steps_per_run, 1, 100000);
+            dragged = true;
+        }
+        ui.track("steps per run");
+    }
+    toggled |= ui.checkbox("until converged", &s.until_converged);
     float tolerance = float(s.tolerance);
     if (ImGui::InputFloat("tolerance", &tolerance, 0, 0, "%.2e"))
     {
@@ -93,6 +104,10 @@ void solver_panel(const PanelContext& ui)
     if (ui.button("Apply"))
         ui.give(ApplyShape{});
     const SolverStatus& st = state.solver;
+    if (state.playing && st.goal > 0)
+        ImGui::Text("running: step %d of %d", st.played, st.goal);
+    else if (state.playing)
+        ImGui::Text("running: step %d, until the energy settles", st.played);
     ImGui::TextWrapped("%d steps from the base%s", document.steps_from_base,
                        document.reproducible ? "" : " (recipe changed during the run)");
     if (!state.offscreen) // a time would make offscreen frames differ from run to run

@@ -1,0 +1,324 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+// The editor as a person drives it, without GL: raw input through the input router and the
+// interface (Dear ImGui laid out, never drawn) to the commands, with a RecordingRenderer.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <set>
+
+#include "app/editor/editor_frame.h"
+#include "app/editor/editor_session.h"
+#include "app/editor/interface_context.h"
+#include "app/editor/key_map.h"
+#include "app/editor/script.h"
+#include "app/render/recording_renderer.h"
+#include "core/geometry/face_geometry.h"
+#include "core/io/io.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kWidth = 1280, kHeight = 800;
+
+std::size_t count(const SelectionMask& m)
+{
+    return static_cast<std::size_t>(std::count(m.begin(), m.end(), 1));
+}
+
+// An editor on a mesh file with its interface, no window and no GL.
+struct Editor
+{
+    RecordingRenderer renderer;
+    EditorSession session;
+    InterfaceContext layer{false};
+    EditorFrame frame{session, &layer};
+
+    explicit Editor(const fs::path& mesh) : session(load_document(mesh.string()), renderer)
+    {
+        session.state().offscreen = true;
+        session.set_recovery_root({});
+        run();
+        session.camera().frame(session.document().box, session.aspect());
+        run();
+    }
+    const Document& doc() const { return session.document(); }
+    void run(int frames = 1)
+    {
+        for (int k = 0; k < frames; ++k)
+        {
+            frame.run({kWidth, kHeight, kWidth, kHeight}, 1.0 / 60);
+            frame.draw(); // the renderer gets what changed, as in a window
+        }
+    }
+    // Pushes events, then runs frames until the router has handed them all out.
+    void input(const std::vector<InputEvent>& events)
+    {
+        for (const InputEvent& e : events)
+            frame.input().push(e);
+        while (frame.input().pending())
+            run();
+        run();
+    }
+    void drag(std::vector<ScreenPoint> points, Modifiers mods = {})
+    {
+        input(drag_events(points, MouseButton::Left, mods));
+    }
+    void click(double x, double y) { drag({{x, y, 0}, {x, y, 0}}); }
+    void key(const char* chord) { input(key_events(*parse_key_chord(chord))); }
+    void type(const std::string& text)
+    {
+        std::vector<InputEvent> events;
+        for (const char c : text)
+        {
+            InputEvent e;
+            e.type = InputEvent::Type::Char;
+            e.key = c;
+            events.push_back(e);
+        }
+        input(events); // all queued at once, as fast typing queues them
+    }
+    WidgetRect widget(const std::string& label) const
+    {
+        const std::optional<WidgetRect> w = frame.ui().widget(label);
+        REQUIRE_MESSAGE(w.has_value(), label);
+        return *w;
+    }
+    void click_widget(const std::string& label)
+    {
+        const WidgetRect w = widget(label);
+        click(w.center_x(), w.center_y());
+    }
+    // The middle of the 3D view, in framebuffer pixels.
+    ScreenPoint view_point(double fx, double fy) const
+    {
+        const ViewRect& v = session.view_rect();
+        return {v.x + fx * v.width, v.y + fy * v.height, 0};
+    }
+};
+
+fs::path bunny_copy()
+{
+    const fs::path dir = test::temp_dir();
+    const fs::path p = dir / "bunny.obj";
+    fs::copy_file(test::assets_dir() / "bunny.obj", p);
+    return p;
+}
+
+} // namespace
+
+TEST_SUITE("Editor input")
+{
+    TEST_CASE("the key map: every chord gives its row's command, and no chord is bound twice")
+    {
+        std::set<std::tuple<int, bool, bool, bool>> seen;
+        std::size_t chords = 0;
+        for (const KeyBinding& b : key_bindings())
+            for (const KeyAction& k : b.keys)
+            {
+                ++chords;
+                CHECK_MESSAGE(seen.insert({k.chord.key, k.chord.mods.shift, k.chord.mods.ctrl,
+                                           k.chord.mods.alt})
+                                  .second,
+                              b.input);
+                const std::optional<Command> c = command_for_key(k.chord);
+                REQUIRE(c.has_value());
+                CHECK(c->index() == k.command.index());
+            }
+        CHECK(chords > 50);
+        // Modifiers must match exactly: Ctrl+Shift+A is no binding, Shift+R a set.
+        CHECK_FALSE(command_for_key(*parse_key_chord("ctrl+shift+a")).has_value());
+        CHECK(
+            std::holds_alternative<cmd::CreateSet>(*command_for_key(*parse_key_chord("shift+r"))));
+        CHECK(std::holds_alternative<cmd::SetTool>(*command_for_key(*parse_key_chord("r"))));
+        CHECK_FALSE(parse_key_chord("hyper+q").has_value());
+    }
+
+    TEST_CASE("a click on a panel never reaches the view: the selection stays, the button acts")
+    {
+        Editor e(bunny_copy());
+        e.key("r"); // the rectangle tool, through the key map
+        REQUIRE(e.session.tool() == ToolKind::Rectangle);
+        e.drag({e.view_point(0.3, 0.3), e.view_point(0.45, 0.4), e.view_point(0.6, 0.6)});
+        const std::size_t selected = count(e.doc().selected_vertices);
+        REQUIRE(selected > 100);
+        REQUIRE(e.session.history().undo_count() == 1);
+        // An empty part of the side panel, below its last section.
+        const WidgetRect grow = e.widget("Grow");
+        e.click(grow.x1 + 60, grow.center_y());
+        CHECK(count(e.doc().selected_vertices) == selected);
+        CHECK(e.session.history().undo_count() == 1);
+        // A button of the panel with the tool active: it acts on the selection.
+        e.click_widget("Grow");
+        CHECK(count(e.doc().selected_vertices) > selected);
+        CHECK(e.session.history().undo_count() == 2);
+        CHECK(e.session.history().undo_label() == "select grow");
+        // And the menus: Select > invert; the renderer shows what is selected.
+        const std::size_t grown = count(e.doc().selected_vertices);
+        e.click_widget("Select");
+        e.click_widget("Select/invert");
+        CHECK(count(e.doc().selected_vertices) ==
+              static_cast<std::size_t>(e.doc().mesh.vertex_count()) - grown);
+        CHECK(e.session.history().undo_label() == "select invert");
+        CHECK(e.renderer.selected_vertices() == e.doc().selected_vertices);
+    }
+
+    TEST_CASE("keys typed into a field never trigger a binding; Ctrl+A then typing replaces")
+    {
+        const fs::path mesh = bunny_copy();
+        Editor e(mesh);
+        e.key("ctrl+a");
+        e.key("shift+p"); // a pin set of everything
+        REQUIRE(e.doc().sets.size() == 1);
+        e.click_widget("sets/pin 1/rename");
+        e.key("ctrl+a");
+        e.type("rrr wide"); // 'r' would pick the rectangle tool, space would play
+        e.key("enter");
+        CHECK(e.doc().sets[0].name == "rrr wide");
+        CHECK(e.session.tool() == ToolKind::Navigate);
+        CHECK_FALSE(e.session.playing());
+
+        // Save as: the dialog's name field holds "bunny.obj"; Ctrl+A selects it and the
+        // typed name replaces it, every character of a fast burst kept.
+        e.key("ctrl+shift+s");
+        e.key("ctrl+a");
+        e.type("crown-of-the-head.ply");
+        e.key("enter");
+        const fs::path saved = mesh.parent_path() / "crown-of-the-head.ply";
+        CHECK(fs::exists(saved));
+        CHECK(e.doc().path == saved.string());
+        CHECK(e.session.state().message == "saved " + saved.string());
+        // Ctrl+S now saves to the new name.
+        fs::remove(saved);
+        e.key("ctrl+s");
+        CHECK(fs::exists(saved));
+    }
+
+    TEST_CASE("M and D over the view: the pins follow the cursor, the normals turn, one step each")
+    {
+        Editor e(bunny_copy());
+        e.key("r");
+        e.drag({e.view_point(0.35, 0.35), e.view_point(0.45, 0.45)});
+        e.key("shift+p");
+        e.key("v"); // faces
+        e.drag({e.view_point(0.5, 0.5), e.view_point(0.6, 0.6)});
+        e.key("shift+n");
+        REQUIRE(e.doc().sets.size() == 2);
+        const std::size_t steps = e.session.history().undo_count();
+        // Hovering with each tool draws its reach and acts on nothing.
+        for (const char* tool : {"m", "d"})
+        {
+            e.key(tool);
+            e.input({input_event(InputEvent::Type::MouseMove, e.view_point(0.2, 0.2)),
+                     input_event(InputEvent::Type::MouseMove, e.view_point(0.7, 0.3))});
+            CHECK(e.session.state().overlay.shape == ToolOverlay::Shape::Circle);
+        }
+        CHECK(e.session.history().undo_count() == steps);
+
+        // A drag from a pin's glyph moves the set's targets with the cursor.
+        e.key("m");
+        const ConstraintSet& pins = e.doc().sets[0];
+        const size_t i = 3 * static_cast<size_t>(pins.vertices[0]);
+        const std::vector<Scalar>& x = e.doc().mesh.positions;
+        const glm::dvec3 w = e.session.camera().project(
+            {x[i], x[i + 1], x[i + 2]}, e.session.view_rect().width, e.session.view_rect().height);
+        const ScreenPoint from{w.x + e.session.view_rect().x, w.y + e.session.view_rect().y, 0};
+        e.drag({from, {from.x + 10, from.y, 0}, {from.x + 30, from.y - 20, 0}});
+        REQUIRE(e.doc().sets[0].targets.size() == pins.vertices.size());
+        // Targets away from the base; the solver puts the pins there at once.
+        const std::vector<Scalar>& base_shape = e.doc().base_positions;
+        const Vec3 target = e.doc().sets[0].targets[0];
+        CHECK(std::abs(target[0] - base_shape[i]) + std::abs(target[1] - base_shape[i + 1]) +
+                  std::abs(target[2] - base_shape[i + 2]) >
+              0);
+        e.run();
+        CHECK(x[i] == target[0]);
+        CHECK(x[i + 1] == target[1]);
+        CHECK(x[i + 2] == target[2]);
+        CHECK(e.session.history().undo_count() == steps + 1);
+        CHECK(e.session.history().undo_label() == "move pins");
+
+        // A drag from a normal arrow's base turns the set's direction.
+        e.key("d");
+        const ConstraintSet& normals = e.doc().sets[1];
+        const Vec3 c = face_centroid(e.doc().mesh, x, normals.faces[0]);
+        const glm::dvec3 cw = e.session.camera().project(
+            {c[0], c[1], c[2]}, e.session.view_rect().width, e.session.view_rect().height);
+        const ScreenPoint base{cw.x + e.session.view_rect().x, cw.y + e.session.view_rect().y, 0};
+        e.drag({base, {base.x + 40, base.y, 0}, {base.x + 80, base.y + 10, 0}});
+        REQUIRE(e.doc().sets[1].normals.size() == normals.faces.size());
+        CHECK(e.session.history().undo_count() == steps + 2);
+        CHECK(e.session.history().undo_label() == "normal direction");
+        e.key("ctrl+z");
+        CHECK(e.doc().sets[1].normals.empty());
+    }
+
+    TEST_CASE("Play runs its steps and stops; each run and each change during one is a step")
+    {
+        Editor e(bunny_copy());
+        e.key("r");
+        e.drag({e.view_point(0.3, 0.3), e.view_point(0.5, 0.5)});
+        e.key("shift+r");
+        e.click_widget("Play");
+        while (e.session.playing())
+            e.session.take_frame();
+        e.run();
+        CHECK(e.doc().steps_from_base == 20); // the default steps per run
+        CHECK(e.session.history().undo_label() == "solve 20 steps");
+        const std::vector<Scalar> after_first = e.doc().mesh.positions;
+
+        // A setting changed during a run: the run so far is a step, then the change.
+        SolverSettings s = e.doc().solver;
+        s.steps_per_run = 400;
+        e.session.dispatch(cmd::SetSolverSettings{s});
+        e.key("space");
+        REQUIRE(e.session.playing());
+        e.session.take_frame();
+        e.session.take_frame();
+        s.lambda = 0.3;
+        e.session.dispatch(cmd::SetSolverSettings{s});
+        const std::vector<Scalar> at_change = e.doc().mesh.positions;
+        const int steps_at_change = e.doc().steps_from_base;
+        e.session.take_frame();
+        e.key("space");
+        REQUIRE_FALSE(e.session.playing());
+        CHECK(e.doc().steps_from_base > steps_at_change);
+        // Undo: the segment after the change, the change, the segment before it.
+        e.key("ctrl+z");
+        CHECK(e.doc().mesh.positions == at_change);
+        e.key("ctrl+z");
+        CHECK(e.doc().solver.lambda == 0.5);
+        e.key("ctrl+z");
+        CHECK(e.doc().mesh.positions == after_first);
+
+        // Display only: hiding a set, the heat map, shading, are no undo steps.
+        const std::size_t steps = e.session.history().undo_count();
+        e.click_widget("sets/region 1/show");
+        CHECK_FALSE(e.doc().sets[0].visible);
+        e.key("s");
+        e.session.dispatch(cmd::SetHeatMap{EnergyTerm::Total});
+        CHECK(e.session.history().undo_count() == steps);
+    }
+
+    TEST_CASE("quitting asks only when there are unsaved changes")
+    {
+        {
+            Editor e(bunny_copy());
+            e.key("ctrl+q");
+            CHECK(e.session.state().quit);
+        }
+        Editor f(bunny_copy());
+        f.session.dispatch(cmd::AddNoise{0.1, 3});
+        f.key("ctrl+q");
+        CHECK_FALSE(f.session.state().quit);
+        f.run();
+        f.click_widget("Discard and quit");
+        CHECK(f.session.state().quit);
+    }
+}
