@@ -497,6 +497,15 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
     }
     if (from.key.empty())
         close_step();
+    if (trace_ != nullptr && !from_gesture)
+    {
+        std::fprintf(trace_, "command %s: %s%s\n", std::string(command_name(command)).c_str(),
+                     ok                        ? "ok"
+                     : state_.message_is_error ? "failed: "
+                                               : "nothing to do",
+                     ok || !state_.message_is_error ? "" : state_.message.c_str());
+        std::fflush(trace_);
+    }
     return ok;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "app/editor/constraint_sets.h"
@@ -27,6 +28,13 @@ struct DocumentVersions
     void bump(unsigned parts);
     //! Every change so far (the autosave's "something changed").
     std::uint64_t total() const { return selection + sets + settings + positions + base; }
+};
+
+//! The sets and settings whose steps made a shape (what its steps from the base ran with).
+struct ShapeRecipe
+{
+    std::vector<ConstraintSet> sets;
+    SolverSettings solver;
 };
 
 //! \brief The mesh the editor shows, with what it derives from it once per connectivity:
@@ -55,6 +63,9 @@ struct Document
     //! the current recipe (then the exported recipe reproduces the shape).
     int steps_from_base = 0;
     bool reproducible = true;
+    //! The recipe the last steps ran with (null: none since the base, or not known), so that
+    //! a run restarted from this shape with the same recipe stays reproducible.
+    std::shared_ptr<const ShapeRecipe> shape_recipe;
     std::vector<ConstraintSet> sets; //!< the recipe's constraint sets
     SolverSettings solver;           //!< the recipe's weights and iteration settings
     bool modified = false;           //!< changed since it was read or saved

@@ -133,6 +133,12 @@ void EditorSession::mouse_release(MouseButton button, double x, double y)
         for (const Command& c : out)
             dispatch(c, kGesture);
         end_interaction();
+        if (trace_ != nullptr)
+        {
+            std::fprintf(trace_, "gesture %s: %zu undo steps\n", tool->gesture_name(),
+                         history_.undo_count());
+            std::fflush(trace_);
+        }
         return;
     }
     navigator_.release(button);
@@ -174,6 +180,7 @@ void EditorSession::wait_for_heat()
 
 void EditorSession::update()
 {
+    const bool was_playing = solver_.playing();
     if (solver_.update())
     {
         const DisplayGeometry& g = solver_.display();
@@ -184,6 +191,11 @@ void EditorSession::update()
     {
         renderer_.set_vertex_colors(heat_);
         state_.display.vertex_colors = true;
+    }
+    if (trace_ != nullptr && was_playing && !solver_.playing())
+    {
+        std::fprintf(trace_, "run stopped: %d steps from the base\n", document_.steps_from_base);
+        std::fflush(trace_);
     }
 }
 

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -59,6 +60,9 @@ public:
     bool dispatch(const Command& command, const Interaction& from = {});
     //! Ends the interaction under way (a widget let go, a script's action done).
     void end_interaction();
+    //! \brief Prints each command (but a gesture's own) and its outcome, and each gesture's
+    //! end, on `out` (nullptr: nothing).
+    void set_trace(std::FILE* out) { trace_ = out; }
 
     // Raw input of the view, in its pixels ((0, 0) its top-left corner), from the
     // InputRouter: the active tool's gestures and the navigation.
@@ -145,6 +149,7 @@ private:
     InteractiveTool* gesture_ = nullptr; // the tool of the gesture under way
     ScreenPoint cursor_;
     bool cursor_in_view_ = true;
+    std::FILE* trace_ = nullptr;
 
     // What the renderer and the panels last got, by the document's versions.
     struct Synced

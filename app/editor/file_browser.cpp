@@ -75,7 +75,7 @@ std::optional<std::string> FileBrowser::draw(WidgetMap* widgets)
         return std::nullopt;
     // Where each widget was drawn, for scripts that click and type as a person does.
     const auto track = [&](const char* name) {
-        if (widgets == nullptr)
+        if (widgets == nullptr || !ImGui::IsItemVisible())
             return;
         const ImGuiIO& io = ImGui::GetIO();
         const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();

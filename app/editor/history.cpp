@@ -52,6 +52,7 @@ EditState capture(const Document& d, unsigned parts)
         s.positions = d.mesh.positions;
         s.steps_from_base = d.steps_from_base;
         s.reproducible = d.reproducible;
+        s.shape_recipe = d.shape_recipe;
     }
     if (parts & kBasePositions)
         s.base_positions = d.base_positions;
@@ -84,6 +85,7 @@ unsigned History::swap_with(EditState& s, Document& d)
            swap_part(s.positions, d.mesh.positions, kPositions) |
            swap_part(s.steps_from_base, d.steps_from_base, kPositions) |
            swap_part(s.reproducible, d.reproducible, kPositions) |
+           swap_part(s.shape_recipe, d.shape_recipe, kPositions) |
            swap_part(s.base_positions, d.base_positions, kBasePositions);
 }
 
@@ -94,11 +96,13 @@ bool History::record(std::string label, EditState before, const Document& now, b
     drop_if_same(before.sets, now.sets);
     drop_if_same(before.solver, now.solver);
     if (before.positions && *before.positions == now.mesh.positions &&
-        before.steps_from_base == now.steps_from_base && before.reproducible == now.reproducible)
+        before.steps_from_base == now.steps_from_base && before.reproducible == now.reproducible &&
+        before.shape_recipe == now.shape_recipe)
     {
         before.positions.reset();
         before.steps_from_base.reset();
         before.reproducible.reset();
+        before.shape_recipe.reset();
     }
     drop_if_same(before.base_positions, now.base_positions);
     const std::size_t bytes = bytes_of(before);

@@ -34,6 +34,7 @@ struct EditState
     std::optional<std::vector<Scalar>> positions; //!< with the two below
     std::optional<int> steps_from_base;
     std::optional<bool> reproducible;
+    std::optional<std::shared_ptr<const ShapeRecipe>> shape_recipe;
     std::optional<std::vector<Scalar>> base_positions;
 };
 

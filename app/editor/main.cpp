@@ -72,6 +72,8 @@ int main(int argc, char** argv)
     std::string view, screenshot, save_view, script, size = "1280x800";
     std::vector<std::string> modes;
     int threads = 0;
+    bool trace = false;
+    std::string widget_map;
     app.add_option("MESH", mesh, "Mesh to open (OBJ, OFF, PLY, STL; default: the bundled bunny)");
     app.add_flag("--offscreen", offscreen,
                  "Render one frame through OSMesa (no display needed) and exit");
@@ -87,6 +89,11 @@ int main(int argc, char** argv)
                    "no-back-tint (comma-separated or repeated)")
         ->delimiter(',');
     app.add_flag("--ui", ui, "Offscreen: draw the editor's panels too");
+    app.add_flag("--trace", trace,
+                 "Print each command the keys, menus, panels and tools give, and its outcome");
+    app.add_option("--widget-map", widget_map,
+                   "Window: keep FILE listing where each widget of the interface is (label, "
+                   "x0, y0, x1, y1 in window pixels, tab-separated), for driving it from outside");
     app.add_option("--threads", threads, "Threads for normals and loading (default: every core)")
         ->check(CLI::Range(1, 1024));
     DisplayOptions display;
@@ -116,7 +123,7 @@ int main(int argc, char** argv)
         {
             try
             {
-                run_window({mesh, view, screenshot, width, height, display});
+                run_window({mesh, view, screenshot, width, height, display, trace, widget_map});
                 return 0;
             }
             catch (const NoDisplayError& e)

@@ -50,8 +50,18 @@ void SolverController::start_from_base()
 {
     document_.steps_from_base = 0;
     document_.reproducible = true;
+    document_.shape_recipe.reset();
     restarted_.reset(); // the next update restarts from the base
     seen_.reset();
+}
+
+bool SolverController::shape_made_by_current_recipe() const
+{
+    // Steps depend on the positions and the recipe only: a run restarted from a shape its
+    // own recipe made gives the same bits as the run that made it, going on.
+    const std::shared_ptr<const ShapeRecipe>& made = document_.shape_recipe;
+    return made != nullptr &&
+           same_run(document_.sets, document_.solver, made->sets, made->solver, false);
 }
 
 void SolverController::restart_if_needed()
@@ -94,7 +104,7 @@ void SolverController::restart_if_needed()
                         document_.base_positions[3 * static_cast<size_t>(vertex) + a]);
         solver_.move_hard_targets(targets);
         if (document_.steps_from_base > 0)
-            document_.reproducible = false;
+            document_.reproducible = document_.reproducible && shape_made_by_current_recipe();
     }
     else
     {
@@ -105,12 +115,13 @@ void SolverController::restart_if_needed()
                         at_base ? std::vector<Scalar>{} : document_.mesh.positions,
                         document_.draw_data.vertex_face_offsets, document_.draw_data.vertex_faces);
         if (!at_base)
-            document_.reproducible = false;
+            document_.reproducible = document_.reproducible && shape_made_by_current_recipe();
         steps_at_restart_ = document_.steps_from_base;
         if (run_open_)
             solver_.resume();
     }
     restarted_ = RunInputs{sets, settings, v};
+    running_ = std::make_shared<const ShapeRecipe>(ShapeRecipe{sets, settings});
 }
 
 bool SolverController::update()
@@ -121,6 +132,8 @@ bool SolverController::update()
     {
         std::swap(incoming_, document_.mesh.positions);
         document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
+        if (solver_.status().steps > 0)
+            document_.shape_recipe = running_;
         document_.modified = true;
         document_.versions.bump(kPositions);
         // The run's own positions: no restart for them.

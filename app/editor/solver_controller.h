@@ -64,6 +64,9 @@ private:
     //! The run since it began (or since the last segment) as one undo step.
     void record_segment();
     void restart_if_needed();
+    //! \brief Whether the current shape, made by `steps_from_base` steps of its own recipe,
+    //! is what the current sets and settings give after as many steps.
+    bool shape_made_by_current_recipe() const;
 
     Document& document_;
     History& history_;
@@ -78,9 +81,10 @@ private:
         DocumentVersions versions;
     };
     std::optional<RunInputs> restarted_;
-    std::optional<DocumentVersions> seen_; // the versions of the last restart decision
-    int steps_at_restart_ = 0;             // steps_from_base when the solver last restarted
-    bool run_open_ = false;                // play() began a run not yet recorded
+    std::shared_ptr<const ShapeRecipe> running_; // the recipe of the solver's run
+    std::optional<DocumentVersions> seen_;       // the versions of the last restart decision
+    int steps_at_restart_ = 0;                   // steps_from_base when the solver last restarted
+    bool run_open_ = false;                      // play() began a run not yet recorded
     std::optional<EditState> run_before_;
     DisplayGeometry display_;      // the solver's newest display geometry
     std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown

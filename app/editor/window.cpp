@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/window.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -188,6 +189,42 @@ void set_clipboard(void* window, const char* text)
     glfwSetClipboardString(static_cast<GLFWwindow*>(window), text);
 }
 
+// The widgets' rectangles in window pixels, one per line, rewritten when they change.
+void write_widget_map(const std::string& path, const EditorUi& ui, const FrameSize& size,
+                      WidgetMap& written)
+{
+    WidgetMap now;
+    for (const std::string& name : ui.widget_names())
+        now[name] = *ui.widget(name);
+    const auto same = [](const WidgetRect& a, const WidgetRect& b) {
+        return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
+    };
+    if (now.size() == written.size() &&
+        std::equal(now.begin(), now.end(), written.begin(), [&](const auto& a, const auto& b) {
+            return a.first == b.first && same(a.second, b.second);
+        }))
+        return;
+    const double sx = double(size.window_width) / std::max(size.framebuffer_width, 1);
+    const double sy = double(size.window_height) / std::max(size.framebuffer_height, 1);
+    std::string text;
+    char line[64];
+    for (const auto& [name, r] : now)
+    {
+        std::snprintf(line, sizeof line, "\t%d\t%d\t%d\t%d\n", int(r.x0 * sx), int(r.y0 * sy),
+                      int(r.x1 * sx), int(r.y1 * sy));
+        text += name + line;
+    }
+    try
+    {
+        io::write_file_atomically(path, text);
+        written = std::move(now);
+    }
+    catch (const std::exception&)
+    {
+        // A map for test automation: it never stops the editor.
+    }
+}
+
 std::string window_title(const Document& document)
 {
     return "MeshFair - " + std::filesystem::path(document.path).filename().string() +
@@ -261,6 +298,9 @@ void run_window(const WindowOptions& options)
     glfwSetDropCallback(window, on_drop);
     glfwSetWindowCloseCallback(window, on_close);
     EditorSession& session = *editor->session;
+    if (options.trace)
+        session.set_trace(stdout);
+    WidgetMap written; // the widget map as last written
     {
         EditorState& state = session.state();
         state.renderer_name = renderer_name;
@@ -296,6 +336,8 @@ void run_window(const WindowOptions& options)
         for (const std::string& path : std::exchange(editor->dropped, {}))
             session.dispatch(cmd::OpenMesh{path});
         session.autosave();
+        if (!options.widget_map.empty())
+            write_widget_map(options.widget_map, editor->frame->ui(), size, written);
         session.draw();
         if (std::optional<std::string> shot = std::exchange(session.state().screenshot, {}))
             editor->screenshot(*shot); // the view without the panels

@@ -24,6 +24,8 @@ struct WindowOptions
     int width = 1280;
     int height = 800;
     DisplayOptions display;
+    bool trace = false;     //!< print each command and its outcome on stdout
+    std::string widget_map; //!< a file kept listing the widgets' rectangles; empty: none
 };
 
 //! \brief The editor's window: GLFW 3.3, an OpenGL 3.3 core context, Dear ImGui, until the

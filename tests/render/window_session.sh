@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
-# A whole editing session in a real window under Xvfb, driven by synthetic input (xdotool)
-# as a user drives it: select with a rectangle, make a pin set of it, play live solving,
-# pause, save; undo the run, save again; quit. The saved files are checked: after the
-# run every vertex but the pinned ones moved and the pinned ones kept their bits; after the
-# undo the file is the loaded mesh again, byte for byte.
+# A person's whole session in a real window under Xvfb, driven by synthetic input (xdotool):
+# open a noisy mesh; brush a patch and grow it; make it a region; pins dragged with M; a
+# normal set aimed with D; anchors; Play until the energy settles; the lambda slider moved
+# during the run; Pause; undo back to the shape at the slider's change; save; export the
+# recipe through the File menu's dialog; reopen the mesh; import the recipe. The files must
+# agree: meshfair-cli smooth of the mesh with the exported recipe gives the saved file byte
+# for byte, and the imported recipe exports the same sets and settings again.
 #   window_session.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
@@ -12,6 +14,7 @@ if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
+name=session
 . "$(dirname "$0")/window_support.sh"
 rm -rf "$work"
 mkdir -p "$work"
@@ -19,69 +22,105 @@ export GALLIUM_DRIVER=llvmpipe
 export XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
 
-# The mesh as the editor writes it (the same writer): what a save of the untouched mesh gives.
-"$cli" convert "$bunny" -o "$work/bunny.obj" >/dev/null
-cp "$work/bunny.obj" "$work/loaded.obj"
-log="$work/editor.log"
-"$meshfair" "$work/bunny.obj" --size 1000x700 >"$log" 2>&1 &
-pid=$!
-wait_first_frame "$pid" "$log" session
-window=$(xdotool search --sync --name "MeshFair - bunny.obj" | head -1)
-xdotool windowfocus --sync "$window"
-sleep 0.3
-key() { xdotool key --clearmodifiers "$@"; sleep 0.4; }
-saved_after() { # waits until the file changes after a save key
-    local before=$1
-    for _ in $(seq 1 100); do
-        [ "$(stat -c %Y.%s "$work/bunny.obj" 2>/dev/null)" != "$before" ] && return 0
-        sleep 0.1
-    done
-    return 1
-}
+"$cli" noise "$bunny" -o "$work/scan.obj" --sigma 0.3 --seed 4 >/dev/null
+cp "$work/scan.obj" "$work/base.obj"
+start_editor "$meshfair" "$work/scan.obj" "$work/editor.log" "$work/widgets.tsv"
+key 1
+key Home
 
-key r # the rectangle tool
-xdotool mousemove --window "$window" 200 200 mousedown 1
-for x in 260 320 380 440; do
-    xdotool mousemove --window "$window" "$x" $((x - 20))
-    sleep 0.05
-done
+# A patch brushed over the body and grown by a ring: the region.
+key c
+drag 340 360 470 430 10
+wait_line "gesture brush stroke"
+key ctrl+equal
+key shift+r
+# Pins in it, dragged with M.
+key r
+drag 390 380 410 400 2
+key shift+p
+key m
+drag 400 390 408 380 4
+wait_line "gesture move pins"
+# A normal set of a few faces, aimed with D.
+key v
+key r
+drag 440 400 455 415 2
+key shift+n
+key v
+key d
+drag 447 407 470 412 4
+wait_line "gesture normal direction"
+# Anchors.
+key r
+drag 360 420 380 440 2
+key shift+a
+wait_line "command create set: ok" 4
+[ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
+
+# Play until the energy settles; the lambda slider moved during the run; Pause.
+click_widget "until converged"
+key space
+sleep 1
+read -r lx ly < <(widget_at "lambda")
+xdotool mousemove --window "$win" "$lx" "$ly"
+sleep 0.1
+xdotool mousedown 1
+sleep 0.1
+xdotool mousemove --window "$win" $((lx - 40)) "$ly"
+sleep 0.2
 xdotool mouseup 1
-sleep 0.5
-key shift+p # a pin set of the selected vertices
-key space   # play
-sleep 2
-key space # pause
-# The autosave (every 3 s, not while playing) has written the session's recovery files.
-sleep 3.5
-ls "$XDG_STATE_HOME"/meshfair/recovery/*/state.json >/dev/null 2>&1 ||
-    { echo "FAIL: no recovery files 3.5 s after the run"; exit 1; }
-stamp=$(stat -c %Y.%s "$work/bunny.obj")
-sleep 1.1 # a new modification time
+sleep 1
+key space
+wait_line "command play/pause: ok" 2
+# Undo the run after the change and the change: the shape seen when the slider moved.
+key ctrl+z
+key ctrl+z
+wait_line "command undo: ok" 2
 key ctrl+s
-saved_after "$stamp" || { echo "FAIL: Ctrl+S wrote nothing"; cat "$log"; exit 1; }
-cp "$work/bunny.obj" "$work/after_run.obj"
-key ctrl+z # undo the run
-stamp=$(stat -c %Y.%s "$work/bunny.obj")
-sleep 1.1
-key ctrl+s
-saved_after "$stamp" || { echo "FAIL: the second Ctrl+S wrote nothing"; cat "$log"; exit 1; }
-key ctrl+q
-wait_exit "$pid" "$log" session "Ctrl+Q (unsaved changes?)"
+wait_line "command save: ok"
+click_widget "File"
+click_widget "File/Export recipe..."
+widget_at "dialog/name" >/dev/null
+key ctrl+a
+type_text "session-recipe.json"
+key Return
+wait_line "command export recipe: ok"
+grep -q reproduces "$log" || true
 
-# After the run: the pinned vertices kept their lines, all the others moved.
-read -r same moved < <(awk 'FNR == NR { if ($1 == "v") a[++n] = $0; next }
-    $1 == "v" { ++k; if ($0 == a[k]) s++; else m++ }
-    END { print s + 0, m + 0 }' "$work/loaded.obj" "$work/after_run.obj")
-total=$(grep -c '^v ' "$work/loaded.obj")
-if [ "$same" -lt 10 ] || [ "$moved" -lt $((total / 2)) ]; then
-    echo "FAIL: after the run $same vertices kept their place and $moved moved (of $total)"
-    exit 1
-fi
-# After the undo: the loaded mesh again, byte for byte.
-if ! cmp -s "$work/loaded.obj" "$work/bunny.obj"; then
-    echo "FAIL: after the undo the saved file differs from the loaded one"
-    exit 1
-fi
-[ -z "$(ls -A "$XDG_STATE_HOME/meshfair/recovery" 2>/dev/null)" ] ||
-    { echo "FAIL: recovery files left after a clean exit"; exit 1; }
-echo "ok: $same pinned vertices kept, $moved of $total moved by the run; undo restored the file"
+# Reopen the mesh as it was read (a copy of the base), import the recipe, export it again.
+key ctrl+o
+widget_at "dialog/name" >/dev/null
+key ctrl+a
+type_text "base.obj"
+key Return
+wait_line "command open: ok"
+click_widget "File"
+click_widget "File/Import recipe..."
+widget_at "dialog/name" >/dev/null
+key ctrl+a
+type_text "session-recipe.json"
+key Return
+wait_line "command import recipe: ok"
+click_widget "File"
+click_widget "File/Export recipe..."
+widget_at "dialog/name" >/dev/null
+key ctrl+a
+type_text "reimported.json"
+key Return
+wait_line "command export recipe: ok" 2
+key ctrl+q # the imported pins moved to their targets: unsaved changes, it asks
+click_widget "Discard and quit"
+wait_exit "$pid" "$log" "$name" "Discard and quit after the import"
+
+# The command line reproduces the saved shape from the base and the exported recipe.
+"$cli" smooth "$work/base.obj" -o "$work/cli.obj" --recipe "$work/session-recipe.json" -q
+cmp "$work/cli.obj" "$work/scan.obj" ||
+    fail "meshfair-cli smooth with the exported recipe does not give the saved file"
+cmp -s "$work/base.obj" "$work/scan.obj" && fail "the saved file is the base: nothing was smoothed"
+steps=$(grep -o '"iterations": [0-9]*' "$work/session-recipe.json" | head -1 | grep -o '[0-9]*$')
+[ "$steps" -gt 0 ] || fail "the exported recipe runs no step"
+# The imported recipe gives the same sets and settings (its steps: none since the reopen).
+diff <(grep -v '"iterations"' "$work/session-recipe.json") \
+    <(grep -v '"iterations"' "$work/reimported.json") >/dev/null ||
+    fail "the imported recipe exports other sets or settings"
+echo "ok: a whole session (region, pins moved, normals aimed, anchors, a run with a slider moved, undo to the change, save, export, reopen, import) reproduced by meshfair-cli after $steps steps"

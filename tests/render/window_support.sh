@@ -36,3 +36,104 @@ wait_exit() {
         exit 1
     fi
 }
+
+# The editor driven as a person drives it (xdotool), with its --trace on stdout in $log and
+# its --widget-map in $map. start_editor MESHFAIR MESH LOG MAP [ARGS...] sets $pid and $win.
+start_editor() {
+    local meshfair=$1 mesh=$2
+    log=$3 map=$4
+    shift 4
+    rm -f "$map"
+    "$meshfair" "$mesh" --size 1000x700 --trace --widget-map "$map" "$@" >"$log" 2>&1 &
+    pid=$!
+    wait_first_frame "$pid" "$log" "$name"
+    win=$(xdotool search --sync --name "MeshFair - $(basename "$mesh")" | head -1)
+    xdotool windowfocus --sync "$win"
+    for _ in $(seq 1 100); do [ -s "$map" ] && break; sleep 0.05; done
+}
+
+fail() {
+    {
+        echo "FAIL $name: $*"
+        echo "--- editor log:"
+        tail -40 "$log"
+    } >&2
+    kill "$pid" 2>/dev/null || true
+    exit 1
+}
+
+alive() { kill -0 "$pid" 2>/dev/null || fail "the editor died ($*)"; }
+
+# wait_line PATTERN [N]: until the log has N (default 1) lines matching PATTERN (10 s).
+wait_line() {
+    local pattern=$1 n=${2:-1}
+    for _ in $(seq 1 200); do
+        [ "$(grep -c -- "$pattern" "$log")" -ge "$n" ] && return 0
+        alive "waiting for '$pattern'"
+        sleep 0.05
+    done
+    fail "no '$pattern' in the trace ($n wanted)"
+}
+
+# count_lines PATTERN: how many lines of the log match.
+count_lines() { grep -c -- "$1" "$log" || true; }
+
+# A key chord to the focused window (through XTEST, as a keyboard gives it), then a
+# moment for the frame that takes it.
+key() {
+    xdotool key --clearmodifiers "$@"
+    sleep 0.25
+}
+
+# The centre of a widget of the interface, from the widget map (waits until it is shown;
+# a widget scrolled out of the side panel is scrolled to with the wheel, as a person does).
+widget_at() {
+    local label=$1 at="" wheel
+    for attempt in $(seq 1 40); do
+        at=$(awk -F'\t' -v n="$label" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map")
+        [ -n "$at" ] && break
+        if [ "$attempt" -gt 4 ]; then
+            wheel=5 # down, then up
+            [ "$attempt" -gt 22 ] && wheel=4
+            xdotool mousemove --window "$win" 830 400 click "$wheel"
+        fi
+        sleep 0.1
+    done
+    [ -n "$at" ] || fail "no widget '$label' on screen"
+    echo "$at"
+}
+
+click_at() {
+    xdotool mousemove --window "$win" "$1" "$2"
+    sleep 0.1
+    xdotool click 1
+    sleep 0.3
+}
+
+click_widget() {
+    local at
+    at=$(widget_at "$1")
+    # shellcheck disable=SC2086
+    click_at $at
+}
+
+# drag X0 Y0 X1 Y1 [STEPS]: a left drag in the window, as a hand moves.
+drag() {
+    local x0=$1 y0=$2 x1=$3 y1=$4 steps=${5:-6}
+    xdotool mousemove --window "$win" "$x0" "$y0"
+    sleep 0.1
+    xdotool mousedown 1
+    sleep 0.1
+    for k in $(seq 1 "$steps"); do
+        xdotool mousemove --window "$win" $((x0 + (x1 - x0) * k / steps)) $((y0 + (y1 - y0) * k / steps))
+        sleep 0.04
+    done
+    xdotool mouseup 1
+    sleep 0.3
+}
+
+# type_text TEXT: typed fast, as a person in a hurry types.
+type_text() {
+    xdotool type --delay 8 "$1"
+    sleep 0.3
+}

@@ -19,6 +19,8 @@ std::string visible_label(const char* label)
 
 void PanelContext::track(const std::string& label) const
 {
+    if (!ImGui::IsItemVisible())
+        return; // scrolled out of its window: not where a click can reach it
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
     const double sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0;
