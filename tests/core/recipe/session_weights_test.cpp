@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
 #include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
@@ -318,5 +319,29 @@ TEST_SUITE("Session")
                 list.soft->weights.push_back(all.soft->weights[v]);
             }
         CHECK(smoothed_positions(m, t, all) == smoothed_positions(m, t, list));
+    }
+
+    TEST_CASE("two anchor sets with their own mu are one set weighing each vertex")
+    {
+        const Mesh m = noisy(test::icosphere(2));
+        const Topology t = build_topology(m);
+        const Recipe two = parse_recipe(R"({"soft": [
+            {"vertices": [1, 4, 9], "mu": 0.3},
+            {"vertices": [20, 2], "mu": 2, "weights": [0.5, 3]}]})",
+                                        "two.json");
+        // mu = 1: the weights are the products themselves, so the same bits.
+        const Recipe one = parse_recipe(R"({"soft": {"vertices": [1, 4, 9, 20, 2], "mu": 1,
+            "weights": [0.3, 0.3, 0.3, 1, 6]}})",
+                                        "one.json");
+        CHECK(smoothed_positions(m, t, two) == smoothed_positions(m, t, one));
+        // Another mu: mu * (w / mu) rounds differently from w, by an ulp or so.
+        Recipe scaled = one;
+        scaled.soft->mu = 0.7;
+        for (Scalar& w : scaled.soft->weights)
+            w /= 0.7;
+        const std::vector<Scalar> a = smoothed_positions(m, t, two);
+        const std::vector<Scalar> b = smoothed_positions(m, t, scaled);
+        for (size_t k = 0; k < a.size(); ++k)
+            CHECK(std::abs(a[k] - b[k]) <= 1e-15 * std::max<Scalar>(1, std::abs(a[k])));
     }
 }
