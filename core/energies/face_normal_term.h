@@ -57,20 +57,20 @@ public:
     //! ((x_prev - x_i) + (x_next - x_i)), with prev and next i's neighbours in face f.
     void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const
     {
-        // One test per vertex, not per corner: without weights the corner loop is the
-        // single-mu one, unchanged.
-        if (face_weight_.empty())
-            add_corners_rhs<false>(i, x, normals, r);
+        if (has_weights())
+            add_vertex_rhs<true>(i, x, normals, r);
         else
-            add_corners_rhs<true>(i, x, normals, r);
+            add_vertex_rhs<false>(i, x, normals, r);
     }
-    //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
-    //! f's part of E_N is mu_f u_f^T M_f u_f (used by the joint update of u).
-    void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
-
-private:
+    //! True when the faces have weights of their own (not all mu).
+    bool has_weights() const { return !face_weight_.empty(); }
+    //! add_vertex_rhs with the weighting chosen by the caller (Weighted == has_weights()):
+    //! the fused step tests it once per step, and without weights the corner loop is the
+    //! single-mu one, unchanged. Always inlined: the fused sweeps call it from a dozen
+    //! instances, and a call would pass r through memory for every vertex.
     template <bool Weighted>
-    void add_corners_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const
+    [[gnu::always_inline]] void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals,
+                                               Scalar* r) const
     {
         // Locals, not r[] and mu_: a store through r could change x, the normals or mu_
         // for the compiler, which would then load them again for every corner.
@@ -99,7 +99,11 @@ private:
         r[1] = r1;
         r[2] = r2;
     }
+    //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
+    //! f's part of E_N is mu_f u_f^T M_f u_f (used by the joint update of u).
+    void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
 
+private:
     const Mesh* mesh_;
     const Topology* topology_;
     Scalar mu_;

@@ -353,17 +353,34 @@ void Session::fused_sweep(const Scalar* x, Scalar* y)
             centroid_->face_residuals(x, faces.data(), begin, end, residual);
         });
     }
-    if (free_.size() == static_cast<size_t>(vertex_count_))
-        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, true>(x, y, begin, end);
+    // The soft and centroid terms weigh their elements through per-vertex weights and
+    // per-face residuals; only the normal term's sweep differs with weights.
+    const bool all_free = free_.size() == static_cast<size_t>(vertex_count_);
+    const Index count = static_cast<Index>(free_.size());
+    if constexpr (Normal)
+        if (normal_->has_weights())
+        {
+            if (all_free)
+                parallel_ranges(count, [=, this](Index begin, Index end) {
+                    fused_range<Soft, Centroid, Normal, true, true>(x, y, begin, end);
+                });
+            else
+                parallel_ranges(count, [=, this](Index begin, Index end) {
+                    fused_range<Soft, Centroid, Normal, true, false>(x, y, begin, end);
+                });
+            return;
+        }
+    if (all_free)
+        parallel_ranges(count, [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, false, true>(x, y, begin, end);
         });
     else
-        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, false>(x, y, begin, end);
+        parallel_ranges(count, [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, false, false>(x, y, begin, end);
         });
 }
 
-template <bool Soft, bool Centroid, bool Normal, bool AllFree>
+template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree>
 void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
 {
     // Locals: the loop keeps them in registers (the stores to y could change the
@@ -389,7 +406,7 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
         if constexpr (Centroid)
             centroid_->add_vertex_residuals(i, residual, r);
         if constexpr (Normal)
-            normal_->add_vertex_rhs(i, x, normals, r);
+            normal_->add_vertex_rhs<NormalWeighted>(i, x, normals, r);
         Scalar dx[3];
         if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
             cholesky3_solve(&factor[2 * at], r, dx);
