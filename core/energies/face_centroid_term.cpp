@@ -12,7 +12,7 @@ namespace meshfair {
 
 FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
                                    std::vector<Index> faces, Scalar mu,
-                                   CentroidDenominator denominator)
+                                   CentroidDenominator denominator, std::span<const Scalar> weights)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
@@ -23,12 +23,19 @@ FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
+    if (!weights.empty())
+    {
+        face_weight_.assign(mesh.face_count(), 0);
+        for (size_t k = 0; k < faces_.size(); ++k)
+            face_weight_[faces_[k]] = mu_ * weights[k];
+    }
 }
 
 FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
                                    std::vector<Index> faces, Scalar mu,
-                                   std::span<const Scalar> targets, CentroidDenominator denominator)
-    : FaceCentroidTerm(mesh, topology, std::move(faces), mu, denominator)
+                                   std::span<const Scalar> targets, CentroidDenominator denominator,
+                                   std::span<const Scalar> weights)
+    : FaceCentroidTerm(mesh, topology, std::move(faces), mu, denominator, weights)
 {
     set_targets(targets);
 }
@@ -60,18 +67,21 @@ Scalar FaceCentroidTerm::energy(std::span<const Scalar> x) const
             const Scalar d = c[a] - target_[3 * f + a];
             s += d * d;
         }
-        return s;
+        return face_weight_.empty() ? s : face_weight_[f] * s;
     });
-    return mu_ * sum;
+    // One weight: mu times the sum, the arithmetic of the paper's single mu.
+    return face_weight_.empty() ? mu_ * sum : sum;
 }
 
 Scalar FaceCentroidTerm::quadratic(std::span<const Scalar> dx) const
 {
     const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index k) {
-        const Vec3 c = face_centroid(*mesh_, dx, faces_[k]);
-        return c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        const Index f = faces_[k];
+        const Vec3 c = face_centroid(*mesh_, dx, f);
+        const Scalar s = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
+        return face_weight_.empty() ? s : face_weight_[f] * s;
     });
-    return mu_ * sum;
+    return face_weight_.empty() ? mu_ * sum : sum;
 }
 
 void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
@@ -83,13 +93,34 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
             if (!constrained_[f])
                 continue;
             const Scalar n = mesh_->face_size(f);
-            diagonal[i] += denominator_ == CentroidDenominator::Paper ? mu_ / n : mu_ / (n * n);
+            const Scalar w = face_weight(f);
+            diagonal[i] += denominator_ == CentroidDenominator::Paper ? w / n : w / (n * n);
         }
 }
 
 void FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
                                       Scalar* residual) const
 {
+    if (!face_weight_.empty())
+    {
+        // mu_f/n_f per face, as face_residual computes it (the same bits).
+        Index last_n = 0;
+        Scalar inv = 0;
+        const Scalar* face_weight = face_weight_.data();
+        for (Index k = begin; k < end; ++k)
+        {
+            const Index f = faces[k];
+            const Index n = mesh_->face_size(f);
+            if (n != last_n)
+            {
+                last_n = n;
+                inv = Scalar(1) / n;
+            }
+            residual_of(face_corner_sum(*mesh_, x, f), f, inv, face_weight[f] / n,
+                        residual + 3 * static_cast<std::ptrdiff_t>(f));
+        }
+        return;
+    }
     // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
     // this saves two divisions per face (the same values as face_residual's).
     Index last_n = 0;
@@ -128,7 +159,7 @@ void FaceCentroidTerm::add_vertex_energy(std::span<const Scalar> x,
             const Scalar d = c[a] - target_[3 * f + a];
             s += d * d;
         }
-        const Scalar share = mu_ * s / Scalar(mesh_->face_size(f));
+        const Scalar share = face_weight(f) * s / Scalar(mesh_->face_size(f));
         for (const Index v : mesh_->face(f))
             per_vertex[v] += share;
     }

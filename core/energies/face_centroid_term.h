@@ -15,40 +15,47 @@ namespace meshfair {
 //! Which Jacobi denominator the centroid term uses; see FaceCentroidTerm.
 enum class CentroidDenominator
 {
-    Paper, //!< n_i + mu sum_{f in F_C(i)} 1/n_f, as printed (a majorizer; the default)
-    Exact  //!< n_i + mu sum_{f in F_C(i)} 1/n_f^2, the exact one-variable minimizer
+    Paper, //!< n_i + sum_{f in F_C(i)} mu_f/n_f, as printed (a majorizer; the default)
+    Exact  //!< n_i + sum_{f in F_C(i)} mu_f/n_f^2, the exact one-variable minimizer
 };
 
-//! \brief Soft face-centroid constraints \cite taubin_2012 ("Face Centroid Constraints"):
+//! \brief Soft face-centroid constraints \cite taubin_2012 ("Face Centroid Constraints"),
+//! with a weight per constrained face:
 //!
-//!     E_C(x) = mu sum_{f in F_C} |x_f - x0_f|^2,   x_f = (1/n_f) sum_{i in f} x_i
+//!     E_C(x) = sum_{f in F_C} mu_f |x_f - x0_f|^2,   x_f = (1/n_f) sum_{i in f} x_i
 //!
-//! Gradient: dE_C/dx_i = 2 mu sum_{f in F_C(i)} (1/n_f)(x_f - x0_f). Right-hand side
-//! mu sum_f (1/n_f)(x0_f - x_f) as printed. Minimizing E exactly in x_i alone gives
-//! the diagonal contribution mu sum_f 1/n_f^2; the paper prints mu sum_f 1/n_f, which is
-//! larger. With the printed one the simultaneous (Jacobi) step decreases E_L + E_C for
-//! every lambda in (0, 1) on any mesh, because each face's block c c^T is bounded by
-//! diag(1/n_f) (docs/math.md); with the exact one that holds only for
-//! lambda < 2 / max(2, max n_f): always for triangles at 0.5, never guaranteed beyond
-//! quads. Both are offered; Paper is the default.
+//! mu_f = mu w_f >= 0, w_f = weights[k] for the k-th listed face (all 1 without weights:
+//! the paper's single mu). Gradient: dE_C/dx_i = 2 sum_{f in F_C(i)} (mu_f/n_f)(x_f - x0_f).
+//! Right-hand side sum_f (mu_f/n_f)(x0_f - x_f) as printed. Minimizing E exactly in x_i
+//! alone gives the diagonal contribution sum_f mu_f/n_f^2; the paper prints
+//! sum_f mu_f/n_f, which is larger. With the printed one the simultaneous (Jacobi) step
+//! decreases E_L + E_C for every lambda in (0, 1) on any mesh, because each face's block
+//! mu_f c c^T is bounded by diag(mu_f/n_f) (docs/math.md); with the exact one that holds
+//! only for lambda < 2 / max(2, max n_f): always for triangles at 0.5, never guaranteed
+//! beyond quads. Both are offered; Paper is the default.
 class FaceCentroidTerm
 {
 public:
-    //! \pre faces distinct and < #F; targets hold 3 values per listed face.
+    //! \pre faces distinct and < #F; targets hold 3 values per listed face; weights empty
+    //! or one per listed face, each finite and >= 0 (as mu).
     FaceCentroidTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
-                     Scalar mu, std::span<const Scalar> targets, CentroidDenominator denominator);
+                     Scalar mu, std::span<const Scalar> targets, CentroidDenominator denominator,
+                     std::span<const Scalar> weights = {});
     //! The same with every target at the origin until set_targets or
     //! set_targets_to_centroids.
     FaceCentroidTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
-                     Scalar mu, CentroidDenominator denominator);
+                     Scalar mu, CentroidDenominator denominator,
+                     std::span<const Scalar> weights = {});
 
     void set_targets(std::span<const Scalar> targets);
     //! Targets at the listed faces' centroids for positions `x` (3 #V): no gathered copy.
     void set_targets_to_centroids(std::span<const Scalar> x);
     const std::vector<Index>& faces() const { return faces_; }
+    //! mu_f of a constrained face.
+    Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
 
     Scalar energy(std::span<const Scalar> x) const;
-    //! Adds each constrained face's mu |x_f - x0_f|^2 to per_vertex (#V), 1/n_f to each corner.
+    //! Adds each constrained face's mu_f |x_f - x0_f|^2 to per_vertex (#V), 1/n_f to each corner.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
@@ -69,12 +76,12 @@ public:
                 r[a] += residual[a];
         }
     }
-    //! Face f's residual mu/n_f (x0_f - x_f): its part of r_i for each of its vertices i.
+    //! Face f's residual mu_f/n_f (x0_f - x_f): its part of r_i for each of its vertices i.
     void face_residual(const Scalar* x, Index f, Scalar* out) const
     {
         const Index n = mesh_->face_size(f);
         // face_centroid's 1/n_f, so that the residuals are energy()'s.
-        residual_of(face_corner_sum(*mesh_, x, f), f, Scalar(1) / n, mu_ / n, out);
+        residual_of(face_corner_sum(*mesh_, x, f), f, Scalar(1) / n, face_weight(f) / n, out);
     }
     //! face_residual of each face of faces[begin .. end) into residual[3 f ..] (3 #F; other
     //! faces' values are left as they are): the fused step's pass over the faces, so that
@@ -118,8 +125,9 @@ private:
     Scalar mu_;
     CentroidDenominator denominator_;
     std::vector<Index> faces_;
-    std::vector<char> constrained_; //!< #F
-    std::vector<Scalar> target_;    //!< 3 #F
+    std::vector<char> constrained_;   //!< #F
+    std::vector<Scalar> target_;      //!< 3 #F
+    std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
 };
 
 } // namespace meshfair

@@ -9,7 +9,7 @@
 namespace meshfair {
 
 FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
-                               Scalar mu)
+                               Scalar mu, std::span<const Scalar> weights)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
@@ -18,6 +18,12 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
+    if (!weights.empty())
+    {
+        face_weight_.assign(mesh.face_count(), 0);
+        for (size_t k = 0; k < faces_.size(); ++k)
+            face_weight_[faces_[k]] = mu_ * weights[k];
+    }
 }
 
 Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar> normals) const
@@ -34,15 +40,15 @@ Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar>
             const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
             s += d * d;
         }
-        return s;
+        return face_weight_.empty() ? s : face_weight_[f] * s;
     });
-    return mu_ * sum;
+    // One weight: mu times the sum, the arithmetic of the paper's single mu.
+    return face_weight_.empty() ? mu_ * sum : sum;
 }
 
 void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const Index> vertices,
                                std::span<Scalar> block) const
 {
-    const Scalar w = 2 * mu_;
     for (const Index i : vertices)
     {
         Scalar* B = &block[6 * i];
@@ -51,6 +57,7 @@ void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const 
             const Index f = topology_->corner_face[c];
             if (!constrained_[f])
                 continue;
+            const Scalar w = 2 * face_weight(f);
             const Scalar* u = &normals[3 * f];
             B[0] += w * u[0] * u[0];
             B[1] += w * u[0] * u[1];
@@ -95,6 +102,7 @@ void FaceNormalTerm::add_vertex_energy(std::span<const Scalar> x, std::span<cons
     for (const Index f : faces_)
     {
         const Scalar* u = &normals[3 * f];
+        const Scalar w = face_weight(f);
         const auto face = mesh_->face(f);
         for (size_t k = 0; k < face.size(); ++k)
         {
@@ -102,8 +110,8 @@ void FaceNormalTerm::add_vertex_energy(std::span<const Scalar> x, std::span<cons
             const Scalar* p = &x[3 * i];
             const Scalar* q = &x[3 * j];
             const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
-            per_vertex[i] += 0.5 * mu_ * d * d;
-            per_vertex[j] += 0.5 * mu_ * d * d;
+            per_vertex[i] += 0.5 * w * d * d;
+            per_vertex[j] += 0.5 * w * d * d;
         }
     }
 }

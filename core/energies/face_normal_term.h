@@ -11,49 +11,72 @@
 
 namespace meshfair {
 
-//! \brief Face-normal constraints \cite taubin_2012 ("Face Normal Constraints"):
+//! \brief Face-normal constraints \cite taubin_2012 ("Face Normal Constraints"), with a
+//! weight per constrained face:
 //!
-//!     E_N(x) = mu sum_{f in F_N} sum_{(i,j) in E(f)} (u_f^T (x_j - x_i))^2
+//!     E_N(x) = sum_{f in F_N} mu_f sum_{(i,j) in E(f)} (u_f^T (x_j - x_i))^2
 //!
-//! with unit normals u (3 #F) held constant, so E_N is quadratic and homogeneous in x.
-//! Every face-edge pair counts once per face. Gradient on x_i: 2 mu sum_{f in F_N(i)}
-//! sum_{j in V(f,i)} u_f u_f^T (x_i - x_j), where V(f,i) are the two vertices next to i
-//! along the boundary of f (not V(f) intersect V(i), which for polygons with more than
-//! three sides may hold a third vertex). Generalized Jacobi: the 3x3 block
-//! mu sum_f sum_{j in V(f,i)} u_f u_f^T = 2 mu sum_f u_f u_f^T is added to n_i I, and
-//! mu sum_f u_f u_f^T sum_{j in V(f,i)} (x_j - x_i) to the right-hand side: the paper's
+//! mu_f = mu w_f >= 0, w_f = weights[k] for the k-th listed face (all 1 without weights:
+//! the paper's single mu); unit normals u (3 #F) held constant, so E_N is quadratic and
+//! homogeneous in x. Every face-edge pair counts once per face. Gradient on x_i:
+//! 2 sum_{f in F_N(i)} mu_f sum_{j in V(f,i)} u_f u_f^T (x_i - x_j), where V(f,i) are the two
+//! vertices next to i along the boundary of f (not V(f) intersect V(i), which for polygons
+//! with more than three sides may hold a third vertex). Generalized Jacobi: the 3x3 block
+//! sum_f mu_f sum_{j in V(f,i)} u_f u_f^T = 2 sum_f mu_f u_f u_f^T is added to n_i I, and
+//! sum_f mu_f u_f u_f^T sum_{j in V(f,i)} (x_j - x_i) to the right-hand side: the paper's
 //! equation with its n_f n_f^t read as u_f u_f^t. n_i I + block is SPD whenever n_i > 0.
 class FaceNormalTerm
 {
 public:
-    //! \pre faces distinct and < #F.
-    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces, Scalar mu);
+    //! \pre faces distinct and < #F; weights empty or one per listed face, each finite and
+    //! >= 0 (as mu).
+    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces, Scalar mu,
+                   std::span<const Scalar> weights = {});
 
     Scalar mu() const { return mu_; }
+    //! mu_f of a constrained face.
+    Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
     const std::vector<Index>& faces() const { return faces_; }
     bool constrains(Index f) const { return constrained_[f] != 0; }
 
     Scalar energy(std::span<const Scalar> x, std::span<const Scalar> normals) const;
-    //! Adds each face-edge pair's mu (u_f^T (x_j - x_i))^2 to per_vertex (#V), half to each end.
+    //! Adds each face-edge pair's mu_f (u_f^T (x_j - x_i))^2 to per_vertex (#V), half to each
+    //! end.
     void add_vertex_energy(std::span<const Scalar> x, std::span<const Scalar> normals,
                            std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx, std::span<const Scalar> normals) const
     {
         return energy(dx, normals);
     }
-    //! block_i += 2 mu sum_{f in F_N(i)} u_f u_f^T (xx xy xz yy yz zz) for each i in vertices.
+    //! block_i += 2 sum_{f in F_N(i)} mu_f u_f u_f^T (xx xy xz yy yz zz) for each i in vertices.
     void add_block(std::span<const Scalar> normals, std::span<const Index> vertices,
                    std::span<Scalar> block) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
                  std::span<const Index> vertices, std::span<Scalar> rhs) const;
-    //! One vertex's part, for the fused step: r += mu sum_{f in F_N(i)} u_f u_f^T
+    //! One vertex's part, for the fused step: r += sum_{f in F_N(i)} mu_f u_f u_f^T
     //! ((x_prev - x_i) + (x_next - x_i)), with prev and next i's neighbours in face f.
     void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const
+    {
+        if (has_weights())
+            add_vertex_rhs<true>(i, x, normals, r);
+        else
+            add_vertex_rhs<false>(i, x, normals, r);
+    }
+    //! True when the faces have weights of their own (not all mu).
+    bool has_weights() const { return !face_weight_.empty(); }
+    //! add_vertex_rhs with the weighting chosen by the caller (Weighted == has_weights()):
+    //! the fused step tests it once per step, and without weights the corner loop is the
+    //! single-mu one, unchanged. Always inlined: the fused sweeps call it from a dozen
+    //! instances, and a call would pass r through memory for every vertex.
+    template <bool Weighted>
+    [[gnu::always_inline]] void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals,
+                                               Scalar* r) const
     {
         // Locals, not r[] and mu_: a store through r could change x, the normals or mu_
         // for the compiler, which would then load them again for every corner.
         Scalar r0 = r[0], r1 = r[1], r2 = r[2];
         const Scalar mu = mu_;
+        const Scalar* face_weight = face_weight_.data();
         const Scalar xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
         for (const Index c : topology_->corners_of_vertex(i))
         {
@@ -67,16 +90,17 @@ public:
             const Scalar s = u[0] * ((a[0] - xi0) + (b[0] - xi0)) +
                              u[1] * ((a[1] - xi1) + (b[1] - xi1)) +
                              u[2] * ((a[2] - xi2) + (b[2] - xi2));
-            r0 += mu * s * u[0];
-            r1 += mu * s * u[1];
-            r2 += mu * s * u[2];
+            const Scalar w = Weighted ? face_weight[f] : mu;
+            r0 += w * s * u[0];
+            r1 += w * s * u[1];
+            r2 += w * s * u[2];
         }
         r[0] = r0;
         r[1] = r1;
         r[2] = r2;
     }
     //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
-    //! f's part of E_N is mu u_f^T M_f u_f (used by the joint update of u).
+    //! f's part of E_N is mu_f u_f^T M_f u_f (used by the joint update of u).
     void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
 
 private:
@@ -84,7 +108,8 @@ private:
     const Topology* topology_;
     Scalar mu_;
     std::vector<Index> faces_;
-    std::vector<char> constrained_; //!< #F
+    std::vector<char> constrained_;   //!< #F
+    std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
 };
 
 } // namespace meshfair

@@ -21,7 +21,7 @@ void JointTerm::normal_rhs(std::span<const Scalar> x, std::span<const Scalar> u,
     Scalar M[6] = {0, 0, 0, 0, 0, 0};
     if (normal_term_->constrains(f))
         normal_term_->edge_scatter(x, f, M);
-    const Scalar mu = normal_term_->mu();
+    const Scalar mu = normal_term_->face_weight(f);
     const Scalar Mu[3] = {M[0] * uf[0] + M[1] * uf[1] + M[2] * uf[2],
                           M[1] * uf[0] + M[3] * uf[1] + M[4] * uf[2],
                           M[2] * uf[0] + M[4] * uf[1] + M[5] * uf[2]};
@@ -42,7 +42,7 @@ bool JointTerm::minimizer(std::span<const Scalar> x, std::span<const Scalar> u, 
     {
         normal_term_->edge_scatter(x, f, M);
         for (Scalar& m : M)
-            m *= normal_term_->mu();
+            m *= normal_term_->face_weight(f);
     }
     const Scalar ws = smoothing_->soft_weight(f);
     const Scalar d = gamma_ * topology_->dual_valence(f) + ws;

@@ -12,19 +12,20 @@ namespace meshfair {
 //! \brief Joint optimization of positions x and normals u \cite taubin_2012 ("Smoothing
 //! Face Normal Vectors", last performance function):
 //!
-//!     E(x, u) = E_L(x) + mu sum_{f in F_N} sum_{(i,j) in E(f)} (u_f^T (x_j - x_i))^2
-//!               + gamma sum_{(f,g) in E*} |u_f - u_g|^2 + mu_S sum_{f in F_S} |u_f - u0_f|^2
+//!     E(x, u) = E_L(x) + sum_{f in F_N} mu_f sum_{(i,j) in E(f)} (u_f^T (x_j - x_i))^2
+//!               + gamma sum_{(f,g) in E*} |u_f - u_g|^2 + sum_{f in F_S} mu_S,f |u_f - u0_f|^2
 //!
 //! The x part is the face-normal term's update with the current u. This file holds the
 //! u part, which the paper leaves to the reader: minimizing E in u_f alone gives
 //!
-//!     (mu [f in F_N] M_f + (gamma n*_f + mu_S [f in F_S]) I) u_f
-//!         = gamma sum_{g in N*(f)} u_g + mu_S [f in F_S] u0_f,
+//!     (mu_f [f in F_N] M_f + (gamma n*_f + mu_S,f [f in F_S]) I) u_f
+//!         = gamma sum_{g in N*(f)} u_g + mu_S,f [f in F_S] u0_f,
 //!
 //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T, a 3x3 SPD solve per face (Cholesky).
 //! Then u_f += lambda (u_f* - u_f) and u_f is renormalized. Hard faces keep their normals;
 //! a face whose matrix is singular (no dual neighbour, no soft constraint and a planar
-//! polygon) keeps its normal. Weights: gamma >= 0, mu and mu_S >= 0.
+//! polygon) keeps its normal. Weights: gamma >= 0; mu_f (FaceNormalTerm::face_weight) and
+//! mu_S,f (NormalSmoothingTerm::soft_weight), the per-face weights, >= 0.
 class JointTerm
 {
 public:

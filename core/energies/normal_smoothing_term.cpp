@@ -21,7 +21,8 @@ NormalSmoothingTerm::NormalSmoothingTerm(const Topology& topology,
                                          std::span<const Index> hard_faces,
                                          std::span<const Scalar> hard_normals,
                                          std::span<const Index> soft_faces, Scalar soft_mu,
-                                         std::span<const Scalar> soft_normals)
+                                         std::span<const Scalar> soft_normals,
+                                         std::span<const Scalar> soft_weights)
     : topology_(&topology),
       hard_faces_(hard_faces.begin(), hard_faces.end()),
       soft_faces_(soft_faces.begin(), soft_faces.end()),
@@ -39,7 +40,7 @@ NormalSmoothingTerm::NormalSmoothingTerm(const Topology& topology,
     for (size_t k = 0; k < soft_faces_.size(); ++k)
     {
         const Index f = soft_faces_[k];
-        soft_weight_[f] = soft_mu;
+        soft_weight_[f] = soft_weights.empty() ? soft_mu : soft_mu * soft_weights[k];
         std::copy_n(&soft_normals[3 * k], 3, &soft_target_[3 * f]);
     }
 }

@@ -9,21 +9,18 @@
 
 namespace meshfair {
 
-SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu)
+SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
+                               std::span<const Scalar> targets, std::span<const Scalar> weights)
     : mu_(mu),
+      has_weights_(!weights.empty()),
       vertices_(std::move(vertices)),
       weight_(vertex_count, 0),
       target_(3 * static_cast<size_t>(vertex_count), 0)
 {
-    for (const Index i : vertices_)
-        weight_[i] = mu_;
-}
-
-SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
-                               std::span<const Scalar> targets)
-    : SoftVertexTerm(vertex_count, std::move(vertices), mu)
-{
-    set_targets(targets);
+    for (size_t k = 0; k < vertices_.size(); ++k)
+        weight_[vertices_[k]] = has_weights_ ? mu_ * weights[k] : mu_;
+    if (!targets.empty())
+        set_targets(targets);
 }
 
 void SoftVertexTerm::set_targets_at(std::span<const Scalar> x)
@@ -49,25 +46,27 @@ Scalar SoftVertexTerm::energy(std::span<const Scalar> x) const
             const Scalar d = x[3 * i + a] - target_[3 * i + a];
             s += d * d;
         }
-        return s;
+        return has_weights_ ? weight_[i] * s : s;
     });
-    return mu_ * sum;
+    // One weight: mu times the sum, the arithmetic of the paper's single mu.
+    return has_weights_ ? sum : mu_ * sum;
 }
 
 Scalar SoftVertexTerm::quadratic(std::span<const Scalar> dx) const
 {
     const Scalar sum = deterministic_sum(static_cast<Index>(vertices_.size()), [&](Index k) {
         const Index i = vertices_[k];
-        return dx[3 * i] * dx[3 * i] + dx[3 * i + 1] * dx[3 * i + 1] +
-               dx[3 * i + 2] * dx[3 * i + 2];
+        const Scalar s =
+            dx[3 * i] * dx[3 * i] + dx[3 * i + 1] * dx[3 * i + 1] + dx[3 * i + 2] * dx[3 * i + 2];
+        return has_weights_ ? weight_[i] * s : s;
     });
-    return mu_ * sum;
+    return has_weights_ ? sum : mu_ * sum;
 }
 
 void SoftVertexTerm::add_diagonal(std::span<Scalar> diagonal) const
 {
     for (const Index i : vertices_)
-        diagonal[i] += mu_;
+        diagonal[i] += weight_[i]; // mu itself without weights
 }
 
 void SoftVertexTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
@@ -88,7 +87,7 @@ void SoftVertexTerm::add_vertex_energy(std::span<const Scalar> x,
             const Scalar d = x[3 * i + a] - target_[3 * i + a];
             s += d * d;
         }
-        per_vertex[i] += mu_ * s;
+        per_vertex[i] += weight_[i] * s;
     }
 }
 

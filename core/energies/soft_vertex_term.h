@@ -9,37 +9,44 @@
 
 namespace meshfair {
 
-//! \brief Soft vertex constraints \cite taubin_2012 ("Vertex Position Constraints"):
+//! \brief Soft vertex constraints \cite taubin_2012 ("Vertex Position Constraints"), with
+//! a weight per constrained vertex:
 //!
-//!     E_S(x) = mu sum_{i in V_S} |x_i - x0_i|^2,        mu >= 0, targets x0 of size 3 #V_S
+//!     E_S(x) = sum_{i in V_S} mu_i |x_i - x0_i|^2,     mu_i = mu w_i >= 0, x0 of size 3 #V_S
 //!
-//! Gradient 2 mu (x_i - x0_i) on constrained vertices. Generalized Jacobi: diagonal += mu,
-//! rhs += mu (x0_i - x_i); with the edge term this is the paper's update
-//! dx_i = (sum_j (x_j - x_i) + mu (x0_i - x_i)) / (n_i + mu). Weight scales linearly in mu.
-//! Moving targets (set_targets) changes the right-hand side only.
+//! w_i = weights[k] for the k-th listed vertex (all 1 when weights is empty: the paper's
+//! single mu). Gradient 2 mu_i (x_i - x0_i) on constrained vertices. Generalized Jacobi:
+//! diagonal += mu_i, rhs += mu_i (x0_i - x_i); with the edge term this is the paper's
+//! update dx_i = (sum_j (x_j - x_i) + mu_i (x0_i - x_i)) / (n_i + mu_i). The energy scales
+//! linearly in each mu_i; A_S = D_S. Moving targets (set_targets) changes the right-hand
+//! side only. Without weights the arithmetic is that of one mu (mu sum |x_i - x0_i|^2).
 class SoftVertexTerm
 {
 public:
-    //! \pre vertices distinct and < vertex_count; targets hold 3 values per listed vertex.
+    //! \pre vertices distinct and < vertex_count; targets empty (every target at the origin
+    //! until set_targets or set_targets_at) or 3 values per listed vertex; weights empty or
+    //! one per listed vertex, each finite and >= 0 (as mu).
     SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
-                   std::span<const Scalar> targets);
-    //! The same with every target at the origin until set_targets or set_targets_at.
-    SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu);
+                   std::span<const Scalar> targets = {}, std::span<const Scalar> weights = {});
 
     void set_targets(std::span<const Scalar> targets);
     //! Targets at positions `x` (3 #V) of the listed vertices: no gathered copy.
     void set_targets_at(std::span<const Scalar> x);
     Scalar mu() const { return mu_; }
+    //! True when the vertices have weights of their own (not all mu).
+    bool has_weights() const { return has_weights_; }
+    //! mu_i: mu w_i on constrained vertices, 0 elsewhere.
+    Scalar weight(Index i) const { return weight_[i]; }
     const std::vector<Index>& vertices() const { return vertices_; }
 
     Scalar energy(std::span<const Scalar> x) const;
-    //! Adds mu |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
+    //! Adds mu_i |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
-    //! One vertex's part: r[a] += w_i (t_i - x_i)[a] (w_i = 0 off the constrained set).
+    //! One vertex's part: r[a] += mu_i (t_i - x_i)[a] (mu_i = 0 off the constrained set).
     void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
     {
         for (int a = 0; a < 3; ++a)
@@ -48,8 +55,9 @@ public:
 
 private:
     Scalar mu_;
+    bool has_weights_;
     std::vector<Index> vertices_;
-    std::vector<Scalar> weight_; //!< #V: mu on constrained vertices, 0 elsewhere
+    std::vector<Scalar> weight_; //!< #V: mu_i on constrained vertices, 0 elsewhere
     std::vector<Scalar> target_; //!< 3 #V
 };
 

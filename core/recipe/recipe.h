@@ -41,11 +41,19 @@ struct HardVertices
     std::vector<Vec3> targets; //!< empty: stay where they are
 };
 
+// weights: element k (k-th listed, or of the mesh with "all") weighs mu * weights[k] >= 0;
+// empty: all weigh mu, bit for bit as one weight. (= {}: positional inits stay complete.)
+//! Where each set of a JSON list of sets ends in the merged element list (parse_recipe
+//! merges "soft": [{...}, {...}] into one), so that messages name "soft[1]". Empty: one set.
+using SetEnds = std::vector<size_t>;
+
 struct SoftVertices
 {
     IndexSet vertices; //!< "all" = every vertex that is not hard
     Scalar mu = 1;
-    std::vector<Vec3> targets; //!< empty: the input positions
+    std::vector<Vec3> targets;        //!< empty: the input positions
+    std::vector<Scalar> weights = {}; //!< vertex k weighs mu * weights[k]; empty: mu
+    SetEnds set_ends = {};            //!< for messages only
 };
 
 struct CentroidConstraints
@@ -54,6 +62,8 @@ struct CentroidConstraints
     Scalar mu = 1;
     std::vector<Vec3> targets; //!< empty: the input centroids
     CentroidDenominator denominator = CentroidDenominator::Paper;
+    std::vector<Scalar> weights = {}; //!< face k weighs mu * weights[k]; empty: mu
+    SetEnds set_ends = {};            //!< for messages only
 };
 
 enum class NormalSource
@@ -68,7 +78,9 @@ struct NormalConstraints
     IndexSet faces;
     Scalar mu = 1;
     NormalSource source = NormalSource::Initial;
-    std::vector<Vec3> normals; //!< Custom only: one per constrained face (normalized)
+    std::vector<Vec3> normals;        //!< Custom only: one per constrained face (normalized)
+    std::vector<Scalar> weights = {}; //!< face k weighs mu * weights[k]; empty: mu
+    SetEnds set_ends = {};            //!< for messages only
 };
 
 struct HardNormals
@@ -81,7 +93,8 @@ struct SoftNormals
 {
     std::vector<Index> faces;
     Scalar mu = 1;
-    std::vector<Vec3> normals; //!< empty: the input normals
+    std::vector<Vec3> normals;        //!< empty: the input normals
+    std::vector<Scalar> weights = {}; //!< face k weighs mu * weights[k]; empty: mu
 };
 
 struct NormalSmoothing
@@ -118,17 +131,18 @@ struct Recipe
     std::optional<Joint> joint;
 };
 
-//! \brief Checks a recipe against a mesh: indices in range and not repeated, target and
-//! normal counts matching their sets, hard and soft vertex sets disjoint, hard and soft
-//! normal face sets disjoint, weights finite and >= 0, sections that need another one,
-//! every coordinate of the mesh and of the targets within +-kMaxCoordinate.
-//! \throw RecipeError naming the offending key, e.g. "soft.vertices[3]"; InvalidInputError
-//! naming the vertex when a mesh coordinate is out of range.
+//! \brief Checks a recipe against a mesh: indices in range and not repeated (nor in two
+//! sets of a list), target, normal and weight counts matching their sets, hard and soft
+//! vertex (normal face) sets disjoint, weights finite and >= 0 (mu * weights[k] too),
+//! sections that need another one, mesh and target coordinates within +-kMaxCoordinate.
+//! \throw RecipeError naming the offending key ("soft.vertices[3]", "soft[1].weights[0]");
+//! InvalidInputError naming the vertex when a mesh coordinate is out of range.
 void check_recipe(const Recipe& recipe, const Mesh& mesh);
 
 //! \brief The same recipe for the mesh renumbered so that file vertex i is vertex
 //! new_vertex[i] and file face f is face new_face[f] (see LocalityOrder): every index is
-//! mapped, every list keeps its order, so per-element targets and normals still match.
+//! mapped, every list keeps its order, so per-element targets, normals and weights still
+//! match (with "all" they are permuted with the elements).
 //! \pre check_recipe(recipe, mesh) holds for the file's mesh.
 Recipe renumber_recipe(const Recipe& recipe, std::span<const Index> new_vertex,
                        std::span<const Index> new_face);

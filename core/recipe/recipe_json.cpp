@@ -152,6 +152,111 @@ Scalar step_length(const Json& j, const std::string& key)
     return v;
 }
 
+std::vector<Scalar> weights(const Json& j, const std::string& key)
+{
+    if (!j.is_array())
+        throw RecipeError(key, "must be an array of numbers >= 0");
+    std::vector<Scalar> out;
+    out.reserve(j.size());
+    for (size_t k = 0; k < j.size(); ++k)
+        out.push_back(weight(j[k], item(key, k)));
+    return out;
+}
+
+// The sets a section gives: one object, or a non-empty array of them (each parsed by
+// parse_one with its key, "soft[1]").
+template <typename Set, typename ParseOne>
+std::vector<Set> sets_of(const Json& j, const std::string& key, ParseOne parse_one)
+{
+    if (j.is_object())
+        return {parse_one(j, key)};
+    if (!j.is_array())
+        throw RecipeError(key, "must be an object or an array of objects");
+    if (j.empty())
+        throw RecipeError(key, "must hold at least one set (leave the section out for none)");
+    std::vector<Set> sets;
+    sets.reserve(j.size());
+    for (size_t k = 0; k < j.size(); ++k)
+        sets.push_back(parse_one(j[k], item(key, k)));
+    return sets;
+}
+
+// The rules of a list of sets that need no mesh, for the sets' element lists (named `list`,
+// e.g. "vertices") and their targets or normals: "all" only alone; targets given by every
+// set or by none, one per element, as weights are.
+template <typename Set>
+void check_set_list(const std::vector<Set>& sets, const std::string& key, const char* list,
+                    IndexSet Set::*elements, const char* targets_name,
+                    std::vector<Vec3> Set::*targets)
+{
+    for (size_t k = 0; k < sets.size(); ++k)
+    {
+        const std::string set = item(key, k);
+        const IndexSet& e = sets[k].*elements;
+        if (e.all)
+            throw RecipeError(child(set, list), "\"all\" is allowed only when " + key +
+                                                    " holds one set (this list holds " +
+                                                    std::to_string(sets.size()) + ")");
+        const size_t count = e.indices.size(), given = (sets[k].*targets).size();
+        if ((given == 0) != (sets[0].*targets).empty())
+            throw RecipeError(child(set, targets_name),
+                              std::string(given == 0 ? "is missing" : "is given") + ", but " +
+                                  item(key, 0) + (given == 0 ? " gives " : " gives no ") +
+                                  targets_name + ": in a list, every set gives them or none does");
+        if (given != 0 && given != count)
+            throw RecipeError(child(set, targets_name), "has " + std::to_string(given) +
+                                                            " entries but " + child(set, list) +
+                                                            " has " + std::to_string(count));
+        const size_t w = sets[k].weights.size();
+        if (w != 0 && w != count)
+            throw RecipeError(child(set, "weights"), std::to_string(w) + " weights for " +
+                                                         std::to_string(count) + " " + list);
+    }
+}
+
+// Merges a list of two or more sets into one with a weight per element: element k of set
+// s weighs s.mu * s.weights[k] (s.mu without weights), and the merged mu is 1, so that
+// the solver's mu * weight is that product exactly.
+template <typename Set>
+Set merge_sets(const std::vector<Set>& sets, const std::string& key, IndexSet Set::*elements,
+               std::vector<Vec3> Set::*targets)
+{
+    Set merged = sets[0];
+    merged.mu = 1;
+    (merged.*elements).indices.clear();
+    (merged.*targets).clear();
+    merged.weights.clear();
+    for (size_t s = 0; s < sets.size(); ++s)
+    {
+        const Set& set = sets[s];
+        const std::vector<Index>& list = (set.*elements).indices;
+        auto& into = (merged.*elements).indices;
+        into.insert(into.end(), list.begin(), list.end());
+        (merged.*targets)
+            .insert((merged.*targets).end(), (set.*targets).begin(), (set.*targets).end());
+        for (size_t k = 0; k < list.size(); ++k)
+        {
+            const Scalar w = set.weights.empty() ? set.mu : set.mu * set.weights[k];
+            if (!std::isfinite(w))
+                throw RecipeError(item(child(item(key, s), "weights"), k),
+                                  "times " + child(item(key, s), "mu") + " is not finite");
+            merged.weights.push_back(w);
+        }
+        merged.set_ends.push_back(into.size());
+    }
+    return merged;
+}
+
+// One set given as a list of one: kept as it is, with its key for messages ("soft[0]")
+// when it lists its elements.
+template <typename Set>
+Set single_set(Set set, const IndexSet& elements)
+{
+    if (!elements.all)
+        set.set_ends = {elements.indices.size()};
+    return set;
+}
+
 void parse_lambda(const Json& j, Recipe& r)
 {
     if (j.is_string())
@@ -163,6 +268,152 @@ void parse_lambda(const Json& j, Recipe& r)
     }
     r.lambda = step_length(j, "lambda");
     r.optimal_step = false;
+}
+
+SoftVertices soft_set(const Json& s, const std::string& key)
+{
+    expect_object(s, key, {"vertices", "mu", "targets", "weights"});
+    if (!s.contains("vertices"))
+        throw RecipeError(child(key, "vertices"), "is required");
+    SoftVertices soft;
+    soft.vertices = index_set(s["vertices"], child(key, "vertices"));
+    if (s.contains("mu"))
+        soft.mu = weight(s["mu"], child(key, "mu"));
+    if (s.contains("targets"))
+        soft.targets = points(s["targets"], child(key, "targets"));
+    if (s.contains("weights"))
+        soft.weights = weights(s["weights"], child(key, "weights"));
+    return soft;
+}
+
+SoftVertices parse_soft(const Json& j)
+{
+    const std::vector<SoftVertices> sets = sets_of<SoftVertices>(j, "soft", soft_set);
+    if (j.is_object())
+        return sets[0];
+    if (sets.size() == 1)
+        return single_set(sets[0], sets[0].vertices);
+    check_set_list(sets, "soft", "vertices", &SoftVertices::vertices, "targets",
+                   &SoftVertices::targets);
+    return merge_sets(sets, "soft", &SoftVertices::vertices, &SoftVertices::targets);
+}
+
+const char* denominator_name(CentroidDenominator d)
+{
+    return d == CentroidDenominator::Paper ? "paper" : "exact";
+}
+
+CentroidConstraints centroid_set(const Json& s, const std::string& key)
+{
+    expect_object(s, key, {"faces", "mu", "targets", "denominator", "weights"});
+    if (!s.contains("faces"))
+        throw RecipeError(child(key, "faces"), "is required");
+    CentroidConstraints c;
+    c.faces = index_set(s["faces"], child(key, "faces"));
+    if (s.contains("mu"))
+        c.mu = weight(s["mu"], child(key, "mu"));
+    if (s.contains("targets"))
+        c.targets = points(s["targets"], child(key, "targets"));
+    if (s.contains("denominator"))
+    {
+        if (s["denominator"] == "paper")
+            c.denominator = CentroidDenominator::Paper;
+        else if (s["denominator"] == "exact")
+            c.denominator = CentroidDenominator::Exact;
+        else
+            throw RecipeError(child(key, "denominator"), "must be \"paper\" or \"exact\"");
+    }
+    if (s.contains("weights"))
+        c.weights = weights(s["weights"], child(key, "weights"));
+    return c;
+}
+
+CentroidConstraints parse_centroid(const Json& j)
+{
+    const std::vector<CentroidConstraints> sets =
+        sets_of<CentroidConstraints>(j, "centroid", centroid_set);
+    if (j.is_object())
+        return sets[0];
+    if (sets.size() == 1)
+        return single_set(sets[0], sets[0].faces);
+    check_set_list(sets, "centroid", "faces", &CentroidConstraints::faces, "targets",
+                   &CentroidConstraints::targets);
+    // One term, one denominator: every set must name the same (omitted: "paper").
+    for (size_t k = 1; k < sets.size(); ++k)
+        if (sets[k].denominator != sets[0].denominator)
+            throw RecipeError(child(item("centroid", k), "denominator"),
+                              std::string("\"") + denominator_name(sets[k].denominator) +
+                                  "\" differs from centroid[0]'s \"" +
+                                  denominator_name(sets[0].denominator) +
+                                  "\" (the sets of a list share one denominator)");
+    return merge_sets(sets, "centroid", &CentroidConstraints::faces, &CentroidConstraints::targets);
+}
+
+const char* source_name(NormalSource source)
+{
+    switch (source)
+    {
+        case NormalSource::Initial:
+            return "\"initial\"";
+        case NormalSource::Smoothed:
+            return "\"smoothed\"";
+        case NormalSource::Custom:
+            break;
+    }
+    return "given normals";
+}
+
+NormalConstraints normal_set(const Json& s, const std::string& key, bool has_smoothing)
+{
+    expect_object(s, key, {"faces", "mu", "normals", "weights"});
+    if (!s.contains("faces"))
+        throw RecipeError(child(key, "faces"), "is required");
+    NormalConstraints n;
+    n.faces = index_set(s["faces"], child(key, "faces"));
+    if (s.contains("mu"))
+        n.mu = weight(s["mu"], child(key, "mu"));
+    if (s.contains("normals"))
+    {
+        const Json& v = s["normals"];
+        if (v == "initial")
+            n.source = NormalSource::Initial;
+        else if (v == "smoothed")
+            n.source = NormalSource::Smoothed;
+        else if (v.is_array())
+        {
+            n.source = NormalSource::Custom;
+            n.normals = points(v, child(key, "normals"));
+        }
+        else
+            throw RecipeError(child(key, "normals"),
+                              "must be \"initial\", \"smoothed\" or an array of [x, y, z]");
+    }
+    else if (has_smoothing)
+        n.source = NormalSource::Smoothed;
+    if (s.contains("weights"))
+        n.weights = weights(s["weights"], child(key, "weights"));
+    return n;
+}
+
+NormalConstraints parse_normal(const Json& j, bool has_smoothing)
+{
+    const std::vector<NormalConstraints> sets = sets_of<NormalConstraints>(
+        j, "normal",
+        [&](const Json& s, const std::string& key) { return normal_set(s, key, has_smoothing); });
+    if (j.is_object())
+        return sets[0];
+    if (sets.size() == 1)
+        return single_set(sets[0], sets[0].faces);
+    // One term, one source of normals: every set must name the same.
+    for (size_t k = 1; k < sets.size(); ++k)
+        if (sets[k].source != sets[0].source)
+            throw RecipeError(child(item("normal", k), "normals"),
+                              std::string(source_name(sets[k].source)) +
+                                  " differs from normal[0]'s " + source_name(sets[0].source) +
+                                  " (the sets of a list take their normals from one source)");
+    check_set_list(sets, "normal", "faces", &NormalConstraints::faces, "normals",
+                   &NormalConstraints::normals);
+    return merge_sets(sets, "normal", &NormalConstraints::faces, &NormalConstraints::normals);
 }
 
 Recipe parse_recipe_json(const Json& j)
@@ -213,72 +464,11 @@ Recipe parse_recipe_json(const Json& j)
         r.hard = std::move(hard);
     }
     if (j.contains("soft"))
-    {
-        const Json& s = j["soft"];
-        expect_object(s, "soft", {"vertices", "mu", "targets"});
-        if (!s.contains("vertices"))
-            throw RecipeError("soft.vertices", "is required");
-        SoftVertices soft;
-        soft.vertices = index_set(s["vertices"], "soft.vertices");
-        if (s.contains("mu"))
-            soft.mu = weight(s["mu"], "soft.mu");
-        if (s.contains("targets"))
-            soft.targets = points(s["targets"], "soft.targets");
-        r.soft = std::move(soft);
-    }
+        r.soft = parse_soft(j["soft"]);
     if (j.contains("centroid"))
-    {
-        const Json& s = j["centroid"];
-        expect_object(s, "centroid", {"faces", "mu", "targets", "denominator"});
-        if (!s.contains("faces"))
-            throw RecipeError("centroid.faces", "is required");
-        CentroidConstraints c;
-        c.faces = index_set(s["faces"], "centroid.faces");
-        if (s.contains("mu"))
-            c.mu = weight(s["mu"], "centroid.mu");
-        if (s.contains("targets"))
-            c.targets = points(s["targets"], "centroid.targets");
-        if (s.contains("denominator"))
-        {
-            if (s["denominator"] == "paper")
-                c.denominator = CentroidDenominator::Paper;
-            else if (s["denominator"] == "exact")
-                c.denominator = CentroidDenominator::Exact;
-            else
-                throw RecipeError("centroid.denominator", "must be \"paper\" or \"exact\"");
-        }
-        r.centroid = std::move(c);
-    }
+        r.centroid = parse_centroid(j["centroid"]);
     if (j.contains("normal"))
-    {
-        const Json& s = j["normal"];
-        expect_object(s, "normal", {"faces", "mu", "normals"});
-        if (!s.contains("faces"))
-            throw RecipeError("normal.faces", "is required");
-        NormalConstraints n;
-        n.faces = index_set(s["faces"], "normal.faces");
-        if (s.contains("mu"))
-            n.mu = weight(s["mu"], "normal.mu");
-        if (s.contains("normals"))
-        {
-            const Json& v = s["normals"];
-            if (v == "initial")
-                n.source = NormalSource::Initial;
-            else if (v == "smoothed")
-                n.source = NormalSource::Smoothed;
-            else if (v.is_array())
-            {
-                n.source = NormalSource::Custom;
-                n.normals = points(v, "normal.normals");
-            }
-            else
-                throw RecipeError("normal.normals",
-                                  "must be \"initial\", \"smoothed\" or an array of [x, y, z]");
-        }
-        else if (j.contains("normal_smoothing"))
-            n.source = NormalSource::Smoothed;
-        r.normal = std::move(n);
-    }
+        r.normal = parse_normal(j["normal"], j.contains("normal_smoothing"));
     if (j.contains("normal_smoothing"))
     {
         const Json& s = j["normal_smoothing"];
@@ -301,7 +491,7 @@ Recipe parse_recipe_json(const Json& j)
         if (s.contains("soft"))
         {
             const Json& h = s["soft"];
-            expect_object(h, "normal_smoothing.soft", {"faces", "mu", "normals"});
+            expect_object(h, "normal_smoothing.soft", {"faces", "mu", "normals", "weights"});
             if (!h.contains("faces"))
                 throw RecipeError("normal_smoothing.soft.faces", "is required");
             ns.soft.faces = indices(h["faces"], "normal_smoothing.soft.faces");
@@ -309,6 +499,8 @@ Recipe parse_recipe_json(const Json& j)
                 ns.soft.mu = weight(h["mu"], "normal_smoothing.soft.mu");
             if (h.contains("normals"))
                 ns.soft.normals = points(h["normals"], "normal_smoothing.soft.normals");
+            if (h.contains("weights"))
+                ns.soft.weights = weights(h["weights"], "normal_smoothing.soft.weights");
         }
         r.normal_smoothing = std::move(ns);
     }
@@ -415,6 +607,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
         j["soft"] = {{"vertices", set_json(r.soft->vertices)}, {"mu", r.soft->mu}};
         if (!r.soft->targets.empty())
             j["soft"]["targets"] = points_json(r.soft->targets);
+        if (!r.soft->weights.empty())
+            j["soft"]["weights"] = r.soft->weights;
     }
     if (r.centroid)
     {
@@ -425,6 +619,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
              r.centroid->denominator == CentroidDenominator::Paper ? "paper" : "exact"}};
         if (!r.centroid->targets.empty())
             j["centroid"]["targets"] = points_json(r.centroid->targets);
+        if (!r.centroid->weights.empty())
+            j["centroid"]["weights"] = r.centroid->weights;
     }
     if (r.normal)
     {
@@ -441,6 +637,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
                 j["normal"]["normals"] = points_json(r.normal->normals);
                 break;
         }
+        if (!r.normal->weights.empty())
+            j["normal"]["weights"] = r.normal->weights;
     }
     if (r.normal_smoothing)
     {
@@ -457,6 +655,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
             s["soft"] = {{"faces", ns.soft.faces}, {"mu", ns.soft.mu}};
             if (!ns.soft.normals.empty())
                 s["soft"]["normals"] = points_json(ns.soft.normals);
+            if (!ns.soft.weights.empty())
+                s["soft"]["weights"] = ns.soft.weights;
         }
         j["normal_smoothing"] = s;
     }

@@ -121,16 +121,25 @@ void Session::precompute()
     {
         const SoftVertices& s = *recipe_.soft;
         std::vector<Index> vertices;
+        std::vector<Scalar> weights; // per listed vertex; with "all", of the vertices kept
         if (s.vertices.all)
         {
             vertices.reserve(static_cast<size_t>(nv));
             for (Index v = 0; v < nv; ++v)
                 if (!is_hard[v])
                     vertices.push_back(v);
+            if (!s.weights.empty())
+            {
+                weights.reserve(vertices.size());
+                for (const Index v : vertices)
+                    weights.push_back(s.weights[v]);
+            }
         }
         else
             vertices = s.vertices.indices;
-        soft_.emplace(nv, std::move(vertices), s.mu);
+        soft_.emplace(
+            nv, std::move(vertices), s.mu, std::span<const Scalar>{},
+            s.vertices.all ? std::span<const Scalar>(weights) : std::span<const Scalar>(s.weights));
         if (s.targets.empty())
             soft_->set_targets_at(x0);
         else if (s.vertices.all) // one target per vertex of the mesh
@@ -144,7 +153,7 @@ void Session::precompute()
     {
         const CentroidConstraints& c = *recipe_.centroid;
         centroid_.emplace(mesh, *topology_, c.faces.all ? all_indices(nf) : c.faces.indices, c.mu,
-                          c.denominator);
+                          c.denominator, c.weights);
         if (c.targets.empty())
             centroid_->set_targets_to_centroids(x0);
         else
@@ -176,9 +185,9 @@ void Session::precompute()
             for (size_t k = 0; k < faces.size(); ++k)
                 std::copy_n(&given[3 * k], 3, &normals_[3 * faces[k]]);
         }
-        normal_.emplace(mesh, *topology_, std::move(faces), n.mu);
+        normal_.emplace(mesh, *topology_, std::move(faces), n.mu, n.weights);
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
-                           soft_normals);
+                           soft_normals, ns.soft.weights);
         smoothing_->apply_hard(normals_);
         // Scratch normals for normal smoothing and the joint update only.
         if (n.source == NormalSource::Smoothed || recipe_.joint)
@@ -344,17 +353,34 @@ void Session::fused_sweep(const Scalar* x, Scalar* y)
             centroid_->face_residuals(x, faces.data(), begin, end, residual);
         });
     }
-    if (free_.size() == static_cast<size_t>(vertex_count_))
-        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, true>(x, y, begin, end);
+    // The soft and centroid terms weigh their elements through per-vertex weights and
+    // per-face residuals; only the normal term's sweep differs with weights.
+    const bool all_free = free_.size() == static_cast<size_t>(vertex_count_);
+    const Index count = static_cast<Index>(free_.size());
+    if constexpr (Normal)
+        if (normal_->has_weights())
+        {
+            if (all_free)
+                parallel_ranges(count, [=, this](Index begin, Index end) {
+                    fused_range<Soft, Centroid, Normal, true, true>(x, y, begin, end);
+                });
+            else
+                parallel_ranges(count, [=, this](Index begin, Index end) {
+                    fused_range<Soft, Centroid, Normal, true, false>(x, y, begin, end);
+                });
+            return;
+        }
+    if (all_free)
+        parallel_ranges(count, [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, false, true>(x, y, begin, end);
         });
     else
-        parallel_ranges(static_cast<Index>(free_.size()), [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, false>(x, y, begin, end);
+        parallel_ranges(count, [=, this](Index begin, Index end) {
+            fused_range<Soft, Centroid, Normal, false, false>(x, y, begin, end);
         });
 }
 
-template <bool Soft, bool Centroid, bool Normal, bool AllFree>
+template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree>
 void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
 {
     // Locals: the loop keeps them in registers (the stores to y could change the
@@ -380,7 +406,7 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
         if constexpr (Centroid)
             centroid_->add_vertex_residuals(i, residual, r);
         if constexpr (Normal)
-            normal_->add_vertex_rhs(i, x, normals, r);
+            normal_->add_vertex_rhs<NormalWeighted>(i, x, normals, r);
         Scalar dx[3];
         if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
             cholesky3_solve(&factor[2 * at], r, dx);

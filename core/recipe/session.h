@@ -151,8 +151,9 @@ private:
     //! solves 3x3 blocks exactly when the normal term is on.)
     template <bool Soft, bool Centroid, bool Normal>
     void fused_sweep(const Scalar* x, Scalar* y);
-    //! The sweep over free[begin .. end) (AllFree: every vertex free, i = k).
-    template <bool Soft, bool Centroid, bool Normal, bool AllFree>
+    //! The sweep over free[begin .. end) (AllFree: every vertex free, i = k; NormalWeighted:
+    //! the normal term's faces have weights of their own).
+    template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree>
     void fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const;
     //! The general step (separate right-hand side, displacement, line search, joint
     //! update), in place on x.

@@ -4,7 +4,8 @@
 // survive recipe_to_json -> parse_recipe -> recipe_to_json unchanged (the documented
 // round trip); a recipe that fits a small fixed mesh (check_recipe) then runs at most 3
 // steps (and 3 normal-smoothing iterations) on it, which must keep every coordinate
-// finite when all of the recipe's numbers are within +-1000.
+// finite when all of the recipe's numbers are within +-1000 (per-element weights: mu times
+// weight within +-1e6).
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,14 @@ bool bounded(const std::vector<Vec3>& points)
     return true;
 }
 
+// A term's mu and its per-element weights mu * weights[k]: within what two numbers of
+// +-1000 give (a list of sets is merged into mu = 1 and weights set.mu * set.weights[k]).
+bool bounded(double mu, const std::vector<Scalar>& weights)
+{
+    return bounded(mu) && std::all_of(weights.begin(), weights.end(),
+                                      [&](Scalar w) { return std::abs(mu * w) <= 1e6; });
+}
+
 // Every number of the recipe is within +-1000 (weights, step lengths, targets, normals).
 bool bounded(const Recipe& r)
 {
@@ -65,16 +74,16 @@ bool bounded(const Recipe& r)
     if (r.hard)
         ok = ok && bounded(r.hard->targets);
     if (r.soft)
-        ok = ok && bounded(r.soft->mu) && bounded(r.soft->targets);
+        ok = ok && bounded(r.soft->mu, r.soft->weights) && bounded(r.soft->targets);
     if (r.centroid)
-        ok = ok && bounded(r.centroid->mu) && bounded(r.centroid->targets);
+        ok = ok && bounded(r.centroid->mu, r.centroid->weights) && bounded(r.centroid->targets);
     if (r.normal)
-        ok = ok && bounded(r.normal->mu) && bounded(r.normal->normals);
+        ok = ok && bounded(r.normal->mu, r.normal->weights) && bounded(r.normal->normals);
     if (r.normal_smoothing)
     {
         const NormalSmoothing& ns = *r.normal_smoothing;
-        ok = ok && bounded(ns.lambda) && bounded(ns.hard.normals) && bounded(ns.soft.mu) &&
-             bounded(ns.soft.normals);
+        ok = ok && bounded(ns.lambda) && bounded(ns.hard.normals) &&
+             bounded(ns.soft.mu, ns.soft.weights) && bounded(ns.soft.normals);
     }
     if (r.joint)
         ok = ok && bounded(r.joint->gamma);

@@ -174,4 +174,75 @@ TEST_SUITE("FaceCentroidTerm")
                 CHECK(after > before);
         }
     }
+
+    TEST_CASE("with a weight per face: gradient, both denominators and the one-vertex minimizer")
+    {
+        Mesh m = test::mixed_polygons();
+        const std::vector<Index> faces = test::all_indices(m.face_count());
+        std::vector<Scalar> weights;
+        for (size_t k = 0; k < faces.size(); ++k)
+            weights.push_back(0.25 + 0.5 * static_cast<Scalar>(k % 4)); // 0.25 .. 1.75
+        weights[1] = 0;                                                 // a weight of 0 is allowed
+        const std::vector<Scalar> targets = centroids(m, faces);
+        test::perturb(m, 0.1, 9);
+        const Topology t = build_topology(m);
+        const Scalar mu = 1.7;
+        for (const auto d : {CentroidDenominator::Paper, CentroidDenominator::Exact})
+        {
+            CAPTURE(d == CentroidDenominator::Paper);
+            const FaceCentroidTerm term(m, t, faces, mu, targets, d, weights);
+            std::vector<Scalar> rhs(m.positions.size(), 0), diagonal(m.vertex_count(), 0);
+            term.add_rhs(m.positions, test::all_indices(m.vertex_count()), rhs);
+            test::check_rhs_is_half_negative_gradient(
+                [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
+            // D_i = sum_f mu_f / n_f (paper) or mu_f / n_f^2 (exact).
+            term.add_diagonal(diagonal);
+            for (Index i = 0; i < m.vertex_count(); ++i)
+            {
+                Scalar expected = 0;
+                for (const Index c : t.corners_of_vertex(i))
+                {
+                    const Index f = t.corner_face[c];
+                    const Scalar n = m.face_size(f);
+                    expected += mu * weights[f] / (d == CentroidDenominator::Paper ? n : n * n);
+                }
+                CHECK(diagonal[i] == doctest::Approx(expected).epsilon(1e-14));
+            }
+            // The energy is sum_f mu_f |x_f - x0_f|^2.
+            Scalar energy = 0;
+            for (Index f = 0; f < m.face_count(); ++f)
+            {
+                const Vec3 c = face_centroid(m, m.positions, f);
+                for (int a = 0; a < 3; ++a)
+                    energy +=
+                        mu * weights[f] * (c[a] - targets[3 * f + a]) * (c[a] - targets[3 * f + a]);
+            }
+            CHECK(term.energy(m.positions) == doctest::Approx(energy).epsilon(1e-14));
+            // The fused step's per-face residuals are the general step's, bit for bit.
+            std::vector<Scalar> residual(3 * m.face_count(), 0), fused(m.positions.size(), 0);
+            term.face_residuals(m.positions.data(), faces.data(), 0,
+                                static_cast<Index>(faces.size()), residual.data());
+            for (Index i = 0; i < m.vertex_count(); ++i)
+                term.add_vertex_residuals(i, residual.data(), &fused[3 * i]);
+            CHECK(fused == rhs);
+        }
+        // The exact denominator still zeroes the partial gradient of one vertex.
+        const EdgeTerm edge(t);
+        const FaceCentroidTerm exact(m, t, faces, mu, targets, CentroidDenominator::Exact, weights);
+        const Index i = 5;
+        const std::vector<Index> one{i};
+        std::vector<Scalar> diagonal(m.vertex_count(), 0), rhs(m.positions.size(), 0);
+        edge.add_diagonal(diagonal);
+        exact.add_diagonal(diagonal);
+        edge.add_rhs(m.positions, one, rhs);
+        exact.add_rhs(m.positions, one, rhs);
+        Mesh moved = m;
+        for (int a = 0; a < 3; ++a)
+            moved.positions[3 * i + a] += rhs[3 * i + a] / diagonal[i];
+        std::vector<Scalar> after(m.positions.size(), 0);
+        edge.add_rhs(moved.positions, one, after);
+        exact.add_rhs(moved.positions, one, after);
+        for (int a = 0; a < 3; ++a)
+            CHECK(after[3 * i + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
+    }
 }

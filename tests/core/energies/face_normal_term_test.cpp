@@ -117,4 +117,50 @@ TEST_SUITE("FaceNormalTerm")
                 CHECK(m.positions[3 * i + a] == doctest::Approx(expected[a]).epsilon(1e-12));
         }
     }
+
+    TEST_CASE("with a weight per face: gradient, 3x3 block and the one-vertex minimizer")
+    {
+        Mesh m = test::mixed_polygons();
+        const std::vector<Scalar> normals = face_normals(m, m.positions);
+        test::perturb(m, 0.15, 13);
+        const Topology t = build_topology(m);
+        const std::vector<Index> faces = test::all_indices(m.face_count());
+        std::vector<Scalar> weights;
+        for (size_t k = 0; k < faces.size(); ++k)
+            weights.push_back(static_cast<Scalar>((3 * k) % 5)); // 0, 3, 1, 4, 2, ...
+        const Scalar mu = 1.3;
+        const FaceNormalTerm term(m, t, faces, mu, weights);
+        std::vector<Scalar> rhs(m.positions.size(), 0);
+        term.add_rhs(m.positions, normals, test::all_indices(m.vertex_count()), rhs);
+        test::check_rhs_is_half_negative_gradient(
+            [&](std::span<const Scalar> x) { return term.energy(x, normals); }, m.positions, rhs);
+        // Each face's part is that of a face alone with mu_f as its mu.
+        for (Index f = 0; f < m.face_count(); ++f)
+        {
+            const FaceNormalTerm one_face(m, t, {f}, mu * weights[f]);
+            const FaceNormalTerm one_weighted(m, t, {f}, mu, std::vector<Scalar>{weights[f]});
+            CHECK(one_weighted.energy(m.positions, normals) ==
+                  doctest::Approx(one_face.energy(m.positions, normals)).epsilon(1e-15));
+        }
+        // The weighted 3x3 solve zeroes the vertex's partial gradient.
+        const EdgeTerm edge(t);
+        const Index i = 5;
+        const std::vector<Index> one{i};
+        std::vector<Scalar> diagonal(m.vertex_count(), 0), block(6 * m.vertex_count(), 0),
+            r(m.positions.size(), 0);
+        edge.add_diagonal(diagonal);
+        term.add_block(normals, one, block);
+        edge.add_rhs(m.positions, one, r);
+        term.add_rhs(m.positions, normals, one, r);
+        Scalar L[6] = {}, dx[3] = {};
+        REQUIRE(cholesky3(diagonal[i], &block[6 * i], L));
+        cholesky3_solve(L, &r[3 * i], dx);
+        for (int a = 0; a < 3; ++a)
+            m.positions[3 * i + a] += dx[a];
+        std::vector<Scalar> after(m.positions.size(), 0);
+        edge.add_rhs(m.positions, one, after);
+        term.add_rhs(m.positions, normals, one, after);
+        for (int a = 0; a < 3; ++a)
+            CHECK(after[3 * i + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
+    }
 }

@@ -91,4 +91,44 @@ TEST_SUITE("NormalSmoothingTerm")
         CHECK(u[2] == doctest::Approx(std::sqrt(0.5)));
         CHECK(term.soft_energy(u) < 2.0);
     }
+
+    TEST_CASE("soft normals with their own weights: each face's step uses mu w_f")
+    {
+        const Mesh m = test::open_grid(3, 1); // three faces in a row, two dual edges
+        const Topology t = build_topology(m);
+        const std::vector<Scalar> start{0, 0, 1, 0, 0, 1, 0, 0, 1};
+        const std::vector<Index> soft{0, 2};
+        const std::vector<Scalar> target{1, 0, 0, 0, 1, 0};
+        const std::vector<Scalar> weights{3.0, 0.5};
+        const Scalar mu = 2.0;
+        const NormalSmoothingTerm term(t, {}, {}, soft, mu, target, weights);
+        CHECK(term.soft_weight(0) == 6.0);
+        CHECK(term.soft_weight(1) == 0.0);
+        CHECK(term.soft_weight(2) == 1.0);
+        // |u_f - u0_f|^2 = 2 for both soft faces.
+        CHECK(term.soft_energy(start) == doctest::Approx(2 * 6.0 + 2 * 1.0));
+        std::vector<Scalar> u = start, scratch(u.size());
+        term.step(u, 1.0, scratch);
+        // Face 0: (u_1 - u_0 + mu_0 (t_0 - u_0)) / (1 + mu_0) + u_0 = (u_1 + 6 t_0) / 7.
+        Scalar expected0[3] = {6.0 / 7, 0, 1.0 / 7};
+        normalize3(expected0);
+        // Face 2: (u_1 + 1 t_2) / 2.
+        Scalar expected2[3] = {0, 0.5, 0.5};
+        normalize3(expected2);
+        for (int a = 0; a < 3; ++a)
+        {
+            CHECK(u[a] == doctest::Approx(expected0[a]).epsilon(1e-14));
+            CHECK(u[6 + a] == doctest::Approx(expected2[a]).epsilon(1e-14));
+        }
+        // A weight of 0 is no soft constraint: the same step as without face 0 in F_S.
+        const NormalSmoothingTerm zero(t, {}, {}, soft, mu, target, std::vector<Scalar>{0.0, 0.5});
+        const std::vector<Index> only2{2};
+        const std::vector<Scalar> target2{0, 1, 0};
+        const NormalSmoothingTerm without(t, {}, {}, only2, mu * 0.5, target2);
+        std::vector<Scalar> a = start, b = start;
+        zero.step(a, 0.5, scratch);
+        without.step(b, 0.5, scratch);
+        for (size_t k = 0; k < a.size(); ++k)
+            CHECK(a[k] == doctest::Approx(b[k]).epsilon(1e-15));
+    }
 }

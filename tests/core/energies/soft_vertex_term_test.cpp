@@ -83,4 +83,60 @@ TEST_SUITE("SoftVertexTerm")
         for (int a = 0; a < 3; ++a)
             CHECK(after[15 + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
     }
+
+    TEST_CASE("with a weight per vertex: right-hand side, diagonal and energy use mu w_i")
+    {
+        Mesh m = test::icosphere(1);
+        const std::vector<Index> vertices{0, 4, 9, 30};
+        const std::vector<Scalar> weights{0.5, 0.0, 3.0, 1.25};
+        std::vector<Scalar> targets;
+        for (const Index v : vertices)
+            for (int a = 0; a < 3; ++a)
+                targets.push_back(m.positions[3 * v + a] + 0.1 * (a + 1));
+        test::perturb(m, 0.1, 8);
+        const Scalar mu = 2.5;
+        const SoftVertexTerm term(m.vertex_count(), vertices, mu, targets, weights);
+        CHECK(term.has_weights());
+        std::vector<Scalar> rhs(m.positions.size(), 0), diagonal(m.vertex_count(), 0);
+        term.add_rhs(m.positions, test::all_indices(m.vertex_count()), rhs);
+        test::check_rhs_is_half_negative_gradient(
+            [&](std::span<const Scalar> x) { return term.energy(x); }, m.positions, rhs);
+        term.add_diagonal(diagonal);
+        Scalar expected = 0;
+        for (size_t k = 0; k < vertices.size(); ++k)
+        {
+            const Index i = vertices[k];
+            CHECK(diagonal[i] == mu * weights[k]);
+            for (int a = 0; a < 3; ++a)
+            {
+                const Scalar d = m.positions[3 * i + a] - targets[3 * k + a];
+                expected += mu * weights[k] * d * d;
+                CHECK(rhs[3 * i + a] == mu * weights[k] * -d);
+            }
+        }
+        CHECK(term.energy(m.positions) == doctest::Approx(expected).epsilon(1e-14));
+        std::vector<Scalar> share(m.vertex_count(), 0);
+        term.add_vertex_energy(m.positions, share);
+        CHECK(share[4] == 0.0); // weight 0: no energy
+        CHECK(term.quadratic(m.positions) ==
+              doctest::Approx(
+                  SoftVertexTerm(m.vertex_count(), vertices, mu, {}, weights).energy(m.positions))
+                  .epsilon(1e-14));
+    }
+
+    TEST_CASE("weights of 1 are the single mu, bit for bit, except the energy's summation order")
+    {
+        Mesh m = test::icosphere(1);
+        test::perturb(m, 0.1, 3);
+        const std::vector<Index> vertices{1, 2, 7};
+        const std::vector<Scalar> ones(vertices.size(), 1.0);
+        const SoftVertexTerm plain(m.vertex_count(), vertices, 0.7);
+        const SoftVertexTerm weighted(m.vertex_count(), vertices, 0.7, {}, ones);
+        std::vector<Scalar> a(m.positions.size(), 0), b(m.positions.size(), 0);
+        plain.add_rhs(m.positions, vertices, a);
+        weighted.add_rhs(m.positions, vertices, b);
+        CHECK(a == b);
+        CHECK(weighted.energy(m.positions) ==
+              doctest::Approx(plain.energy(m.positions)).epsilon(1e-15));
+    }
 }

@@ -3,7 +3,7 @@
 //
 // Solving in the locality numbering (what meshfair-cli does) gives the result of solving
 // in the file's numbering: renumber_recipe maps every index list and every per-element
-// list of a recipe.
+// list of a recipe (targets, normals, weights).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -113,8 +113,29 @@ TEST_SUITE("Session")
             NormalSmoothing{4, 0.5, {{2, 9}, {}}, {{11, 12}, 0.5, {direction(7), direction(8)}}};
         smoothed.joint = Joint{0.5};
 
+        // The same with a weight per element: weights follow their elements.
+        const auto ramp = [](size_t n) {
+            std::vector<Scalar> w(n);
+            for (size_t k = 0; k < n; ++k)
+                w[k] = 0.25 + static_cast<Scalar>(k % 9);
+            return w;
+        };
+        Recipe weighted_lists = lists;
+        weighted_lists.soft->weights = {3.0, 0.0, 0.5};
+        weighted_lists.centroid->weights = {0.5, 4.0, 1.0};
+        weighted_lists.normal->weights = {2.0, 0.25, 1.0};
+        Recipe weighted_all = smoothed;
+        weighted_all.soft->weights = ramp(static_cast<size_t>(nv));
+        weighted_all.centroid->weights = ramp(static_cast<size_t>(nf));
+        weighted_all.normal->weights = ramp(static_cast<size_t>(nf));
+        weighted_all.normal_smoothing->soft.weights = {0.5, 2.0};
+
         const std::pair<const char*, const Recipe*> recipes[] = {
-            {"lists", &lists}, {"all", &all}, {"smoothed", &smoothed}};
+            {"lists", &lists},
+            {"all", &all},
+            {"smoothed", &smoothed},
+            {"weighted lists", &weighted_lists},
+            {"weighted all", &weighted_all}};
         for (const auto& entry : recipes)
         {
             // (Not a structured binding: clang 14 cannot capture one in CAPTURE's lambda.)

@@ -90,7 +90,7 @@ TEST_SUITE("Recipe")
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, region, hard, soft, centroid, normal, normal_smoothing, joint)");
         CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
-              "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets)");
+              "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets, weights)");
         CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==
               "recipe: hard.vertices[1]: vertex 9 is out of range (the mesh has 8 vertices)");
         CHECK(error_of(R"({"centroid": {"faces": [6]}})") ==
@@ -140,7 +140,8 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"region": {}})") == "'r.json': region: needs \"vertices\" or \"faces\"");
         CHECK(error_of(R"({"soft": {"mu": 1}})") == "'r.json': soft.vertices: is required");
         CHECK(error_of(R"([1, 2])") == "'r.json': (top level): must be an object");
-        CHECK(error_of(R"({"soft": 3})") == "'r.json': soft: must be an object");
+        CHECK(error_of(R"({"soft": 3})") ==
+              "'r.json': soft: must be an object or an array of objects");
         CHECK(error_of(R"({"iterations": 3,})") ==
               "'r.json':1:18: not valid JSON: syntax error while parsing object key - unexpected "
               "'}'; expected string literal");
@@ -172,5 +173,177 @@ TEST_SUITE("Recipe")
         CHECK_THROWS_WITH_AS(check_recipe(r, mesh),
                              "recipe: hard.targets[0]: must be finite and within +-1e100",
                              RecipeError);
+    }
+
+    TEST_CASE("weights parse one per element, and a recipe without them writes what it did")
+    {
+        const Recipe r = parse_recipe(R"({"soft": {"vertices": [1, 2], "mu": 0.5,
+            "weights": [2, 0]}, "centroid": {"faces": "all", "weights": [1, 2, 3, 4, 5, 6]},
+            "normal": {"faces": [0], "weights": [0.25]},
+            "normal_smoothing": {"soft": {"faces": [3], "mu": 0.1, "weights": [4]}}})",
+                                      "r.json");
+        CHECK(r.soft->weights == std::vector<Scalar>{2, 0});
+        CHECK(r.centroid->weights.size() == 6);
+        CHECK(r.normal->weights == std::vector<Scalar>{0.25});
+        CHECK(r.normal_smoothing->soft.weights == std::vector<Scalar>{4});
+        CHECK_NOTHROW(check_recipe(r, test::quad_cube()));
+        const Recipe back = parse_recipe(recipe_to_json(r).dump(), "again.json");
+        CHECK(recipe_to_json(back) == recipe_to_json(r));
+        CHECK(back.centroid->weights == r.centroid->weights);
+        // No weights: no "weights" key, the JSON written before weights existed.
+        const Recipe plain = parse_recipe(
+            R"({"soft": {"vertices": [1]}, "centroid": {"faces": [0]}, "normal": {"faces": "all"},
+                "normal_smoothing": {"soft": {"faces": [3]}}})",
+            "r.json");
+        CHECK(recipe_to_json(plain).dump() ==
+              R"({"centroid":{"denominator":"paper","faces":[0],"mu":1.0},"iterations":10,)"
+              R"("lambda":0.5,"method":"jacobi","normal":{"faces":"all","mu":1.0,"normals":)"
+              R"("smoothed"},"normal_smoothing":{"iterations":10,"lambda":0.5,"soft":{"faces":)"
+              R"([3],"mu":1.0}},"soft":{"mu":1.0,"vertices":[1]},"tolerance":0.0})");
+    }
+
+    TEST_CASE("a list of sets is one set weighing each element by its set's mu and weights")
+    {
+        const Recipe r = parse_recipe(R"({
+            "soft": [{"vertices": [1, 2], "mu": 0.5, "targets": [[0, 0, 0], [1, 1, 1]]},
+                     {"vertices": [7], "mu": 4, "weights": [0.25], "targets": [[2, 2, 2]]}],
+            "centroid": [{"faces": [0], "mu": 2, "denominator": "exact"},
+                         {"faces": [5, 3], "weights": [3, 0], "denominator": "exact"}],
+            "normal": [{"faces": [1], "mu": 3, "normals": [[0, 0, 1]]},
+                       {"faces": [2], "normals": [[1, 0, 0]]}]})",
+                                      "r.json");
+        CHECK(r.soft->vertices.indices == std::vector<Index>{1, 2, 7});
+        CHECK(r.soft->mu == 1);
+        CHECK(r.soft->weights == std::vector<Scalar>{0.5, 0.5, 1});
+        CHECK(r.soft->targets.size() == 3);
+        CHECK(r.soft->targets[2] == Vec3{2, 2, 2});
+        CHECK(r.centroid->faces.indices == std::vector<Index>{0, 5, 3});
+        CHECK(r.centroid->weights == std::vector<Scalar>{2, 3, 0});
+        CHECK(r.centroid->denominator == CentroidDenominator::Exact);
+        CHECK(r.normal->source == NormalSource::Custom);
+        CHECK(r.normal->normals == std::vector<Vec3>{{0, 0, 1}, {1, 0, 0}});
+        CHECK(r.normal->weights == std::vector<Scalar>{3, 1});
+        CHECK_NOTHROW(check_recipe(r, test::quad_cube()));
+        // Written back as one object with weights, which parses to the same recipe.
+        const nlohmann::json j = recipe_to_json(r);
+        CHECK(j["soft"]["weights"] == nlohmann::json{0.5, 0.5, 1.0});
+        CHECK(recipe_to_json(parse_recipe(j.dump(), "again.json")) == j);
+        // A list of one set is that set.
+        const Recipe one = parse_recipe(R"({"soft": [{"vertices": [1, 2], "mu": 0.5}]})", "r.json");
+        CHECK(one.soft->mu == 0.5);
+        CHECK(one.soft->weights.empty());
+        CHECK(recipe_to_json(one) ==
+              recipe_to_json(parse_recipe(R"({"soft": {"vertices": [1, 2], "mu": 0.5}})", "r")));
+        const Recipe all = parse_recipe(R"({"normal": [{"faces": "all", "mu": 2}]})", "r.json");
+        CHECK(all.normal->faces.all);
+    }
+
+    TEST_CASE("every malformed weight or list of sets is refused naming the key")
+    {
+        // Weights.
+        CHECK(
+            error_of(R"({"soft": {"vertices": [1, 2, 3, 4, 5, 6], "weights": [1, 1, 1, 1, 1]}})") ==
+            "recipe: soft.weights: 5 weights for 6 vertices");
+        CHECK(error_of(R"({"soft": {"vertices": "all", "weights": [1]}})") ==
+              "recipe: soft.weights: 1 weights for 8 vertices (soft.vertices is \"all\")");
+        CHECK(error_of(R"({"centroid": {"faces": "all", "weights": [1, 2]}})") ==
+              "recipe: centroid.weights: 2 weights for 6 faces (centroid.faces is \"all\")");
+        CHECK(error_of(R"({"normal": {"faces": [0, 1], "weights": [1]}})") ==
+              "recipe: normal.weights: 1 weights for 2 faces");
+        CHECK(
+            error_of(R"({"normal": {"faces": "all"}, "normal_smoothing": {"soft": {"faces": [1, 2],
+              "weights": [1, 2, 3]}}})") ==
+            "recipe: normal_smoothing.soft.weights: 3 weights for 2 faces");
+        CHECK(error_of(R"({"soft": {"vertices": [1, 2], "weights": [1, -2]}})") ==
+              "'r.json': soft.weights[1]: must be >= 0 (got -2)");
+        CHECK(error_of(R"({"soft": {"vertices": [1], "weights": 2}})") ==
+              "'r.json': soft.weights: must be an array of numbers >= 0");
+        CHECK(error_of(R"({"centroid": {"faces": [1], "weights": ["a"]}})") ==
+              "'r.json': centroid.weights[0]: must be a number");
+        CHECK(error_of(R"({"normal": {"faces": [1], "weights": [1e400]}})").find("'r.json'") == 0);
+        CHECK(error_of(R"({"soft": {"vertices": [1], "mu": 1e300, "weights": [1e300]}})") ==
+              "recipe: soft.weights[0]: times mu is not finite");
+        // Lists of sets.
+        CHECK(error_of(R"({"soft": []})") ==
+              "'r.json': soft: must hold at least one set (leave the section out for none)");
+        CHECK(error_of(R"({"soft": [3]})") == "'r.json': soft[0]: must be an object");
+        CHECK(error_of(R"({"soft": [{"vertices": [1], "muu": 1}]})") ==
+              "'r.json': soft[0].muu: unknown key (allowed here: vertices, mu, targets, weights)");
+        CHECK(error_of(R"({"centroid": [{"faces": [1]}, {"mu": 1}]})") ==
+              "'r.json': centroid[1].faces: is required");
+        CHECK(error_of(R"({"soft": [{"vertices": [1, 2]}, {"vertices": [3, 4, 5, 2]}]})") ==
+              "recipe: soft[1].vertices[3]: vertex 2 is already in soft[0]");
+        CHECK(error_of(R"({"soft": [{"vertices": [1]}, {"vertices": [3, 3]}]})") ==
+              "recipe: soft[1].vertices[1]: vertex 3 is listed twice");
+        CHECK(error_of(R"({"soft": [{"vertices": [1]}, {"vertices": [3, 9]}]})") ==
+              "recipe: soft[1].vertices[1]: vertex 9 is out of range (the mesh has 8 vertices)");
+        CHECK(error_of(R"({"soft": [{"vertices": [9]}]})") ==
+              "recipe: soft[0].vertices[0]: vertex 9 is out of range (the mesh has 8 vertices)");
+        CHECK(error_of(R"({"hard": {"vertices": [2]}, "soft": [{"vertices": [1]},
+              {"vertices": [2]}]})") ==
+              "recipe: soft[1].vertices[0]: vertex 2 is also in hard.vertices (hard and soft "
+              "vertex sets must be disjoint)");
+        CHECK(error_of(R"({"normal": [{"faces": [0, 4]}, {"faces": [4]}]})") ==
+              "recipe: normal[1].faces[0]: face 4 is already in normal[0]");
+        CHECK(error_of(R"({"centroid": [{"faces": [0]}, {"faces": [1, 0]}]})") ==
+              "recipe: centroid[1].faces[1]: face 0 is already in centroid[0]");
+        CHECK(error_of(R"({"soft": [{"vertices": "all"}, {"vertices": [1]}]})") ==
+              "'r.json': soft[0].vertices: \"all\" is allowed only when soft holds one set (this "
+              "list holds 2)");
+        CHECK(error_of(R"({"soft": [{"vertices": [1], "targets": [[0, 0, 0]]},
+              {"vertices": [2]}]})") ==
+              "'r.json': soft[1].targets: is missing, but soft[0] gives targets: in a list, "
+              "every set gives them or none does");
+        CHECK(
+            error_of(R"({"centroid": [{"faces": [1]}, {"faces": [2], "targets": [[0, 0, 0]]}]})") ==
+            "'r.json': centroid[1].targets: is given, but centroid[0] gives no targets: in a "
+            "list, every set gives them or none does");
+        CHECK(error_of(R"({"soft": [{"vertices": [1], "targets": [[0, 0, 0]]},
+              {"vertices": [2, 3], "targets": [[0, 0, 0]]}]})") ==
+              "'r.json': soft[1].targets: has 1 entries but soft[1].vertices has 2");
+        CHECK(error_of(R"({"soft": [{"vertices": [1]}, {"vertices": [2, 3], "weights": [1]}]})") ==
+              "'r.json': soft[1].weights: 1 weights for 2 vertices");
+        CHECK(error_of(R"({"soft": [{"vertices": [1]}, {"vertices": [2], "mu": 1e300,
+              "weights": [1e300]}]})") ==
+              "'r.json': soft[1].weights[0]: times soft[1].mu is not finite");
+        CHECK(
+            error_of(R"({"centroid": [{"faces": [0]}, {"faces": [1], "denominator": "exact"}]})") ==
+            "'r.json': centroid[1].denominator: \"exact\" differs from centroid[0]'s "
+            "\"paper\" (the sets of a list share one denominator)");
+        CHECK(error_of(R"({"normal": [{"faces": [0], "normals": "initial"},
+              {"faces": [1], "normals": [[0, 0, 1]]}]})") ==
+              "'r.json': normal[1].normals: given normals differs from normal[0]'s "
+              "\"initial\" (the sets of a list take their normals from one source)");
+        CHECK(error_of(R"({"normal": [{"faces": [0]}, {"faces": [1], "normals": "smoothed"}]})") ==
+              "'r.json': normal[1].normals: \"smoothed\" differs from normal[0]'s \"initial\" "
+              "(the sets of a list take their normals from one source)");
+        CHECK(error_of(R"({"normal": [{"faces": [0], "normals": [[0, 0, 1]]},
+              {"faces": [1, 2], "normals": [[0, 0, 1]]}]})") ==
+              "'r.json': normal[1].normals: has 1 entries but normal[1].faces has 2");
+        CHECK(error_of(R"({"normal": [{"faces": [0], "normals": [[0, 0, 1]]},
+              {"faces": [1], "normals": [[0, 0, 0]]}]})") ==
+              "recipe: normal[1].normals[0]: a normal must not be the zero vector");
+        CHECK(error_of(R"({"soft": [{"vertices": [1], "targets": [[0, 0, 0]]},
+              {"vertices": [2], "targets": [[0, 0, 1e300]]}]})") ==
+              "recipe: soft[1].targets[0]: must be finite and within +-1e100");
+    }
+
+    TEST_CASE("renumbering moves weights with their elements")
+    {
+        Recipe r;
+        r.soft = SoftVertices{{true, {}}, 1.0, {}, {0, 1, 2, 3}};
+        r.centroid =
+            CentroidConstraints{{false, {1, 0}}, 1.0, {}, CentroidDenominator::Paper, {5, 6}};
+        r.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}, {7, 8}};
+        r.normal_smoothing = NormalSmoothing{};
+        r.normal_smoothing->soft = SoftNormals{{0}, 1.0, {}, {9}};
+        const std::vector<Index> new_vertex{2, 0, 3, 1}, new_face{1, 0};
+        const Recipe s = renumber_recipe(r, new_vertex, new_face);
+        CHECK(s.soft->weights == std::vector<Scalar>{1, 3, 0, 2}); // "all": permuted
+        CHECK(s.centroid->faces.indices == std::vector<Index>{0, 1});
+        CHECK(s.centroid->weights == std::vector<Scalar>{5, 6}); // a list: kept in its order
+        CHECK(s.normal->weights == std::vector<Scalar>{8, 7});
+        CHECK(s.normal_smoothing->soft.faces == std::vector<Index>{1});
+        CHECK(s.normal_smoothing->soft.weights == std::vector<Scalar>{9});
     }
 }

@@ -136,6 +136,54 @@ TEST_SUITE("Session")
         }
     }
 
+    TEST_CASE("with a weight per element a step and an energy evaluation allocate nothing")
+    {
+        Mesh m = test::icosphere(2);
+        test::perturb(m, 0.03, 8);
+        const Topology t = build_topology(m);
+        const Index nv = m.vertex_count(), nf = m.face_count();
+        Recipe all;
+        all.region = Region{{}, test::all_indices(nf - 3)};
+        all.hard = HardVertices{{0}, {{0.0, 0.0, 1.5}}};
+        all.soft = SoftVertices{{false, {1, 2, nv - 1}}, 0.5, {}, {0.5, 2.0, 0.0}};
+        all.centroid = CentroidConstraints{{true, {}},
+                                           1.0,
+                                           {},
+                                           CentroidDenominator::Paper,
+                                           std::vector<Scalar>(static_cast<size_t>(nf), 1.5)};
+        all.normal = NormalConstraints{{true, {}},
+                                       1.0,
+                                       NormalSource::Smoothed,
+                                       {},
+                                       std::vector<Scalar>(static_cast<size_t>(nf), 0.75)};
+        all.normal->weights[3] = 3.0;
+        all.normal_smoothing = NormalSmoothing{3, 0.5, {{4}, {}}, {{5}, 0.5, {}, {2.0}}};
+        for (const int variant : {0, 1, 2, 3}) // the fused step, optimal, joint, both
+        {
+            CAPTURE(variant);
+            Recipe r = all;
+            r.optimal_step = (variant & 1) != 0;
+            if (variant & 2)
+                r.joint = Joint{1.0};
+            Mesh x = m;
+            Session session(x, t, r);
+            session.apply_hard_targets(x.positions);
+            session.set_positions(x.positions);
+            session.step(); // warm-up outside the measured region
+            session.step(x.positions);
+            const long before = g_allocations.load();
+            Scalar total = 0;
+            for (int k = 0; k < 5; ++k)
+            {
+                session.step();
+                session.step(x.positions);
+                total += session.energy(x.positions).total() + session.energy().total();
+            }
+            CHECK(g_allocations.load() == before);
+            CHECK(total > 0);
+        }
+    }
+
     TEST_CASE("a multi-threaded step and energy evaluation allocate nothing")
     {
         // Large enough for every loop to run on several threads (kParallelThreshold).
@@ -147,13 +195,19 @@ TEST_SUITE("Session")
         r.soft = SoftVertices{{true, {}}, 0.1, {}};
         r.centroid = CentroidConstraints{{true, {}}, 1.0, {}, CentroidDenominator::Paper};
         r.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}};
-        Recipe plain; // the fused step
-        for (const int variant : {0, 1, 2})
+        Recipe plain;        // the fused step
+        Recipe weighted = r; // the fused step with a weight per element
+        weighted.soft->weights.assign(static_cast<size_t>(m.vertex_count()), 0.5);
+        weighted.centroid->weights.assign(static_cast<size_t>(m.face_count()), 2.0);
+        weighted.normal->weights.assign(static_cast<size_t>(m.face_count()), 0.25);
+        for (const int variant : {0, 1, 2, 3})
         {
             CAPTURE(variant);
             r.optimal_step = variant == 1;
             if (variant == 2)
                 r = plain;
+            if (variant == 3)
+                r = weighted;
             set_thread_count(2);
             Mesh x = m;
             Session session(x, t, r);

@@ -4,7 +4,6 @@
 
 #include <doctest/doctest.h>
 
-#include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -13,6 +12,7 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
+#include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;
@@ -107,107 +107,6 @@ Mesh noisy(Mesh m, double sigma = 0.05, unsigned seed = 17)
 bool same_bits(const Mesh& a, const Mesh& b, Index v)
 {
     return std::memcmp(&a.positions[3 * v], &b.positions[3 * v], 3 * sizeof(Scalar)) == 0;
-}
-
-// E(x) = x^T A x - 2 b^T x + c of a recipe with fixed normals, assembled independently
-// of the energy terms, then minimized over the free vertices by sparse Cholesky.
-std::vector<Scalar> direct_minimizer(const Mesh& m, const Topology& t, const Recipe& r,
-                                     std::span<const Scalar> x_start,
-                                     std::span<const Index> free_vertices)
-{
-    const Index n = 3 * m.vertex_count();
-    std::vector<Eigen::Triplet<double>> entries;
-    Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
-    auto add = [&](Index p, Index q, double v) { entries.emplace_back(p, q, v); };
-    for (Index e = 0; e < t.edge_count(); ++e)
-    {
-        const Index i = t.edge_vertices[2 * e], j = t.edge_vertices[2 * e + 1];
-        for (int a = 0; a < 3; ++a)
-        {
-            add(3 * i + a, 3 * i + a, 1);
-            add(3 * j + a, 3 * j + a, 1);
-            add(3 * i + a, 3 * j + a, -1);
-            add(3 * j + a, 3 * i + a, -1);
-        }
-    }
-    const std::span<const Scalar> x0 = m.positions;
-    if (r.soft)
-        for (const Index i : r.soft->vertices.indices)
-            for (int a = 0; a < 3; ++a)
-            {
-                add(3 * i + a, 3 * i + a, r.soft->mu);
-                b[3 * i + a] += r.soft->mu * x0[3 * i + a];
-            }
-    if (r.centroid)
-        for (const Index f : r.centroid->faces.indices)
-        {
-            const auto face = m.face(f);
-            const double nf = static_cast<double>(face.size());
-            const Vec3 c = face_centroid(m, x0, f);
-            for (const Index p : face)
-                for (int a = 0; a < 3; ++a)
-                {
-                    for (const Index q : face)
-                        add(3 * p + a, 3 * q + a, r.centroid->mu / (nf * nf));
-                    b[3 * p + a] += r.centroid->mu / nf * c[a];
-                }
-        }
-    if (r.normal)
-    {
-        const std::vector<Scalar> u = face_normals(m, x0);
-        for (const Index f : r.normal->faces.indices)
-        {
-            const auto face = m.face(f);
-            for (size_t k = 0; k < face.size(); ++k)
-            {
-                const Index i = face[k], j = face[(k + 1) % face.size()];
-                for (int a = 0; a < 3; ++a)
-                    for (int c = 0; c < 3; ++c)
-                    {
-                        const double w = r.normal->mu * u[3 * f + a] * u[3 * f + c];
-                        add(3 * i + a, 3 * i + c, w);
-                        add(3 * j + a, 3 * j + c, w);
-                        add(3 * i + a, 3 * j + c, -w);
-                        add(3 * j + a, 3 * i + c, -w);
-                    }
-            }
-        }
-    }
-    Eigen::SparseMatrix<double> A(n, n);
-    A.setFromTriplets(entries.begin(), entries.end());
-    // Restrict to free coordinates: A_FF x_F = b_F - A_FC x_C.
-    std::vector<Index> slot(n, -1);
-    Index nfree = 0;
-    for (const Index v : free_vertices)
-        for (int a = 0; a < 3; ++a)
-            slot[3 * v + a] = nfree++;
-    Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(x_start.data(), n);
-    std::vector<Eigen::Triplet<double>> ff;
-    Eigen::VectorXd rhs(nfree);
-    for (Index p = 0; p < n; ++p)
-        if (slot[p] >= 0)
-            rhs[slot[p]] = b[p];
-    for (int k = 0; k < A.outerSize(); ++k)
-        for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it)
-        {
-            const Index p = static_cast<Index>(it.row()), q = static_cast<Index>(it.col());
-            if (slot[p] < 0)
-                continue;
-            if (slot[q] >= 0)
-                ff.emplace_back(slot[p], slot[q], it.value());
-            else
-                rhs[slot[p]] -= it.value() * x[q];
-        }
-    Eigen::SparseMatrix<double> Aff(nfree, nfree);
-    Aff.setFromTriplets(ff.begin(), ff.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(Aff);
-    REQUIRE(solver.info() == Eigen::Success);
-    const Eigen::VectorXd xf = solver.solve(rhs);
-    std::vector<Scalar> out(x_start.begin(), x_start.end());
-    for (Index p = 0; p < n; ++p)
-        if (slot[p] >= 0)
-            out[p] = xf[slot[p]];
-    return out;
 }
 
 } // namespace
@@ -434,9 +333,9 @@ TEST_SUITE("Session")
                 Mesh x = m;
                 const Session session(x, t, c.recipe);
                 const std::vector<Scalar> expected =
-                    direct_minimizer(m, t, c.recipe, m.positions,
-                                     std::vector<Index>(session.free_vertices().begin(),
-                                                        session.free_vertices().end()));
+                    test::direct_minimizer(m, t, c.recipe, m.positions,
+                                           std::vector<Index>(session.free_vertices().begin(),
+                                                              session.free_vertices().end()));
                 smooth(x, t, c.recipe);
                 for (Index k = 0; k < 3 * nv; ++k)
                     CHECK(x.positions[k] == doctest::Approx(expected[k]).scale(1).epsilon(1e-9));

@@ -131,9 +131,27 @@ TEST_SUITE("Parallel")
         Recipe descent = plain;
         descent.method = Method::GradientDescent;
         descent.lambda = 0.05;
+        // A weight per element in every weighted term (soft normals of the smoothing too).
+        Recipe weighted = combined;
+        const auto ramp = [](Index n) {
+            std::vector<Scalar> w(static_cast<size_t>(n));
+            for (size_t k = 0; k < w.size(); ++k)
+                w[k] = static_cast<Scalar>(k % 7) * 0.5;
+            return w;
+        };
+        weighted.soft->weights = ramp(nv);
+        weighted.centroid->weights = ramp(nf);
+        weighted.normal->weights = ramp(nf);
+        weighted.normal_smoothing->soft =
+            SoftNormals{test::all_indices(nf / 2), 0.5, {}, ramp(nf / 2)};
+        Recipe weighted_joint = weighted;
+        weighted_joint.optimal_step = true;
+        weighted_joint.joint = Joint{1.0};
         const std::pair<const char*, const Recipe*> recipes[] = {
-            {"plain", &plain}, {"combined", &combined}, {"optimal", &optimal},
-            {"joint", &joint}, {"region", &region},     {"gradient descent", &descent}};
+            {"plain", &plain},       {"combined", &combined},
+            {"optimal", &optimal},   {"joint", &joint},
+            {"region", &region},     {"gradient descent", &descent},
+            {"weighted", &weighted}, {"weighted, joint and optimal", &weighted_joint}};
         REQUIRE(nf > kParallelThreshold);
         for (const auto& entry : recipes)
         {
@@ -164,9 +182,9 @@ TEST_SUITE("Solver")
         const Topology t = build_topology(m);
         // step() runs one fused sweep per combination of terms (bit 0 soft, 1 centroid,
         // 2 normal); step(x) the general path. Every combination, with a region and hard
-        // targets in some.
+        // targets in some, and with or without a weight per element.
         std::vector<Recipe> recipes;
-        for (int terms = 0; terms < 8; ++terms)
+        for (int terms = 0; terms < 16; ++terms) // bit 3: a weight per element
             for (const bool region : {false, true})
             {
                 Recipe r;
@@ -182,6 +200,25 @@ TEST_SUITE("Solver")
                                   {false, {0, 5, 9}}, 1.0, {}, CentroidDenominator::Paper};
                 if (terms & 4)
                     r.normal = NormalConstraints{{true, {}}, 0.7, NormalSource::Initial, {}};
+                if (terms & 8)
+                {
+                    if (!(terms & 7))
+                        continue; // nothing to weigh
+                    const auto weights = [](size_t n) {
+                        std::vector<Scalar> w(n);
+                        for (size_t k = 0; k < n; ++k)
+                            w[k] = static_cast<Scalar>(k % 5) * 0.75;
+                        return w;
+                    };
+                    if (r.soft)
+                        r.soft->weights = weights(r.soft->vertices.indices.size());
+                    if (r.centroid)
+                        r.centroid->weights =
+                            weights(r.centroid->faces.all ? m.face_count()
+                                                          : r.centroid->faces.indices.size());
+                    if (r.normal)
+                        r.normal->weights = weights(m.face_count());
+                }
                 if (region)
                 {
                     r.region = Region{test::all_indices(m.vertex_count() / 2), {}};
@@ -195,6 +232,9 @@ TEST_SUITE("Solver")
             CAPTURE(recipe.centroid.has_value());
             CAPTURE(recipe.normal.has_value());
             CAPTURE(recipe.region.has_value());
+            CAPTURE((recipe.soft && !recipe.soft->weights.empty()) ||
+                    (recipe.centroid && !recipe.centroid->weights.empty()) ||
+                    (recipe.normal && !recipe.normal->weights.empty()));
             Session a(m, t, recipe), b(m, t, recipe);
             std::vector<Scalar> x = m.positions;
             a.apply_hard_targets(x);
