@@ -25,6 +25,14 @@ CommandSpec spec_of(const Command& command)
             }
             else if constexpr (std::is_same_v<T, cmd::SelectSet>)
                 return {"select set", kSelection, kSelection};
+            else if constexpr (std::is_same_v<T, cmd::AddToSet>)
+                return {"add to set", kSets, kSets};
+            else if constexpr (std::is_same_v<T, cmd::RemoveFromSet>)
+                return {"remove from set", kSets, kSets};
+            else if constexpr (std::is_same_v<T, cmd::EnableSet>)
+                return {c.enabled ? "enable set" : "disable set", kSets, kSets};
+            else if constexpr (std::is_same_v<T, cmd::SetSetWeight>)
+                return {"set weight", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::CreateSet>)
                 return {"new set", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::DeleteSet>)
@@ -102,6 +110,10 @@ std::string_view command_name(const Command& command)
                                             "show set",
                                             "set colour",
                                             "select set",
+                                            "add to set",
+                                            "remove from set",
+                                            "enable set",
+                                            "set weight",
                                             "normal direction",
                                             "move pins",
                                             "solver settings",

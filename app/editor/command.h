@@ -158,6 +158,28 @@ struct SetNormalDirection
     std::string set;
     Vec3 direction{0, 0, 1};
 };
+//! Adds the selection to a set (as CreateSet takes it: vertex kinds take vertices).
+struct AddToSet
+{
+    std::string set;
+};
+//! Takes the selection out of a set.
+struct RemoveFromSet
+{
+    std::string set;
+};
+//! Takes a set into the solve or out of it (its glyphs stay as shown).
+struct EnableSet
+{
+    std::string set;
+    bool enabled = true;
+};
+//! A set's own weight mu (anchor, centroid, normal and soft normal sets).
+struct SetSetWeight
+{
+    std::string set;
+    Scalar mu = 1;
+};
 //! Moves a pin set's targets by `offset`.
 struct MovePins
 {
@@ -270,9 +292,10 @@ using Command = std::variant<
     cmd::ScaleBrushRadius, cmd::RunSelection, cmd::ApplySelection, cmd::Undo, cmd::Redo,
     cmd::FrameAll, cmd::FrameSelection, cmd::SetView, cmd::SetProjection, cmd::ToggleProjection,
     cmd::SetOrbit, cmd::ToggleOrbit, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet, cmd::DeleteSet,
-    cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::SetNormalDirection,
-    cmd::MovePins, cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step,
-    cmd::ResetShape, cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
+    cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet, cmd::RemoveFromSet,
+    cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection, cmd::MovePins,
+    cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::ResetShape,
+    cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
     cmd::ExportRecipe, cmd::ImportRecipe, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,
     cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
 

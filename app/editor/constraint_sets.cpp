@@ -23,17 +23,33 @@ std::string quoted(const ConstraintSet& s)
     return "'" + s.name + "'";
 }
 
-// The elements of every set of `kind`, in set order, each once (the first set keeps it);
-// `from` says which set each came from.
+// The kind whose sets win over `kind`'s for an element in both (pins over anchors, hard
+// normals over soft ones), if any.
+std::optional<ConstraintKind> winner_over(ConstraintKind kind)
+{
+    if (kind == ConstraintKind::Anchor)
+        return ConstraintKind::Pin;
+    if (kind == ConstraintKind::SoftNormal)
+        return ConstraintKind::HardNormal;
+    return std::nullopt;
+}
+
+// The elements of every enabled set of `kind`, in set order, each once (the first set keeps
+// it), without those a winning kind's sets hold; `from` says which set each came from.
 std::vector<Index> merged(const std::vector<ConstraintSet>& sets, ConstraintKind kind,
                           bool vertices, std::vector<const ConstraintSet*>* from = nullptr,
                           std::vector<size_t>* position = nullptr)
 {
     std::vector<Index> out;
     std::unordered_map<Index, bool> seen;
+    if (const std::optional<ConstraintKind> winner = winner_over(kind))
+        for (const ConstraintSet& s : sets)
+            if (s.kind == *winner && s.enabled)
+                for (const Index e : vertices ? s.vertices : s.faces)
+                    seen.emplace(e, true);
     for (const ConstraintSet& s : sets)
     {
-        if (s.kind != kind)
+        if (s.kind != kind || !s.enabled)
             continue;
         const std::vector<Index>& list = vertices ? s.vertices : s.faces;
         for (size_t k = 0; k < list.size(); ++k)
@@ -51,8 +67,29 @@ std::vector<Index> merged(const std::vector<ConstraintSet>& sets, ConstraintKind
 
 bool any_of_kind(const std::vector<ConstraintSet>& sets, ConstraintKind kind)
 {
-    return std::any_of(sets.begin(), sets.end(),
-                       [&](const ConstraintSet& s) { return s.kind == kind; });
+    return std::any_of(sets.begin(), sets.end(), [&](const ConstraintSet& s) {
+        return s.kind == kind && s.enabled && !(s.vertices.empty() && s.faces.empty());
+    });
+}
+
+// The merged elements' weights: one mu when every set gives the same (as one weight, bit
+// for bit), else mu = 1 and one weight per element.
+void weigh(const std::vector<const ConstraintSet*>& from, const SolverSettings& settings,
+           Scalar& mu, std::vector<Scalar>& weights)
+{
+    if (from.empty())
+        return;
+    const Scalar first = weight_of(*from.front(), settings);
+    if (std::all_of(from.begin(), from.end(),
+                    [&](const ConstraintSet* s) { return weight_of(*s, settings) == first; }))
+    {
+        mu = first;
+        return;
+    }
+    mu = 1;
+    weights.clear();
+    for (const ConstraintSet* s : from)
+        weights.push_back(weight_of(*s, settings));
 }
 
 std::vector<Index> sorted(std::vector<Index> v)
@@ -60,19 +97,6 @@ std::vector<Index> sorted(std::vector<Index> v)
     std::sort(v.begin(), v.end());
     v.erase(std::unique(v.begin(), v.end()), v.end());
     return v;
-}
-
-// The first element two sets share, if any (both lists increasing).
-std::optional<Index> shared(const std::vector<Index>& a, const std::vector<Index>& b)
-{
-    size_t i = 0, j = 0;
-    while (i < a.size() && j < b.size())
-    {
-        if (a[i] == b[j])
-            return a[i];
-        a[i] < b[j] ? ++i : ++j;
-    }
-    return std::nullopt;
 }
 
 Vec3 position(std::span<const Scalar> positions, Index v)
@@ -145,30 +169,82 @@ std::array<float, 3> default_color(ConstraintKind kind)
     return {1, 1, 1};
 }
 
-std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& sets,
+bool takes_weight(ConstraintKind kind)
+{
+    return kind == ConstraintKind::Anchor || kind == ConstraintKind::Centroid ||
+           kind == ConstraintKind::Normal || kind == ConstraintKind::SoftNormal;
+}
+
+Scalar weight_of(const ConstraintSet& set, const SolverSettings& settings)
+{
+    if (set.mu)
+        return *set.mu;
+    switch (set.kind)
+    {
+        case ConstraintKind::Anchor:
+            return settings.anchor_mu;
+        case ConstraintKind::Centroid:
+            return settings.centroid_mu;
+        case ConstraintKind::Normal:
+            return settings.normal_mu;
+        case ConstraintKind::SoftNormal:
+            return settings.soft_normal_mu;
+        default:
+            return 1;
+    }
+}
+
+std::vector<std::string> constraint_notes(const std::vector<ConstraintSet>& sets)
+{
+    std::vector<std::string> notes;
+    const auto count_shared = [](const ConstraintSet& a, const ConstraintSet& b) {
+        const std::vector<Index> x = sorted(a.vertices.empty() ? a.faces : a.vertices);
+        const std::vector<Index> y = sorted(b.vertices.empty() ? b.faces : b.vertices);
+        std::vector<Index> both;
+        std::set_intersection(x.begin(), x.end(), y.begin(), y.end(), std::back_inserter(both));
+        return both.size();
+    };
+    for (size_t i = 0; i < sets.size(); ++i)
+    {
+        const ConstraintSet& s = sets[i];
+        if (!s.enabled)
+            continue;
+        if (s.vertices.empty() && s.faces.empty())
+        {
+            notes.push_back("set " + quoted(s) + " is empty: left out");
+            continue;
+        }
+        const char* what = s.vertices.empty() ? " faces" : " vertices";
+        const std::optional<ConstraintKind> winner = winner_over(s.kind);
+        for (size_t j = 0; j < sets.size(); ++j)
+        {
+            const ConstraintSet& t = sets[j];
+            if (j == i || !t.enabled)
+                continue;
+            const bool wins = winner && t.kind == *winner;
+            const bool earlier = t.kind == s.kind && j < i && s.kind != ConstraintKind::Region;
+            if (!wins && !earlier)
+                continue;
+            if (const size_t n = count_shared(s, t); n > 0)
+                notes.push_back(
+                    std::to_string(n) + what + " of " + quoted(s) + " are also in " + quoted(t) +
+                    (wins ? std::string(": ") +
+                                (t.kind == ConstraintKind::Pin ? "pinned" : "fixed") + ", not " +
+                                std::string(kind_name(s.kind)) + "ed"
+                          : std::string(": ") + quoted(t) + ", earlier in the list, holds them"));
+        }
+    }
+    return notes;
+}
+
+std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& all_sets,
                                              const SolverSettings& settings)
 {
     std::vector<std::string> problems;
-    for (const ConstraintSet& s : sets)
-        if (s.vertices.empty() && s.faces.empty())
-            problems.push_back("set " + quoted(s) + " is empty");
-    // Disjoint pairs: a vertex is either hard or soft, a normal either fixed or soft.
-    const auto disjoint = [&](ConstraintKind a, ConstraintKind b, bool vertices, const char* what,
-                              const char* why) {
-        for (const ConstraintSet& s : sets)
-            for (const ConstraintSet& t : sets)
-                if (s.kind == a && t.kind == b)
-                    if (const auto e = shared(sorted(vertices ? s.vertices : s.faces),
-                                              sorted(vertices ? t.vertices : t.faces)))
-                        problems.push_back(std::string(kind_name(a)) + " set " + quoted(s) +
-                                           " and " + std::string(kind_name(b)) + " set " +
-                                           quoted(t) + " share " + what + " " + std::to_string(*e) +
-                                           " (" + why + ")");
-    };
-    disjoint(ConstraintKind::Pin, ConstraintKind::Anchor, true, "vertex",
-             "a vertex is pinned or anchored, not both");
-    disjoint(ConstraintKind::HardNormal, ConstraintKind::SoftNormal, false, "face",
-             "a normal is fixed or soft, not both");
+    std::vector<ConstraintSet> sets; // the enabled ones, empty sets left out
+    for (const ConstraintSet& s : all_sets)
+        if (s.enabled && !(s.vertices.empty() && s.faces.empty()))
+            sets.push_back(s);
     const bool normal = any_of_kind(sets, ConstraintKind::Normal);
     const bool hard_soft = any_of_kind(sets, ConstraintKind::HardNormal) ||
                            any_of_kind(sets, ConstraintKind::SoftNormal);
@@ -218,19 +294,30 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         r.hard = std::move(hard);
     }
     if (any_of_kind(sets, ConstraintKind::Anchor))
-        r.soft = SoftVertices{
-            {false, merged(sets, ConstraintKind::Anchor, true)}, settings.anchor_mu, {}};
+    {
+        std::vector<const ConstraintSet*> from;
+        SoftVertices soft{{false, merged(sets, ConstraintKind::Anchor, true, &from)}, 1, {}};
+        weigh(from, settings, soft.mu, soft.weights);
+        if (!soft.vertices.indices.empty()) // every anchor may be pinned
+            r.soft = std::move(soft);
+    }
     if (any_of_kind(sets, ConstraintKind::Centroid))
-        r.centroid = CentroidConstraints{{false, merged(sets, ConstraintKind::Centroid, false)},
-                                         settings.centroid_mu,
-                                         {},
-                                         settings.denominator};
+    {
+        std::vector<const ConstraintSet*> from;
+        CentroidConstraints c{{false, merged(sets, ConstraintKind::Centroid, false, &from)},
+                              1,
+                              {},
+                              settings.denominator};
+        weigh(from, settings, c.mu, c.weights);
+        r.centroid = std::move(c);
+    }
     const auto input_normal = [&](Index f) { return face_normal(mesh, positions, f); };
     if (any_of_kind(sets, ConstraintKind::Normal))
     {
         NormalConstraints n;
-        n.faces.indices = merged(sets, ConstraintKind::Normal, false);
-        n.mu = settings.normal_mu;
+        std::vector<const ConstraintSet*> from;
+        n.faces.indices = merged(sets, ConstraintKind::Normal, false, &from);
+        weigh(from, settings, n.mu, n.weights);
         n.source = settings.normal_source;
         n.normals = merged_normals(sets, ConstraintKind::Normal, input_normal);
         if (!n.normals.empty())
@@ -243,8 +330,10 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
             ns.lambda = settings.normal_smoothing_lambda;
             ns.hard.faces = merged(sets, ConstraintKind::HardNormal, false);
             ns.hard.normals = merged_normals(sets, ConstraintKind::HardNormal, input_normal);
-            ns.soft.faces = merged(sets, ConstraintKind::SoftNormal, false);
+            std::vector<const ConstraintSet*> soft_from;
+            ns.soft.faces = merged(sets, ConstraintKind::SoftNormal, false, &soft_from);
             ns.soft.mu = settings.soft_normal_mu;
+            weigh(soft_from, settings, ns.soft.mu, ns.soft.weights);
             ns.soft.normals = merged_normals(sets, ConstraintKind::SoftNormal, input_normal);
             r.normal_smoothing = std::move(ns);
         }
@@ -266,7 +355,9 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
         return false;
     for (size_t k = 0; k < a.size(); ++k)
         if (a[k].kind != b[k].kind || a[k].vertices != b[k].vertices || a[k].faces != b[k].faces ||
-            a[k].normals != b[k].normals || (!ignoring_pin_targets && a[k].targets != b[k].targets))
+            a[k].normals != b[k].normals || a[k].enabled != b[k].enabled ||
+            weight_of(a[k], a_settings) != weight_of(b[k], b_settings) ||
+            (!ignoring_pin_targets && a[k].targets != b[k].targets))
             return false;
     return true;
 }
@@ -298,6 +389,36 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
         out.sets.push_back(std::move(set));
         return out.sets.back();
     };
+    // A section with per-element weights: one set per run of equal weights, each with its
+    // own mu (the sets of a recipe exported with several weights come back as they were);
+    // without weights, one set with the kind's mu.
+    const auto add_weighted = [&](ConstraintKind kind, const std::vector<Index>& elements,
+                                  Scalar mu, const std::vector<Scalar>& weights, Scalar& kind_mu,
+                                  std::vector<Vec3> normals = {}) {
+        const bool vertices = takes_vertices(kind);
+        if (weights.empty())
+        {
+            kind_mu = mu;
+            ConstraintSet& set = vertices ? add(kind, elements, {}) : add(kind, {}, elements);
+            set.normals = std::move(normals);
+            return;
+        }
+        for (size_t begin = 0, end; begin < elements.size(); begin = end)
+        {
+            end = begin + 1;
+            while (end < elements.size() && weights[end] == weights[begin])
+                ++end;
+            const std::vector<Index> part(elements.begin() + static_cast<std::ptrdiff_t>(begin),
+                                          elements.begin() + static_cast<std::ptrdiff_t>(end));
+            ConstraintSet& set = vertices ? add(kind, part, {}) : add(kind, {}, part);
+            set.mu = mu * weights[begin];
+            if (!normals.empty())
+                set.normals.assign(normals.begin() + static_cast<std::ptrdiff_t>(begin),
+                                   normals.begin() + static_cast<std::ptrdiff_t>(end));
+            if (begin > 0)
+                set.name += " " + std::to_string(out.sets.size());
+        }
+    };
     if (r.region)
         add(ConstraintKind::Region, sorted(r.region->vertices), sorted(r.region->faces));
     if (r.hard)
@@ -311,22 +432,29 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
             std::erase_if(v,
                           [&](Index i) { return std::binary_search(hard.begin(), hard.end(), i); });
         }
-        add(ConstraintKind::Anchor, std::move(v), {});
-        s.anchor_mu = r.soft->mu;
+        std::vector<Scalar> w = r.soft->weights;
+        if (!w.empty() && r.soft->vertices.all) // per mesh vertex: those kept
+        {
+            std::vector<Scalar> kept;
+            for (const Index i : v)
+                kept.push_back(w[static_cast<size_t>(i)]);
+            w = std::move(kept);
+        }
+        add_weighted(ConstraintKind::Anchor, v, r.soft->mu, w, s.anchor_mu);
     }
     if (r.centroid)
     {
-        add(ConstraintKind::Centroid, {}, all(r.centroid->faces, mesh.face_count()));
-        s.centroid_mu = r.centroid->mu;
+        add_weighted(ConstraintKind::Centroid, all(r.centroid->faces, mesh.face_count()),
+                     r.centroid->mu, r.centroid->weights, s.centroid_mu);
         s.denominator = r.centroid->denominator;
     }
     if (r.normal)
     {
-        ConstraintSet& n = add(ConstraintKind::Normal, {}, all(r.normal->faces, mesh.face_count()));
-        s.normal_mu = r.normal->mu;
-        if (r.normal->source == NormalSource::Custom)
-            n.normals = r.normal->normals;
-        else
+        add_weighted(
+            ConstraintKind::Normal, all(r.normal->faces, mesh.face_count()), r.normal->mu,
+            r.normal->weights, s.normal_mu,
+            r.normal->source == NormalSource::Custom ? r.normal->normals : std::vector<Vec3>{});
+        if (r.normal->source != NormalSource::Custom)
             s.normal_source = r.normal->source;
     }
     if (r.normal_smoothing)
@@ -338,9 +466,9 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
                 r.normal_smoothing->hard.normals;
         if (!r.normal_smoothing->soft.faces.empty())
         {
-            add(ConstraintKind::SoftNormal, {}, r.normal_smoothing->soft.faces).normals =
-                r.normal_smoothing->soft.normals;
-            s.soft_normal_mu = r.normal_smoothing->soft.mu;
+            add_weighted(ConstraintKind::SoftNormal, r.normal_smoothing->soft.faces,
+                         r.normal_smoothing->soft.mu, r.normal_smoothing->soft.weights,
+                         s.soft_normal_mu, r.normal_smoothing->soft.normals);
         }
     }
     if (r.joint)

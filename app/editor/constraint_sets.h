@@ -35,7 +35,8 @@ bool takes_vertices(ConstraintKind kind);
 
 //! \brief A named set of the editor's recipe: its kind, its elements and what it carries.
 //! Several sets of one kind are merged into the recipe's one section of that kind (their
-//! union, the first set's target winning for an element in two), with the kind's weight.
+//! union; for an element in two sets, the first set's target, normal and weight), each
+//! element with its set's weight (the core's per-element weights).
 struct ConstraintSet
 {
     std::string name;
@@ -50,7 +51,11 @@ struct ConstraintSet
     //! one direction); empty: the source's normals (Normal) or the input's (the others).
     std::vector<Vec3> normals;
     std::array<float, 3> color{1, 1, 1};
-    bool visible = true;
+    bool visible = true; //!< its glyphs are drawn (display only)
+    bool enabled = true; //!< it takes part in the solve
+    //! Anchor, centroid, normal and soft normal sets: the set's own weight mu; nullopt: the
+    //! kind's weight of the solver settings.
+    std::optional<Scalar> mu;
     bool operator==(const ConstraintSet&) const = default;
 };
 
@@ -79,12 +84,21 @@ struct SolverSettings
     bool operator==(const SolverSettings&) const = default;
 };
 
-//! \brief What is wrong with a list of sets, one sentence per problem naming the sets
-//! (empty: nothing). Pins and anchors must be disjoint, as must hard and soft normals;
-//! hard and soft normals and joint mode need a normal set; custom normals need the
-//! "initial" source for the other normal sets; no set may be empty.
+//! Whether a kind's sets carry a weight mu (anchor, centroid, normal, soft normal).
+bool takes_weight(ConstraintKind kind);
+//! The weight a set's elements get: its own, or its kind's in `settings`.
+Scalar weight_of(const ConstraintSet& set, const SolverSettings& settings);
+
+//! \brief Why the enabled sets cannot run, one sentence per problem naming the sets
+//! (empty: they can): hard and soft normals and joint mode need a normal set, hard and soft
+//! normals act only while normals are smoothed, custom normals need the "initial" source for
+//! the other normal sets. Overlaps are no problem (constraint_notes).
 std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& sets,
                                              const SolverSettings& settings);
+//! \brief How the enabled sets' overlaps are resolved, one sentence each: a pin wins over
+//! an anchor, a hard normal over a soft one, and of two sets of one kind the first in the
+//! list gives the element its target, normal and weight; an empty set is left out.
+std::vector<std::string> constraint_notes(const std::vector<ConstraintSet>& sets);
 
 //! \brief The core recipe of the sets and settings, running `iterations` steps, in the
 //! mesh's numbering; `positions` (3 #V, the base shape) place the pins without targets

@@ -247,6 +247,11 @@ void EditorSession::prepare_ui()
         synced_.energy = state_.solver.energy_version;
     }
     state_.problems = solver_.problems();
+    if (synced_.notes != document_.versions.sets)
+    {
+        state_.notes = constraint_notes(document_.sets);
+        synced_.notes = document_.versions.sets;
+    }
     state_.playing = solver_.playing();
     HistoryStatus& h = state_.history;
     h.undo_count = history_.undo_count();

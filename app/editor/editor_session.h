@@ -154,7 +154,8 @@ private:
     // What the renderer and the panels last got, by the document's versions.
     struct Synced
     {
-        std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, counts;
+        std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
+            counts;
         std::optional<std::uint64_t> energy;
     } synced_;
     RegionBorder border_; // of the current sets

@@ -34,6 +34,7 @@ struct EditorState
     SolverStatus solver;                                   //!< refreshed likewise
     std::vector<EnergySample> energies; //!< the current run's curve, refreshed likewise
     std::vector<std::string> problems;  //!< why the sets cannot run, refreshed likewise
+    std::vector<std::string> notes;     //!< how the sets' overlaps are resolved, likewise
     bool playing = false;               //!< refreshed likewise
     bool energy_log_scale = false;      //!< the energy plot's vertical axis
     bool show_energy = true;            //!< the energy plot window

@@ -82,7 +82,9 @@ Json set_json(const ConstraintSet& s)
             {"targets", vec3s(s.targets)},
             {"normals", vec3s(s.normals)},
             {"color", s.color},
-            {"visible", s.visible}};
+            {"visible", s.visible},
+            {"enabled", s.enabled},
+            {"mu", s.mu ? Json(*s.mu) : Json(nullptr)}};
 }
 
 ConstraintSet set_of(const Json& j, Index vertices, Index faces)
@@ -105,6 +107,13 @@ ConstraintSet set_of(const Json& j, Index vertices, Index faces)
     s.normals = vec3s_of(j.at("normals"));
     s.color = j.at("color").get<std::array<float, 3>>();
     s.visible = j.at("visible").get<bool>();
+    s.enabled = j.value("enabled", true); // files of earlier versions have neither
+    if (j.contains("mu") && !j.at("mu").is_null())
+    {
+        s.mu = j.at("mu").get<Scalar>();
+        if (!(*s.mu >= 0) || !std::isfinite(*s.mu))
+            throw std::invalid_argument("a set's mu must be a number >= 0");
+    }
     return s;
 }
 

@@ -40,10 +40,14 @@ Document edited(const fs::path& dir)
     d.base_positions[7] -= 0.5;
     d.selected_vertices[3] = 1;
     d.selected_faces[2] = 1;
-    ConstraintSet pins{"pins", ConstraintKind::Pin, {1, 5}, {}, {{0, 0, 1}, {1, 1, 1}},
-                       {},     {1, 0, 0},           true};
-    ConstraintSet normals{"up", ConstraintKind::Normal, {},        {0, 4},
-                          {},   {{0, 1, 0}, {0, 1, 0}}, {0, 0, 1}, false};
+    ConstraintSet pins{"pins", ConstraintKind::Pin, {1, 5}, {},   {{0, 0, 1}, {1, 1, 1}},
+                       {},     {1, 0, 0},           true,   true, std::nullopt};
+    // A set out of the solve with a weight of its own: both kept.
+    ConstraintSet normals{"up",      ConstraintKind::Normal,
+                          {},        {0, 4},
+                          {},        {{0, 1, 0}, {0, 1, 0}},
+                          {0, 0, 1}, false,
+                          false,     2.5};
     d.sets = {pins, normals};
     d.solver.lambda = 0.25;
     d.solver.joint = true;

@@ -309,7 +309,7 @@ TEST_SUITE("Live solving")
         CHECK(s.document().base_positions != s.document().mesh.positions);
     }
 
-    TEST_CASE("sets that cannot run are refused with the sets named, and nothing steps")
+    TEST_CASE("overlaps are resolved by precedence with a note; what cannot run is refused")
     {
         const fs::path dir = test::temp_dir();
         NoisyBunny b(dir);
@@ -318,21 +318,87 @@ TEST_SUITE("Live solving")
         REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "feet"}));
         b.rectangle(180, 120, 230, 170);
         REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "back"}));
-        REQUIRE(s.problems().size() == 1);
-        CHECK(s.problems()[0].find("pin set 'feet' and anchor set 'back' share vertex") == 0);
+        // A pin and an anchor sharing vertices: the pins win, said as a note, and it solves.
+        CHECK(s.problems().empty());
+        const std::vector<std::string> notes = constraint_notes(s.document().sets);
+        REQUIRE(notes.size() == 1);
+        CHECK(notes[0].find("of 'back' are also in 'feet': pinned, not anchored") !=
+              std::string::npos);
+        const Recipe r = current_recipe(s.document());
+        REQUIRE(r.hard.has_value());
+        REQUIRE(r.soft.has_value());
+        for (const Index v : r.soft->vertices.indices)
+            CHECK(std::find(r.hard->vertices.begin(), r.hard->vertices.end(), v) ==
+                  r.hard->vertices.end());
+        CHECK(r.soft->vertices.indices.size() < s.document().sets[1].vertices.size());
         const std::vector<Scalar> before = s.document().mesh.positions;
-        s.dispatch(cmd::Step{3});
-        CHECK(s.document().mesh.positions == before);
+        REQUIRE(s.dispatch(cmd::Step{3}));
+        CHECK(s.document().mesh.positions != before);
+        // Joint mode without a normal set cannot run: refused, nothing steps or is exported.
+        SolverSettings joint = s.document().solver;
+        joint.joint = true;
+        s.dispatch(cmd::SetSolverSettings{joint});
+        REQUIRE(s.problems().size() == 1);
+        CHECK(s.problems()[0] == "joint mode needs a normal set");
+        const std::vector<Scalar> stepped = s.document().mesh.positions;
+        CHECK_FALSE(s.dispatch(cmd::Step{3}));
+        CHECK(s.document().mesh.positions == stepped);
         CHECK(s.state().message.find("cannot solve") == 0);
         CHECK_FALSE(s.dispatch(cmd::ExportRecipe{(dir / "r.json").string()}));
         CHECK_FALSE(fs::exists(dir / "r.json"));
-        // Deleting one of them clears the problem.
-        s.dispatch(cmd::DeleteSet{"back"});
-        CHECK(s.problems().empty());
         // An empty selection makes no set.
         s.dispatch(cmd::RunSelection{SelectionCommand::Clear});
         CHECK_FALSE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, {}}));
-        CHECK(s.document().sets.size() == 1);
+        CHECK(s.document().sets.size() == 2);
+    }
+
+    TEST_CASE("sets you can edit: add and remove the selection, a weight each, out of the solve")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(150, 100, 200, 150);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "soft"}));
+        b.rectangle(220, 150, 260, 190);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "stiff"}));
+        const size_t stiff = s.document().sets[1].vertices.size();
+        // One weight per set: the recipe carries a weight per vertex.
+        REQUIRE(s.dispatch(cmd::SetSetWeight{"stiff", 50}));
+        Recipe r = current_recipe(s.document());
+        REQUIRE(r.soft.has_value());
+        REQUIRE(r.soft->weights.size() == r.soft->vertices.indices.size());
+        CHECK(std::count(r.soft->weights.begin(), r.soft->weights.end(), 50.0) ==
+              static_cast<std::ptrdiff_t>(stiff));
+        // Equal weights again: one mu, no weights (the recipe of a single weight, bit for bit).
+        REQUIRE(s.dispatch(cmd::SetSetWeight{"soft", 50}));
+        r = current_recipe(s.document());
+        CHECK(r.soft->weights.empty());
+        CHECK(r.soft->mu == 50);
+        // Add a selection to a set, then take part of it out again.
+        b.rectangle(262, 150, 280, 190);
+        REQUIRE(s.dispatch(cmd::AddToSet{"stiff"}));
+        const size_t grown = s.document().sets[1].vertices.size();
+        CHECK(grown > stiff);
+        CHECK_FALSE(s.dispatch(cmd::AddToSet{"stiff"})); // nothing new
+        REQUIRE(s.dispatch(cmd::RemoveFromSet{"stiff"}));
+        CHECK(s.document().sets[1].vertices.size() == stiff);
+        // Out of the solve: the recipe forgets it, the glyphs stay; undo brings it back.
+        REQUIRE(s.dispatch(cmd::EnableSet{"soft", false}));
+        r = current_recipe(s.document());
+        CHECK(r.soft->vertices.indices.size() == stiff);
+        CHECK(s.document().sets[0].visible);
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().sets[0].enabled);
+        // An exported recipe with two weights comes back as two sets with their weights.
+        REQUIRE(s.dispatch(cmd::SetSetWeight{"soft", 2}));
+        REQUIRE(s.dispatch(cmd::ExportRecipe{(dir / "two.json").string()}));
+        s.dispatch(cmd::DeleteSet{"soft"});
+        s.dispatch(cmd::DeleteSet{"stiff"});
+        REQUIRE(s.dispatch(cmd::ImportRecipe{(dir / "two.json").string()}));
+        REQUIRE(s.document().sets.size() == 2);
+        CHECK(s.document().sets[0].mu == 2.0);
+        CHECK(s.document().sets[1].mu == 50.0);
+        CHECK(s.document().sets[1].vertices.size() == stiff);
     }
 
     TEST_CASE("import restores the sets of an exported recipe")

@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: MIT
 # A person's whole session in a real window under Xvfb, driven by synthetic input (xdotool):
 # open a noisy mesh; brush a patch and grow it; make it a region; pins dragged with M; a
-# normal set aimed with D; anchors; Play until the energy settles; the lambda slider moved
-# during the run; Pause; undo back to the shape at the slider's change; save; export the
+# normal set aimed with D; anchors with their own weight; Play until the energy settles;
+# the lambda slider moved during the run; Pause; undo back to the shape at the slider's change; save; export the
 # recipe through the File menu's dialog; reopen the mesh; import the recipe. The files must
 # agree: meshfair-cli smooth of the mesh with the exported recipe gives the saved file byte
 # for byte, and the imported recipe exports the same sets and settings again.
@@ -50,11 +50,14 @@ key v
 key d
 drag 447 407 470 412 4
 wait_line "gesture normal direction"
-# Anchors.
+# Anchors, with a weight of their own: their row's slider dragged.
 key r
 drag 360 420 380 440 2
 key shift+a
 wait_line "command create set: ok" 4
+read -r mx my < <(widget_at "sets/anchor 1/mu")
+drag "$mx" "$my" $((mx + 30)) "$my" 3
+wait_line "command set weight: ok"
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
 
 # Play until the energy settles; the lambda slider moved during the run; Pause.

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
@@ -25,9 +27,17 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         const ConstraintSet& set = ui.document.sets[i];
         const std::string key = "sets/" + set.name + "/";
         ImGui::PushID(static_cast<int>(i));
+        bool enabled = set.enabled;
+        if (ui.checkbox("##enabled", &enabled, key + "enabled"))
+            ui.give(EnableSet{set.name, enabled});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("takes part in the solve");
+        ImGui::SameLine();
         bool visible = set.visible;
         if (ui.checkbox("##visible", &visible, key + "show"))
             ui.give(ShowSet{set.name, visible});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("shows its glyphs");
         ImGui::SameLine();
         std::array<float, 3> color = set.color;
         if (ImGui::ColorEdit3("##color", color.data(), ImGuiColorEditFlags_NoInputs))
@@ -35,11 +45,26 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         ui.track(key + "color");
         ImGui::SameLine();
         const size_t count = set.vertices.size() + set.faces.size();
-        ImGui::Text("%s  (%s, %s %s)", set.name.c_str(), kind_label(set.kind),
-                    with_separators(static_cast<std::int64_t>(count)).c_str(),
-                    set.vertices.empty() ? "faces" : "vertices");
+        if (!set.enabled)
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("%s  (%s, %s %s)%s", set.name.c_str(), kind_label(set.kind),
+                           with_separators(static_cast<std::int64_t>(count)).c_str(),
+                           set.vertices.empty() ? "faces" : "vertices",
+                           set.enabled ? "" : ", not solved");
+        if (!set.enabled)
+            ImGui::PopStyleColor();
         if (ui.small_button("select", key + "select"))
             ui.give(SelectSet{set.name});
+        ImGui::SameLine();
+        if (ui.small_button("+sel", key + "add"))
+            ui.give(AddToSet{set.name});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("add the selection to the set");
+        ImGui::SameLine();
+        if (ui.small_button("-sel", key + "remove"))
+            ui.give(RemoveFromSet{set.name});
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("take the selection out of the set");
         ImGui::SameLine();
         if (ui.small_button("rename", key + "rename"))
         {
@@ -50,6 +75,16 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         ImGui::SameLine();
         if (ui.small_button("delete", key + "delete"))
             ui.give(DeleteSet{set.name});
+        if (takes_weight(set.kind))
+        {
+            // The set's own weight, logarithmic over [1e-3, 1e3]; Ctrl+click types one.
+            float mu = float(weight_of(set, ui.document.solver));
+            ImGui::SetNextItemWidth(180);
+            if (ImGui::SliderFloat("mu", &mu, 1e-3f, 1e3f, "%.4g", ImGuiSliderFlags_Logarithmic))
+                ui.give(SetSetWeight{set.name, std::clamp(Scalar(mu), Scalar(1e-3), Scalar(1e3))},
+                        {key + "mu"});
+            ui.track(key + "mu");
+        }
         if (set.kind == ConstraintKind::Normal || set.kind == ConstraintKind::HardNormal ||
             set.kind == ConstraintKind::SoftNormal)
         {
@@ -80,6 +115,12 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
             ImGui::EndPopup();
         }
         ImGui::PopID();
+    }
+    for (const std::string& note : ui.state.notes)
+    {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.85f, 0.45f, 1));
+        ImGui::TextWrapped("note: %s", note.c_str());
+        ImGui::PopStyleColor();
     }
     for (const std::string& problem : ui.state.problems)
     {

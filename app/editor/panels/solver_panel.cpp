@@ -70,6 +70,8 @@ void solver_panel(const PanelContext& ui)
         dragged = true;
     }
     ui.track("tolerance");
+    // The weights of the sets that have none of their own (a set's row sets its own).
+    ImGui::TextDisabled("weights of sets without their own:");
     dragged |= weight_slider(ui, "anchor mu", s.anchor_mu);
     dragged |= weight_slider(ui, "centroid mu", s.centroid_mu);
     dragged |= weight_slider(ui, "normal mu", s.normal_mu);
