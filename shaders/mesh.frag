@@ -5,6 +5,7 @@
 in vec3 v_position_view;
 in vec3 v_normal_view;
 in vec3 v_color;
+in float v_selected;
 
 uniform mat4 u_view;
 uniform bool u_flat;
@@ -13,6 +14,8 @@ uniform bool u_orthographic;
 uniform usamplerBuffer u_triangle_face;
 uniform samplerBuffer u_face_area;
 uniform usamplerBuffer u_face_selected;
+uniform vec3 u_selection_color;
+uniform vec3 u_back_face_color;
 
 out vec4 frag_color;
 
@@ -27,9 +30,13 @@ void main()
         n = -n;
     vec3 base = v_color;
     if (!gl_FrontFacing && u_back_tint)
-        base = mix(base, vec3(0.22, 0.36, 0.80), 0.65);
+        base = mix(base, u_back_face_color, 0.65);
     if (texelFetch(u_face_selected, f).r != 0u)
-        base = mix(base, vec3(1.0, 0.50, 0.08), 0.60); // a selected face
+        base = mix(base, u_selection_color, 0.55); // a selected face
+    else
+        // Selected vertices tint the surface around them, which stays shaded and readable
+        // however dense the mesh.
+        base = mix(base, u_selection_color, 0.55 * v_selected);
     float diffuse = max(dot(n, to_eye), 0.0);
     float specular = pow(diffuse, 48.0);
     frag_color = vec4(base * (0.20 + 0.80 * diffuse) + vec3(0.16) * specular, 1.0);

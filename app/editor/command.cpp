@@ -70,6 +70,7 @@ CommandSpec spec_of(const Command& command)
                                std::is_same_v<T, cmd::ToggleProjection> ||
                                std::is_same_v<T, cmd::SetOrbit> ||
                                std::is_same_v<T, cmd::ToggleOrbit> ||
+                               std::is_same_v<T, cmd::SetUpAxis> ||
                                std::is_same_v<T, cmd::Toggle> ||
                                std::is_same_v<T, cmd::SetDisplay> ||
                                std::is_same_v<T, cmd::SetHeatMap> ||
@@ -102,6 +103,7 @@ std::string_view command_name(const Command& command)
                                             "projection",
                                             "orbit",
                                             "orbit",
+                                            "up axis",
                                             "toggle",
                                             "display",
                                             "create set",

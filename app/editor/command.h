@@ -98,6 +98,11 @@ struct SetOrbit
 struct ToggleOrbit
 {
 };
+//! The world's up axis: the front view again, framed, remembered for the file.
+struct SetUpAxis
+{
+    UpAxis up = UpAxis::Y;
+};
 //! What the display toggles flip (keys and menus).
 enum class DisplayToggle
 {
@@ -291,9 +296,9 @@ using Command = std::variant<
     cmd::SetTool, cmd::SetElements, cmd::ToggleElements, cmd::SetThrough, cmd::SetBrushRadius,
     cmd::ScaleBrushRadius, cmd::RunSelection, cmd::ApplySelection, cmd::Undo, cmd::Redo,
     cmd::FrameAll, cmd::FrameSelection, cmd::SetView, cmd::SetProjection, cmd::ToggleProjection,
-    cmd::SetOrbit, cmd::ToggleOrbit, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet, cmd::DeleteSet,
-    cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet, cmd::RemoveFromSet,
-    cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection, cmd::MovePins,
+    cmd::SetOrbit, cmd::ToggleOrbit, cmd::SetUpAxis, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet,
+    cmd::DeleteSet, cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet,
+    cmd::RemoveFromSet, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection, cmd::MovePins,
     cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::ResetShape,
     cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
     cmd::ExportRecipe, cmd::ImportRecipe, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,

@@ -144,6 +144,15 @@ struct CommandExecutor
             st.orbit == OrbitStyle::Turntable ? OrbitStyle::Trackball : OrbitStyle::Turntable;
         return true;
     }
+    bool operator()(const cmd::SetUpAxis& c) const
+    {
+        s.camera_.up_axis = c.up;
+        s.camera_.set_view(StandardView::Front);
+        s.camera_.frame(d.box, s.aspect());
+        if (!st.offscreen)
+            save_up_axis(up_axes_path(), d.path, c.up);
+        return true;
+    }
     bool operator()(const cmd::Toggle& c) const
     {
         DisplayOptions& o = st.display;
@@ -464,6 +473,9 @@ struct CommandExecutor
         s.renderer_.set_mesh(next.mesh, next.draw_data);
         d = std::move(next);
         s.reset_for_document();
+        // The up axis this file was last seen with.
+        s.camera_.up_axis = load_up_axis(up_axes_path(), c.path).value_or(s.camera_.up_axis);
+        s.camera_.set_view(StandardView::Front);
         s.camera_.frame(d.box, s.aspect());
         s.remember(c.path);
         st.recovery_saved_at.reset();

@@ -78,7 +78,7 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
     std::vector<GlyphGroup> groups;
     const Mesh& mesh = d.mesh;
     const Scalar arrow = 6 * mean_edge_length(d.topology, mesh.positions);
-    bool any_region_shown = false;
+    const ConstraintSet* region_shown = nullptr; // the first region shown gives the ring its colour
     for (const ConstraintSet& s : d.sets)
     {
         if (!s.visible)
@@ -88,7 +88,8 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
         switch (s.kind)
         {
             case ConstraintKind::Region:
-                any_region_shown = true;
+                if (region_shown == nullptr)
+                    region_shown = &s;
                 continue; // drawn once for all regions: the border ring below
             case ConstraintKind::Pin:
             case ConstraintKind::Anchor:
@@ -130,12 +131,12 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
         }
         groups.push_back(std::move(g));
     }
-    if (any_region_shown)
+    if (region_shown != nullptr)
     {
         // The ring that stays put: its vertices and the edges between two of them.
         GlyphGroup ring;
         ring.shape = GlyphGroup::Shape::Segments;
-        ring.color = {1.0f, 0.55f, 0.05f};
+        ring.color = region_shown->color; // as the region's swatch in the list
         ring.size_px = 2.0f;
         for (const Index v : border.edges)
             add_point(ring.points, position(d, v));

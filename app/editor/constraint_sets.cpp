@@ -6,6 +6,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include "app/render/palette.h"
 #include "core/geometry/face_geometry.h"
 
 namespace meshfair::app {
@@ -152,19 +153,19 @@ std::array<float, 3> default_color(ConstraintKind kind)
     switch (kind)
     {
         case ConstraintKind::Region:
-            return {0.35f, 0.75f, 0.35f};
+            return palette::kRegion;
         case ConstraintKind::Pin:
-            return {0.90f, 0.20f, 0.20f};
+            return palette::kPin;
         case ConstraintKind::Anchor:
-            return {0.95f, 0.75f, 0.15f};
+            return palette::kAnchor;
         case ConstraintKind::Centroid:
-            return {0.25f, 0.55f, 0.95f};
+            return palette::kCentroid;
         case ConstraintKind::Normal:
-            return {0.70f, 0.35f, 0.90f};
+            return palette::kNormal;
         case ConstraintKind::HardNormal:
-            return {0.15f, 0.80f, 0.80f};
+            return palette::kHardNormal;
         case ConstraintKind::SoftNormal:
-            return {0.55f, 0.90f, 0.90f};
+            return palette::kSoftNormal;
     }
     return {1, 1, 1};
 }

@@ -30,6 +30,7 @@ void side_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
     select_panel(ui);
     sets_panel(ui, rename_buffer, renaming);
     solver_panel(ui);
+    legend_panel(ui);
     mesh_panel(ui);
     display_panel(ui);
     camera_panel(ui);
@@ -116,6 +117,68 @@ bool save_recent(const std::string& file, const std::vector<std::string>& recent
     for (const std::string& p : recent)
         if (p.find('\n') == std::string::npos)
             text += p + "\n";
+    try
+    {
+        std::filesystem::create_directories(std::filesystem::path(file).parent_path());
+        io::write_file_atomically(file, text);
+        return true;
+    }
+    catch (const std::exception&)
+    {
+        return false;
+    }
+}
+
+std::string up_axes_path()
+{
+    const std::string recent = recent_files_path();
+    if (recent.empty())
+        return {};
+    return (std::filesystem::path(recent).parent_path() / "up-axes.txt").string();
+}
+
+namespace {
+
+std::string absolute_path(const std::string& path)
+{
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+    return ec ? path : absolute.lexically_normal().string();
+}
+
+} // namespace
+
+std::optional<UpAxis> load_up_axis(const std::string& file, const std::string& mesh_path)
+{
+    if (file.empty())
+        return std::nullopt;
+    const std::string key = absolute_path(mesh_path);
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line);)
+        if (line.size() > 2 && line[1] == '\t' && line.substr(2) == key)
+        {
+            if (line[0] == 'z')
+                return UpAxis::Z;
+            if (line[0] == 'y')
+                return UpAxis::Y;
+        }
+    return std::nullopt;
+}
+
+bool save_up_axis(const std::string& file, const std::string& mesh_path, UpAxis axis)
+{
+    if (file.empty())
+        return false;
+    const std::string key = absolute_path(mesh_path);
+    std::vector<std::string> lines{std::string(axis == UpAxis::Z ? "z" : "y") + "\t" + key};
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line) && lines.size() < 1000;)
+        if (line.size() > 2 && line[1] == '\t' && line.substr(2) != key)
+            lines.push_back(line);
+    std::string text;
+    for (const std::string& l : lines)
+        if (l.find('\n') == std::string::npos)
+            text += l + "\n";
     try
     {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());

@@ -51,7 +51,8 @@ void render_screenshot(const ScreenshotRequest& request)
     Document document = load_document(request.mesh_path);
     std::optional<Camera> camera;
     if (!request.view_path.empty())
-        camera = camera_from_json(io::read_file(request.view_path), request.view_path);
+        camera =
+            camera_from_json(io::read_file(request.view_path), request.view_path, &document.box);
     std::optional<Script> script;
     if (!request.script_path.empty())
         script = read_script(request.script_path);

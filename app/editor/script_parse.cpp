@@ -106,7 +106,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                                         "solver",        "step",         "play",
                                         "reset",         "apply",        "export_recipe",
                                         "import_recipe", "noise",        "heat_map",
-                                        "autosave",      "recover"};
+                                        "autosave",      "recover",      "up_axis"};
     // Options, and the actions each belongs to.
     static const std::pair<const char*, const char*> options[] = {
         {"name", "create_set rename_set"},
@@ -310,6 +310,13 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                 r.bad(kind, "'" + name +
                                 "' is not front, back, right, left, top, bottom, all or selection");
         }
+    }
+    else if (kind == "up_axis")
+    {
+        const std::string up = r.text(v, kind);
+        if (up != "y" && up != "z")
+            r.bad(kind, "must be \"y\" or \"z\"");
+        command(SetUpAxis{up == "z" ? UpAxis::Z : UpAxis::Y});
     }
     else if (kind == "projection")
     {

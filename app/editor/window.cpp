@@ -241,7 +241,8 @@ void run_window(const WindowOptions& options)
     Document document = load_document(options.mesh_path);
     std::optional<Camera> camera;
     if (!options.view_path.empty())
-        camera = camera_from_json(io::read_file(options.view_path), options.view_path);
+        camera =
+            camera_from_json(io::read_file(options.view_path), options.view_path, &document.box);
     editor->screenshot_path = options.screenshot_path;
 
     glfwSetErrorCallback(remember_glfw_error);
@@ -310,6 +311,11 @@ void run_window(const WindowOptions& options)
         save_recent(recent_files_path(), state.recent);
         if (camera)
             session.camera() = *camera;
+        else if (const std::optional<UpAxis> up = load_up_axis(up_axes_path(), options.mesh_path))
+        {
+            session.camera().up_axis = *up; // as this file was last seen
+            session.camera().set_view(StandardView::Front);
+        }
         if (const std::optional<RecoveryInfo> offer = session.recovery_offer())
             state.recovery_saved_at = offer->saved_at;
     }

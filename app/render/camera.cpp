@@ -135,6 +135,11 @@ void Camera::frame(const Box3& part, const Box3& scene, double aspect)
     scene_radius = scene.radius();
 }
 
+glm::dvec3 Camera::world_up() const
+{
+    return up_axis == UpAxis::Z ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+}
+
 void Camera::set_view(StandardView view)
 {
     const glm::dvec3 y{0, 1, 0}, x{1, 0, 0};
@@ -159,6 +164,10 @@ void Camera::set_view(StandardView view)
             rotation = glm::angleAxis(0.5 * kPi, x);
             break;
     }
+    // With +z up, the same views of a world turned a quarter about x (+y goes to +z): the
+    // front view looks along +y with +z up, as Blender's does.
+    if (up_axis == UpAxis::Z)
+        rotation = glm::angleAxis(0.5 * kPi, x) * rotation;
 }
 
 void Camera::orbit(OrbitStyle style, double x0, double y0, double x1, double y1, int width,
@@ -168,8 +177,8 @@ void Camera::orbit(OrbitStyle style, double x0, double y0, double x1, double y1,
     {
         const double per_px = kPi / std::max(height, 1);
         const double yaw = -(x1 - x0) * per_px, pitch = -(y1 - y0) * per_px;
-        rotation = glm::angleAxis(yaw, glm::dvec3(0, 1, 0)) * rotation *
-                   glm::angleAxis(pitch, glm::dvec3(1, 0, 0));
+        rotation =
+            glm::angleAxis(yaw, world_up()) * rotation * glm::angleAxis(pitch, glm::dvec3(1, 0, 0));
     }
     else
     {
@@ -234,6 +243,7 @@ std::string to_json(const Camera& c)
         {"fov_y_degrees", c.fov_y_degrees},
         {"scene_center", {c.scene_center.x, c.scene_center.y, c.scene_center.z}},
         {"scene_radius", c.scene_radius},
+        {"up", c.up_axis == UpAxis::Z ? "z" : "y"},
     };
     return j.dump(2) + "\n";
 }
@@ -270,7 +280,7 @@ glm::vec<N, double> vector_field(const nlohmann::json& j, const std::string& nam
 
 } // namespace
 
-Camera camera_from_json(const std::string& text, const std::string& name)
+Camera camera_from_json(const std::string& text, const std::string& name, const Box3* scene)
 {
     nlohmann::json j;
     try
@@ -284,9 +294,9 @@ Camera camera_from_json(const std::string& text, const std::string& name)
     }
     if (!j.is_object())
         throw InvalidInputError("'" + name + "': a view must be a JSON object");
-    static const char* const known[] = {"target",      "distance",      "rotation",
-                                        "projection",  "fov_y_degrees", "scene_center",
-                                        "scene_radius"};
+    static const char* const known[] = {
+        "target",        "distance",     "rotation",     "projection",
+        "fov_y_degrees", "scene_center", "scene_radius", "up"};
     for (const auto& [key, value] : j.items())
         if (std::find(std::begin(known), std::end(known), key) == std::end(known))
             bad_field(name, key, "is unknown");
@@ -322,6 +332,20 @@ Camera camera_from_json(const std::string& text, const std::string& name)
         c.fov_y_degrees = finite_number(j["fov_y_degrees"], name, "fov_y_degrees");
         if (c.fov_y_degrees <= 0 || c.fov_y_degrees >= 180)
             bad_field(name, "fov_y_degrees", "must be in (0, 180)");
+    }
+    if (scene != nullptr)
+    {
+        c.scene_center = scene->center();
+        c.scene_radius = scene->radius();
+    }
+    if (j.contains("up"))
+    {
+        if (j["up"] == "y")
+            c.up_axis = UpAxis::Y;
+        else if (j["up"] == "z")
+            c.up_axis = UpAxis::Z;
+        else
+            bad_field(name, "up", "must be \"y\" or \"z\"");
     }
     if (j.contains("scene_center"))
         c.scene_center = vector_field<3>(j["scene_center"], name, "scene_center");

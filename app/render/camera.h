@@ -34,9 +34,17 @@ enum class Projection
     Orthographic
 };
 
+//! Which world axis is up: +y (most viewers), or +z (scanners, CAD, Blender).
+enum class UpAxis
+{
+    Y,
+    Z
+};
+
 enum class OrbitStyle
 {
-    Turntable, //!< yaw about the world's up axis (+y), pitch about the view's right axis
+    Turntable, //!< yaw about the world's up axis (Camera::up_axis), pitch about the view's right
+               //!< axis
     Trackball  //!< free rotation about the axis under the mouse motion
 };
 
@@ -56,9 +64,9 @@ enum class StandardView
 //! (pixel sizes are passed in). Pure maths, no GL; saved and loaded as JSON (to_json,
 //! camera_from_json) for reproducible screenshots.
 //!
-//! Conventions: world +y is up; the camera looks along its local -z; window coordinates
-//! are pixels with (0, 0) at the top-left corner and y down; depth is 0 at the near plane
-//! and 1 at the far plane, as OpenGL's default depth range writes it.
+//! Conventions: world +y is up, or +z with UpAxis::Z; the camera looks along its local -z; window
+//! coordinates are pixels with (0, 0) at the top-left corner and y down; depth is 0 at the near
+//! plane and 1 at the far plane, as OpenGL's default depth range writes it.
 struct Camera
 {
     glm::dvec3 target{0.0};          //!< the point orbited about
@@ -68,6 +76,10 @@ struct Camera
     double fov_y_degrees = 40;    //!< vertical field of view (perspective)
     glm::dvec3 scene_center{0.0}; //!< of the shown mesh's box: with the radius,
     double scene_radius = 1;      //!< what near and far must contain
+    UpAxis up_axis = UpAxis::Y;   //!< the standard views and the turntable follow it
+
+    //! The world's up direction: +y or +z.
+    glm::dvec3 world_up() const;
 
     glm::dvec3 eye() const;
     glm::dvec3 forward() const; //!< unit view direction
@@ -121,6 +133,9 @@ std::vector<ScreenPoint> project_points(const Camera& camera, std::span<const fl
 std::string to_json(const Camera& camera);
 //! \brief Reads a camera written by to_json; `name` names the source in messages.
 //! \throw InvalidInputError naming the field at fault.
-Camera camera_from_json(const std::string& text, const std::string& name);
+//! \brief With `scene`, a view that gives no scene centre or radius (written by hand, or by
+//! another program) gets them from that box, so that near and far contain the mesh.
+Camera camera_from_json(const std::string& text, const std::string& name,
+                        const Box3* scene = nullptr);
 
 } // namespace meshfair::app

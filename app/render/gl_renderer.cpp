@@ -10,6 +10,7 @@
 
 #include "app/render/gl_functions.h"
 #include "app/render/gl_program.h"
+#include "app/render/palette.h"
 #include "app/render/render_error.h"
 #include "core/solver/parallel.h"
 
@@ -31,7 +32,8 @@ enum Attribute : GLuint
 {
     kPosition = 0,
     kNormal = 1,
-    kColor = 2
+    kColor = 2,
+    kSelected = 3
 };
 
 // Every buffer allocation goes through here, and is counted.
@@ -70,10 +72,11 @@ void set_matrices(const gl::Program& p, const glm::mat4& view, const glm::mat4& 
 
 struct GlRenderer::Gl
 {
-    gl::Program surface{"mesh",
-                        false,
-                        {"u_view", "u_projection", "u_flat", "u_back_tint", "u_orthographic",
-                         "u_triangle_face", "u_face_area", "u_face_selected"}};
+    gl::Program surface{
+        "mesh",
+        false,
+        {"u_view", "u_projection", "u_flat", "u_back_tint", "u_orthographic", "u_triangle_face",
+         "u_face_area", "u_face_selected", "u_selection_color", "u_back_face_color"}};
     gl::Program lines{
         "lines",
         true,
@@ -90,6 +93,7 @@ struct GlRenderer::Gl
     GLuint triangle_face_texture = 0, face_area_texture = 0;
     GLuint face_selected = 0, face_selected_texture = 0; // one byte per face
     GLuint selected_points = 0;                          // indices of the selected vertices
+    GLuint vertex_selected = 0;                          // one float per vertex (the tint)
     GLuint glyph_vao = 0, glyph_points = 0;              // the glyphs' points, all groups
     GLsizei selected_point_count = 0;
     GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
@@ -105,6 +109,7 @@ struct GlRenderer::Gl
             glGenBuffers(1, b);
         glGenBuffers(1, &face_selected);
         glGenBuffers(1, &selected_points);
+        glGenBuffers(1, &vertex_selected);
         glGenVertexArrays(1, &glyph_vao);
         glGenBuffers(1, &glyph_points);
         glBindVertexArray(glyph_vao);
@@ -124,6 +129,9 @@ struct GlRenderer::Gl
         glEnableVertexAttribArray(kNormal);
         glBindBuffer(GL_ARRAY_BUFFER, colors);
         glVertexAttribPointer(kColor, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glBindBuffer(GL_ARRAY_BUFFER, vertex_selected);
+        glVertexAttribPointer(kSelected, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glEnableVertexAttribArray(kSelected);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles);
         glBindVertexArray(lines_vao);
         glBindBuffer(GL_ARRAY_BUFFER, positions);
@@ -153,6 +161,7 @@ struct GlRenderer::Gl
         glDeleteBuffers(9, buffers);
         glDeleteBuffers(1, &face_selected);
         glDeleteBuffers(1, &selected_points);
+        glDeleteBuffers(1, &vertex_selected);
         glDeleteVertexArrays(1, &glyph_vao);
         glDeleteBuffers(1, &glyph_points);
         glDeleteTextures(1, &triangle_face_texture);
@@ -232,6 +241,8 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     upload<std::uint8_t>(GL_TEXTURE_BUFFER, gl_->face_selected,
                          std::vector<std::uint8_t>(static_cast<size_t>(face_count_), 0), n);
     gl_->selected_point_count = 0;
+    upload<float>(GL_ARRAY_BUFFER, gl_->vertex_selected,
+                  std::vector<float>(static_cast<size_t>(vertex_count_), 0.0f), n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data.edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data.boundary_edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data.singular_edges, n);
@@ -305,6 +316,12 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
     // (its length changes with the selection, which changes far less often than frames).
     glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_selected);
     glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(faces.size()), faces.data());
+    std::vector<float> tint(vertices.size());
+    for (size_t i = 0; i < vertices.size(); ++i)
+        tint[i] = vertices[i] ? 1.0f : 0.0f;
+    glBindBuffer(GL_ARRAY_BUFFER, gl_->vertex_selected);
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(tint.size() * sizeof(float)),
+                    tint.data());
     std::vector<std::uint32_t> selected;
     for (size_t i = 0; i < vertices.size(); ++i)
         if (vertices[i])
@@ -361,6 +378,9 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     glUniform1i(gl_->surface["u_triangle_face"], 0);
     glUniform1i(gl_->surface["u_face_area"], 1);
     glUniform1i(gl_->surface["u_face_selected"], 2);
+    const palette::Rgb &sel = palette::kSelection, &back = palette::kBackFace;
+    glUniform3f(gl_->surface["u_selection_color"], sel[0], sel[1], sel[2]);
+    glUniform3f(gl_->surface["u_back_face_color"], back[0], back[1], back[2]);
     gl_->bind_face_textures();
     glBindVertexArray(gl_->surface_vao);
     if (o.vertex_colors && has_colors_)
@@ -393,10 +413,10 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         draw_edges(gl_->edges, edge_indices_, o.edge_width_px, {0.08f, 0.08f, 0.10f, 1});
     if (o.boundary_edges)
     {
-        draw_edges(gl_->boundary, boundary_indices_, 2.5f * o.edge_width_px,
-                   {1.0f, 0.55f, 0.05f, 1});
-        draw_edges(gl_->singular, singular_indices_, 2.5f * o.edge_width_px,
-                   {0.95f, 0.10f, 0.85f, 1});
+        const palette::Rgb& b = palette::kBoundary;
+        const palette::Rgb& s = palette::kSingular;
+        draw_edges(gl_->boundary, boundary_indices_, 2.5f * o.edge_width_px, {b[0], b[1], b[2], 1});
+        draw_edges(gl_->singular, singular_indices_, 2.5f * o.edge_width_px, {s[0], s[1], s[2], 1});
     }
     if (o.vertex_points)
     {
@@ -408,15 +428,20 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         glUniform4f(gl_->points["u_color"], 0.10f, 0.20f, 0.55f, 1.0f);
         glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(vertex_count_));
     }
-    if (gl_->selected_point_count > 0)
+    // Selected vertices tint the surface (mesh.frag); with the vertex points shown they are
+    // also dots, darker than the tint, over the others.
+    if (gl_->selected_point_count > 0 && o.vertex_points)
     {
-        // Selected vertices: larger orange dots over everything else drawn on the surface.
+        // Selected vertices: small dots of the selection's colour, so that the surface
+        // between them stays readable on a dense mesh.
         gl_->points.use();
         set_matrices(gl_->points, view, projection);
         glUniform2f(gl_->points["u_viewport_px"], float(width), float(height));
-        glUniform1f(gl_->points["u_size_px"], o.point_size_px + 3);
+        glUniform1f(gl_->points["u_size_px"], std::max(2.0f, o.point_size_px - 2));
         glUniform1f(gl_->points["u_depth_bias"], 6e-5f);
-        glUniform4f(gl_->points["u_color"], 1.0f, 0.62f, 0.10f, 1.0f);
+        // Darker than the tint they sit in, so that each stays visible.
+        const palette::Rgb& c = palette::kSelection;
+        glUniform4f(gl_->points["u_color"], 0.45f * c[0], 0.45f * c[1], 0.45f * c[2], 1.0f);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points);
         glDrawElements(GL_POINTS, gl_->selected_point_count, GL_UNSIGNED_INT, nullptr);
     }

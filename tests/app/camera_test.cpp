@@ -233,3 +233,47 @@ TEST_SUITE("Camera")
         CHECK(error("{\"distance\": 1,").find("line 1") != std::string::npos);
     }
 }
+
+TEST_SUITE("Camera up axis")
+{
+    TEST_CASE("with +z up the front view looks along +y with +z up, and the turntable keeps z up")
+    {
+        Camera c;
+        c.up_axis = UpAxis::Z;
+        c.set_view(StandardView::Front);
+        CHECK(glm::length(c.forward() - glm::dvec3(0, 1, 0)) < 1e-12);
+        CHECK(glm::length(c.up() - glm::dvec3(0, 0, 1)) < 1e-12);
+        c.set_view(StandardView::Top);
+        CHECK(glm::length(c.forward() - glm::dvec3(0, 0, -1)) < 1e-12);
+        c.set_view(StandardView::Front);
+        c.orbit(OrbitStyle::Turntable, 0, 0, 37, 0, 400, 300); // a yaw only
+        CHECK(std::abs(glm::dot(c.right(), glm::dvec3(0, 0, 1))) < 1e-12);
+        CHECK(glm::length(c.up() - glm::dvec3(0, 0, 1)) < 1e-12);
+        // With +y up, the same yaw turns about y.
+        Camera y;
+        y.set_view(StandardView::Front);
+        y.orbit(OrbitStyle::Turntable, 0, 0, 37, 0, 400, 300);
+        CHECK(std::abs(glm::dot(y.right(), glm::dvec3(0, 1, 0))) < 1e-12);
+        CHECK(glm::length(y.up() - glm::dvec3(0, 1, 0)) < 1e-12);
+    }
+
+    TEST_CASE("a view file keeps its up axis; without scene centre and radius it takes the mesh's")
+    {
+        Camera c;
+        c.up_axis = UpAxis::Z;
+        CHECK(camera_from_json(to_json(c), "v.json").up_axis == UpAxis::Z);
+        Box3 box;
+        box.lo = {10, 20, 30};
+        box.hi = {14, 26, 42};
+        const Camera d =
+            camera_from_json(R"({"target": [12, 23, 36], "distance": 30})", "v.json", &box);
+        CHECK(glm::length(d.scene_center - glm::dvec3(12, 23, 36)) < 1e-12);
+        CHECK(d.scene_radius == doctest::Approx(box.radius()));
+        // Given, they are kept.
+        const Camera e =
+            camera_from_json(R"({"scene_center": [1, 2, 3], "scene_radius": 5})", "v.json", &box);
+        CHECK(e.scene_radius == 5);
+        CHECK_THROWS_WITH(camera_from_json(R"({"up": "x"})", "v.json"),
+                          "'v.json': view field 'up' must be \"y\" or \"z\"");
+    }
+}

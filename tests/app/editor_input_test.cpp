@@ -84,8 +84,16 @@ struct Editor
         }
         input(events); // all queued at once, as fast typing queues them
     }
-    WidgetRect widget(const std::string& label) const
+    // Where a widget is; one scrolled out of the side panel is scrolled to with the wheel,
+    // as a person does.
+    WidgetRect widget(const std::string& label)
     {
+        for (int attempt = 0; attempt < 40 && !frame.ui().widget(label); ++attempt)
+        {
+            InputEvent wheel = input_event(InputEvent::Type::Scroll, {kWidth - 170.0, 400, 0});
+            wheel.amount = attempt < 20 ? -3 : 3; // down, then up
+            input({input_event(InputEvent::Type::MouseMove, {kWidth - 170.0, 400, 0}), wheel});
+        }
         const std::optional<WidgetRect> w = frame.ui().widget(label);
         REQUIRE_MESSAGE(w.has_value(), label);
         return *w;
@@ -320,5 +328,49 @@ TEST_SUITE("Editor input")
         f.run();
         f.click_widget("Discard and quit");
         CHECK(f.session.state().quit);
+    }
+}
+
+TEST_SUITE("Editor display")
+{
+    TEST_CASE("the region's ring takes its set's colour; each kind its own colour")
+    {
+        Editor e(bunny_copy());
+        e.key("r");
+        e.drag({e.view_point(0.3, 0.3), e.view_point(0.6, 0.6)});
+        e.key("shift+r");
+        e.drag({e.view_point(0.4, 0.4), e.view_point(0.45, 0.45)});
+        e.key("shift+p");
+        const std::array<float, 3> green{0.1f, 0.9f, 0.2f};
+        e.session.dispatch(cmd::SetColor{"region 1", green});
+        e.run();
+        const std::vector<GlyphGroup>& glyphs = e.renderer.glyphs();
+        REQUIRE(glyphs.size() == 3); // the pins, the ring's edges and its vertices
+        CHECK(glyphs[1].color == green);
+        CHECK(glyphs[2].color == green);
+        std::set<std::array<float, 3>> colors;
+        for (int k = 0; k < kConstraintKinds; ++k)
+            colors.insert(default_color(static_cast<ConstraintKind>(k)));
+        CHECK(colors.size() == static_cast<size_t>(kConstraintKinds));
+    }
+
+    TEST_CASE("the up axis: +Z from the menu, the front view along +y, remembered for the file")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path mesh = bunny_copy();
+        setenv("XDG_CONFIG_HOME", (dir / "config").c_str(), 1);
+        {
+            Editor e(mesh);
+            e.session.state().offscreen = false; // a person's session remembers
+            e.click_widget("View");
+            e.click_widget("View/Up axis +Z");
+            CHECK(e.session.camera().up_axis == UpAxis::Z);
+            CHECK(glm::length(e.session.camera().forward() - glm::dvec3(0, 1, 0)) < 1e-12);
+            e.session.dispatch(cmd::OpenMesh{(test::assets_dir() / "bunny.obj").string()});
+            e.session.dispatch(cmd::OpenMesh{mesh.string()});
+            CHECK(e.session.camera().up_axis == UpAxis::Z);
+        }
+        CHECK(load_up_axis(up_axes_path(), mesh.string()) == UpAxis::Z);
+        unsetenv("XDG_CONFIG_HOME");
     }
 }

@@ -77,3 +77,22 @@ TEST_SUITE("EditorUi")
         CHECK(FileBrowser::listing(dir / "missing").empty());
     }
 }
+
+TEST_SUITE("EditorUi")
+{
+    TEST_CASE("each mesh's up axis is remembered beside the recent files")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string file = (dir / "config" / "meshfair" / "up-axes.txt").string();
+        const std::string a = (dir / "scan.ply").string(), b = (dir / "cad.stl").string();
+        CHECK_FALSE(load_up_axis(file, a).has_value());
+        REQUIRE(save_up_axis(file, a, UpAxis::Z));
+        REQUIRE(save_up_axis(file, b, UpAxis::Y));
+        CHECK(load_up_axis(file, a) == UpAxis::Z);
+        CHECK(load_up_axis(file, b) == UpAxis::Y);
+        REQUIRE(save_up_axis(file, a, UpAxis::Y)); // replaced, not added
+        CHECK(load_up_axis(file, a) == UpAxis::Y);
+        CHECK(io::read_file(file).find(a) == io::read_file(file).rfind(a));
+        CHECK_FALSE(save_up_axis("", a, UpAxis::Z));
+    }
+}

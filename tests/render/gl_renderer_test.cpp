@@ -180,9 +180,9 @@ TEST_SUITE("GlRenderer")
         GlRenderer r;
         r.set_mesh(s.document.mesh, s.document.draw_data);
         // One allocation per buffer of a mesh: positions, normals, area vectors, triangle
-        // faces, selection flags, edges, boundary, singular edges, triangles.
+        // faces, face and vertex selection flags, edges, boundary, singular edges, triangles.
         const int allocations = r.buffer_allocations();
-        CHECK(allocations == 9);
+        CHECK(allocations == 10);
         const DisplayOptions o;
         r.draw(s.camera, o, ViewRect::whole(kWidth, kHeight));
         const Image before = r.read_pixels(kWidth, kHeight);

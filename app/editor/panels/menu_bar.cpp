@@ -98,6 +98,10 @@ void menu_bar(const PanelContext& ui)
             ui.give(ToggleProjection{});
         if (item(ui, "View", "Trackball orbit", "T", state.orbit == OrbitStyle::Trackball))
             ui.give(ToggleOrbit{});
+        if (item(ui, "View", "Up axis +Y", nullptr, ui.camera.up_axis == UpAxis::Y))
+            ui.give(SetUpAxis{UpAxis::Y});
+        if (item(ui, "View", "Up axis +Z", nullptr, ui.camera.up_axis == UpAxis::Z))
+            ui.give(SetUpAxis{UpAxis::Z});
         if (item(ui, "View", "Side panel", "Tab", state.show_side_panel))
             ui.give(Toggle{DisplayToggle::SidePanel});
         if (item(ui, "View", "Energy plot", "E", state.show_energy))

@@ -7,6 +7,7 @@
 
 #include "app/editor/key_map.h"
 #include "app/editor/panels/panel_context.h"
+#include "app/render/palette.h"
 
 namespace meshfair::app {
 
@@ -21,10 +22,14 @@ void tool_overlay(const EditorState& state)
     const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
     auto at = [&](const ScreenPoint& p) { return ImVec2(float(p.x) / sx, float(p.y) / sy); };
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
-    const ImU32 color = IM_COL32(255, 160, 40, 230);
+    // White on a dark outline: seen over any surface, selection or set colour.
+    const palette::Rgb& c = palette::kToolOverlay;
+    const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 0.95f));
+    const ImU32 outline = IM_COL32(0, 0, 0, 200);
     switch (o.shape)
     {
         case ToolOverlay::Shape::Circle:
+            draw->AddCircle(at(o.points[0]), float(o.radius) / sx, outline, 48, 3.5f);
             draw->AddCircle(at(o.points[0]), float(o.radius) / sx, color, 48, 1.5f);
             break;
         case ToolOverlay::Shape::Rectangle:
@@ -33,7 +38,9 @@ void tool_overlay(const EditorState& state)
                 const ImVec2 a = at(o.points[0]), b = at(o.points[1]);
                 draw->AddRectFilled(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
                                     ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)),
-                                    IM_COL32(255, 160, 40, 40));
+                                    IM_COL32(255, 255, 255, 30));
+                draw->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
+                              ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)), outline, 0, 0, 3.5f);
                 draw->AddRect(ImVec2(std::min(a.x, b.x), std::min(a.y, b.y)),
                               ImVec2(std::max(a.x, b.x), std::max(a.y, b.y)), color, 0, 0, 1.5f);
             }
@@ -43,6 +50,7 @@ void tool_overlay(const EditorState& state)
             std::vector<ImVec2> line;
             for (const ScreenPoint& p : o.points)
                 line.push_back(at(p));
+            draw->AddPolyline(line.data(), static_cast<int>(line.size()), outline, 0, 3.5f);
             draw->AddPolyline(line.data(), static_cast<int>(line.size()), color, 0, 1.5f);
             break;
         }

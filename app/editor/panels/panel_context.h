@@ -39,6 +39,7 @@ void select_panel(const PanelContext& ui);
 void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string& renaming);
 void solver_panel(const PanelContext& ui);
 void energy_window(const PanelContext& ui);
+void legend_panel(const PanelContext& ui);
 void mesh_panel(const PanelContext& ui);
 void display_panel(const PanelContext& ui);
 void camera_panel(const PanelContext& ui);

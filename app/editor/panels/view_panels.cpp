@@ -6,8 +6,45 @@
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
+#include "app/render/palette.h"
 
 namespace meshfair::app {
+
+void legend_panel(const PanelContext&)
+{
+    if (!ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen))
+        return;
+    struct Entry
+    {
+        const palette::Rgb& color;
+        const char* meaning;
+    };
+    static const Entry entries[] = {{palette::kSelection, "selection"},
+                                    {palette::kBoundary, "mesh boundary"},
+                                    {palette::kSingular, "singular edges"},
+                                    {palette::kToolOverlay, "brush, rectangle, lasso"},
+                                    {palette::kRegion, "region, border ring"},
+                                    {palette::kPin, "pins"},
+                                    {palette::kAnchor, "anchors"},
+                                    {palette::kCentroid, "centroids"},
+                                    {palette::kNormal, "normals"},
+                                    {palette::kHardNormal, "hard normals"},
+                                    {palette::kSoftNormal, "soft normals"},
+                                    {palette::kBackFace, "back faces"}};
+    int k = 0;
+    for (const Entry& e : entries)
+    {
+        if (k++ % 2 == 1)
+            ImGui::SameLine(165);
+        const palette::Rgb& c = e.color;
+        ImGui::ColorButton(e.meaning, ImVec4(c[0], c[1], c[2], 1),
+                           ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoPicker,
+                           ImVec2(12, 12));
+        ImGui::SameLine();
+        ImGui::TextUnformatted(e.meaning);
+    }
+    ImGui::TextDisabled("a set's colour is its own (click its swatch)");
+}
 
 void mesh_panel(const PanelContext& ui)
 {
@@ -63,6 +100,11 @@ void camera_panel(const PanelContext& ui)
     ImGui::SameLine();
     if (ui.radio("orthographic", ui.camera.projection == Projection::Orthographic))
         ui.give(SetProjection{Projection::Orthographic});
+    if (ui.radio("+Y up", ui.camera.up_axis == UpAxis::Y))
+        ui.give(SetUpAxis{UpAxis::Y});
+    ImGui::SameLine();
+    if (ui.radio("+Z up", ui.camera.up_axis == UpAxis::Z))
+        ui.give(SetUpAxis{UpAxis::Z});
     if (ui.radio("turntable", ui.state.orbit == OrbitStyle::Turntable))
         ui.give(SetOrbit{OrbitStyle::Turntable});
     ImGui::SameLine();
