@@ -29,6 +29,8 @@ CommandSpec spec_of(const Command& command)
                 return {"add to set", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::RemoveFromSet>)
                 return {"remove from set", kSets, kSets};
+            else if constexpr (std::is_same_v<T, cmd::CloseHoles>)
+                return {"close holes", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::EnableSet>)
                 return {c.enabled ? "enable set" : "disable set", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::SetSetWeight>)
@@ -113,7 +115,7 @@ std::string_view command_name(const Command& command)
                                             "set colour",
                                             "select set",
                                             "add to set",
-                                            "remove from set",
+                                            "remove from set", "close holes",
                                             "enable set",
                                             "set weight",
                                             "normal direction",

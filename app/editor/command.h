@@ -173,6 +173,11 @@ struct RemoveFromSet
 {
     std::string set;
 };
+//! Adds to a region set what it encloses but leaves out (region_holes).
+struct CloseHoles
+{
+    std::string set;
+};
 //! Takes a set into the solve or out of it (its glyphs stay as shown).
 struct EnableSet
 {
@@ -298,7 +303,7 @@ using Command = std::variant<
     cmd::FrameAll, cmd::FrameSelection, cmd::SetView, cmd::SetProjection, cmd::ToggleProjection,
     cmd::SetOrbit, cmd::ToggleOrbit, cmd::SetUpAxis, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet,
     cmd::DeleteSet, cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet,
-    cmd::RemoveFromSet, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection, cmd::MovePins,
+    cmd::RemoveFromSet, cmd::CloseHoles, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection, cmd::MovePins,
     cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::ResetShape,
     cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
     cmd::ExportRecipe, cmd::ImportRecipe, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,

@@ -347,6 +347,21 @@ struct CommandExecutor
             (kept == 0 ? " (it is empty now: left out of the solve)" : ""));
         return true;
     }
+    bool operator()(const cmd::CloseHoles& c) const
+    {
+        ConstraintSet& set = d.sets[set_index(c.set)];
+        if (set.kind != ConstraintKind::Region)
+            return fail("only a region has holes to close");
+        const std::vector<Index> holes = region_holes(set, d.mesh, d.topology);
+        if (holes.empty())
+            return fail("region '" + c.set + "' encloses nothing it leaves out");
+        std::vector<Index>& list = set.vertices.empty() ? set.faces : set.vertices;
+        list.insert(list.end(), holes.begin(), holes.end());
+        std::sort(list.begin(), list.end());
+        say("region '" + c.set + "': " + std::to_string(holes.size()) +
+            (set.vertices.empty() ? " enclosed faces" : " enclosed vertices") + " added");
+        return true;
+    }
     bool operator()(const cmd::EnableSet& c) const
     {
         d.sets[set_index(c.set)].enabled = c.enabled;

@@ -8,6 +8,7 @@
 
 #include "app/render/palette.h"
 #include "core/geometry/face_geometry.h"
+#include "core/select/mesh_select.h"
 
 namespace meshfair::app {
 
@@ -361,6 +362,21 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
             (!ignoring_pin_targets && a[k].targets != b[k].targets))
             return false;
     return true;
+}
+
+std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
+                                const Topology& topology)
+{
+    const bool faces = set.vertices.empty();
+    SelectionMask mask(static_cast<size_t>(faces ? mesh.face_count() : mesh.vertex_count()), 0);
+    apply_selection(mask, faces ? set.faces : set.vertices, SelectOp::Add);
+    const SelectionMask closed = faces ? shrink_faces(mesh, topology, grow_faces(mesh, topology, mask))
+                                       : shrink_vertices(topology, grow_vertices(topology, mask));
+    std::vector<Index> holes;
+    for (size_t k = 0; k < mask.size(); ++k)
+        if (closed[k] && !mask[k])
+            holes.push_back(static_cast<Index>(k));
+    return holes;
 }
 
 ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)

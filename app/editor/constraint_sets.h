@@ -11,6 +11,7 @@
 
 #include "core/mesh/mesh.h"
 #include "core/recipe/recipe.h"
+#include "core/topology/topology.h"
 
 namespace meshfair::app {
 
@@ -116,6 +117,13 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
 bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_settings,
               const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
               bool ignoring_pin_targets);
+
+//! \brief The elements a region set leaves out but encloses: what closing it (one ring grown,
+//! then one shrunk) adds. A front-facing selection of a noisy scan misses vertices hidden in
+//! pits; left out of a region they stay fixed among moving ones and become spikes.
+//! \pre `set` is a region; topology has the neighbour, corner and edge parts.
+std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
+                                const Topology& topology);
 
 //! The sets and settings of a recipe (Import recipe): one set per section, named by kind.
 struct ImportedRecipe

@@ -250,6 +250,18 @@ void EditorSession::prepare_ui()
     if (synced_.notes != document_.versions.sets)
     {
         state_.notes = constraint_notes(document_.sets);
+        state_.region_holes.clear();
+        for (const ConstraintSet& s : document_.sets)
+            if (s.kind == ConstraintKind::Region)
+                if (const size_t n = region_holes(s, document_.mesh, document_.topology).size())
+                {
+                    state_.region_holes.emplace_back(s.name, n);
+                    state_.notes.push_back(
+                        "region '" + s.name + "' leaves out " + std::to_string(n) +
+                        (s.vertices.empty() ? " faces" : " vertices") +
+                        " it encloses (hidden from the view when selected): they would stay "
+                        "fixed among moving ones; 'close holes' takes them in");
+                }
         synced_.notes = document_.versions.sets;
     }
     state_.playing = solver_.playing();

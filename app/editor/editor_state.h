@@ -35,6 +35,8 @@ struct EditorState
     std::vector<EnergySample> energies; //!< the current run's curve, refreshed likewise
     std::vector<std::string> problems;  //!< why the sets cannot run, refreshed likewise
     std::vector<std::string> notes;     //!< how the sets' overlaps are resolved, likewise
+    //! Each region set's enclosed elements it leaves out (region_holes), by set name.
+    std::vector<std::pair<std::string, std::size_t>> region_holes;
     bool playing = false;               //!< refreshed likewise
     bool energy_log_scale = false;      //!< the energy plot's vertical axis
     bool show_energy = true;            //!< the energy plot window

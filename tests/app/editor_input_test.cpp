@@ -374,3 +374,30 @@ TEST_SUITE("Editor display")
         unsetenv("XDG_CONFIG_HOME");
     }
 }
+
+TEST_SUITE("Editor sets")
+{
+    TEST_CASE("a region that leaves out what it encloses says so, and closes its holes")
+    {
+        const fs::path dir = test::temp_dir();
+        io::write_mesh(test::open_grid(6, 6), (dir / "grid.obj").string());
+        Editor e(dir / "grid.obj");
+        e.session.dispatch(cmd::RunSelection{SelectionCommand::All});
+        // Vertex 3 + 3 * 7 = 24 sits inside the grid, as a vertex hidden in a pit does.
+        e.session.dispatch(cmd::ApplySelection{ElementKind::Vertices, SelectOp::Subtract, {24}});
+        e.key("shift+r");
+        e.run();
+        REQUIRE(e.session.state().region_holes.size() == 1);
+        CHECK(e.session.state().region_holes[0].second == 1);
+        CHECK(std::any_of(e.session.state().notes.begin(), e.session.state().notes.end(),
+                          [](const std::string& n) {
+                              return n.find("leaves out 1 vertices it encloses") !=
+                                     std::string::npos;
+                          }));
+        e.click_widget("sets/region 1/close holes");
+        CHECK(e.doc().sets[0].vertices.size() == 49);
+        CHECK(e.session.state().region_holes.empty());
+        e.key("ctrl+z");
+        CHECK(e.doc().sets[0].vertices.size() == 48);
+    }
+}

@@ -75,6 +75,13 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         ImGui::SameLine();
         if (ui.small_button("delete", key + "delete"))
             ui.give(DeleteSet{set.name});
+        for (const auto& [region, holes] : ui.state.region_holes)
+            if (region == set.name)
+            {
+                const std::string label = "close " + std::to_string(holes) + " holes";
+                if (ui.button(label.c_str(), key + "close holes"))
+                    ui.give(CloseHoles{set.name});
+            }
         if (takes_weight(set.kind))
         {
             // The set's own weight, logarithmic over [1e-3, 1e3]; Ctrl+click types one.
