@@ -352,14 +352,11 @@ struct CommandExecutor
         ConstraintSet& set = d.sets[set_index(c.set)];
         if (set.kind != ConstraintKind::Region)
             return fail("only a region has holes to close");
-        const std::vector<Index> holes = region_holes(set, d.mesh, d.topology);
-        if (holes.empty())
+        const size_t holes = close_region_holes(set, d.mesh, d.topology);
+        if (holes == 0)
             return fail("region '" + c.set + "' encloses nothing it leaves out");
-        std::vector<Index>& list = set.vertices.empty() ? set.faces : set.vertices;
-        list.insert(list.end(), holes.begin(), holes.end());
-        std::sort(list.begin(), list.end());
-        say("region '" + c.set + "': " + std::to_string(holes.size()) +
-            (set.vertices.empty() ? " enclosed faces" : " enclosed vertices") + " added");
+        say("region '" + c.set + "': the " + std::to_string(holes) +
+            " enclosed vertices it left out now move");
         return true;
     }
     bool operator()(const cmd::EnableSet& c) const

@@ -367,16 +367,49 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
 std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
                                 const Topology& topology)
 {
-    const bool faces = set.vertices.empty();
-    SelectionMask mask(static_cast<size_t>(faces ? mesh.face_count() : mesh.vertex_count()), 0);
-    apply_selection(mask, faces ? set.faces : set.vertices, SelectOp::Add);
-    const SelectionMask closed = faces ? shrink_faces(mesh, topology, grow_faces(mesh, topology, mask))
-                                       : shrink_vertices(topology, grow_vertices(topology, mask));
+    // On the vertices the region moves (a region of faces moves their vertices): those it
+    // leaves out with every neighbour within a ring of it, what closing it adds.
+    SelectionMask moving(static_cast<size_t>(mesh.vertex_count()), 0);
+    apply_selection(moving, set.vertices, SelectOp::Add);
+    if (!set.faces.empty())
+    {
+        SelectionMask faces(static_cast<size_t>(mesh.face_count()), 0);
+        apply_selection(faces, set.faces, SelectOp::Add);
+        const SelectionMask of_faces = vertices_of_faces(mesh, faces);
+        for (size_t k = 0; k < moving.size(); ++k)
+            moving[k] = moving[k] || of_faces[k];
+    }
+    const SelectionMask closed = shrink_vertices(topology, grow_vertices(topology, moving));
     std::vector<Index> holes;
-    for (size_t k = 0; k < mask.size(); ++k)
-        if (closed[k] && !mask[k])
+    for (size_t k = 0; k < moving.size(); ++k)
+        if (closed[k] && !moving[k])
             holes.push_back(static_cast<Index>(k));
     return holes;
+}
+
+size_t close_region_holes(ConstraintSet& set, const Mesh& mesh, const Topology& topology)
+{
+    const std::vector<Index> holes = region_holes(set, mesh, topology);
+    if (holes.empty())
+        return 0;
+    if (set.faces.empty())
+        set.vertices.insert(set.vertices.end(), holes.begin(), holes.end());
+    else
+    {
+        // A region of faces takes the faces around the holes whose corners all move then.
+        SelectionMask faces(static_cast<size_t>(mesh.face_count()), 0);
+        apply_selection(faces, set.faces, SelectOp::Add);
+        SelectionMask moving = vertices_of_faces(mesh, faces);
+        apply_selection(moving, set.vertices, SelectOp::Add);
+        apply_selection(moving, holes, SelectOp::Add);
+        const SelectionMask around = faces_of_vertices(mesh, moving);
+        for (size_t f = 0; f < faces.size(); ++f)
+            if (around[f] && !faces[f])
+                set.faces.push_back(static_cast<Index>(f));
+        std::sort(set.faces.begin(), set.faces.end());
+    }
+    std::sort(set.vertices.begin(), set.vertices.end());
+    return holes.size();
 }
 
 ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)

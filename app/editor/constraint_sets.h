@@ -122,8 +122,12 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
 //! then one shrunk) adds. A front-facing selection of a noisy scan misses vertices hidden in
 //! pits; left out of a region they stay fixed among moving ones and become spikes.
 //! \pre `set` is a region; topology has the neighbour, corner and edge parts.
+//! Returns the vertices.
 std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
                                 const Topology& topology);
+//! \brief Takes a region's holes in (a region of faces: the faces around them whose corners
+//! all move then); returns how many vertices were holes.
+size_t close_region_holes(ConstraintSet& set, const Mesh& mesh, const Topology& topology);
 
 //! The sets and settings of a recipe (Import recipe): one set per section, named by kind.
 struct ImportedRecipe

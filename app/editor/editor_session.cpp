@@ -258,9 +258,8 @@ void EditorSession::prepare_ui()
                     state_.region_holes.emplace_back(s.name, n);
                     state_.notes.push_back(
                         "region '" + s.name + "' leaves out " + std::to_string(n) +
-                        (s.vertices.empty() ? " faces" : " vertices") +
-                        " it encloses (hidden from the view when selected): they would stay "
-                        "fixed among moving ones; 'close holes' takes them in");
+                        " vertices it encloses (hidden from the view when selected): they "
+                        "would stay fixed among moving ones; 'close holes' takes them in");
                 }
         synced_.notes = document_.versions.sets;
     }

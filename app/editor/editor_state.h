@@ -37,9 +37,9 @@ struct EditorState
     std::vector<std::string> notes;     //!< how the sets' overlaps are resolved, likewise
     //! Each region set's enclosed elements it leaves out (region_holes), by set name.
     std::vector<std::pair<std::string, std::size_t>> region_holes;
-    bool playing = false;               //!< refreshed likewise
-    bool energy_log_scale = false;      //!< the energy plot's vertical axis
-    bool show_energy = true;            //!< the energy plot window
+    bool playing = false;          //!< refreshed likewise
+    bool energy_log_scale = false; //!< the energy plot's vertical axis
+    bool show_energy = true;       //!< the energy plot window
     //! The heat map shown: each vertex coloured by its share of a term (nullopt: none).
     std::optional<EnergyTerm> heat_map;
     //! When a crashed session of this mesh left recovery files: when they were saved.

@@ -33,4 +33,20 @@ cat >"$tmp/view.json" <<'VIEW'
 VIEW
 "$meshfair" --offscreen "$tmp/torus.obj" --view "$tmp/view.json" --mode flat,wire \
     --size 640x400 --screenshot "$out/torus-wireframe.png"
-echo "wrote $out/editor.png and $out/torus-wireframe.png"
+# A region of a noisy bunny's flank smoothed live, with a centroid set, pins and anchors
+# of their own weight, the energy plot and the legend.
+cat >"$tmp/session.json" <<'SCRIPT'
+{"actions": [
+  {"noise": 0.3, "seed": 5}, {"tool": "rectangle"}, {"elements": "faces"},
+  {"drag": [[430, 250], [700, 520]]}, {"create_set": "region", "name": "flank"},
+  {"drag": [[520, 330], [560, 370]]}, {"create_set": "centroid"},
+  {"elements": "vertices"}, {"drag": [[600, 420], [625, 445]]}, {"create_set": "pin"},
+  {"drag": [[470, 430], [500, 460]]}, {"create_set": "anchor", "name": "stiff"},
+  {"select": "clear"},
+  {"solver": {"iterations_per_frame": 5, "centroid_mu": 4}}, {"play": 12},
+  {"tool": "brush"}, {"move": [330, 330]}
+]}
+SCRIPT
+"$meshfair" --offscreen "$root/assets/bunny.obj" --ui --size 1280x800 \
+    --script "$tmp/session.json" --screenshot "$out/editor-session.png"
+echo "wrote $out/editor.png, $out/editor-session.png and $out/torus-wireframe.png"
