@@ -109,14 +109,18 @@ std::vector<std::string> load_recent(const std::string& file)
     return recent;
 }
 
-bool save_recent(const std::string& file, const std::vector<std::string>& recent)
+namespace {
+
+// A settings file of lines, written atomically with its folder; false when it cannot be:
+// settings are a convenience, never a reason to fail.
+bool write_lines(const std::string& file, const std::vector<std::string>& lines)
 {
     if (file.empty())
         return false;
     std::string text;
-    for (const std::string& p : recent)
-        if (p.find('\n') == std::string::npos)
-            text += p + "\n";
+    for (const std::string& line : lines)
+        if (line.find('\n') == std::string::npos)
+            text += line + "\n";
     try
     {
         std::filesystem::create_directories(std::filesystem::path(file).parent_path());
@@ -127,6 +131,13 @@ bool save_recent(const std::string& file, const std::vector<std::string>& recent
     {
         return false;
     }
+}
+
+} // namespace
+
+bool save_recent(const std::string& file, const std::vector<std::string>& recent)
+{
+    return write_lines(file, recent);
 }
 
 std::string up_axes_path()
@@ -175,20 +186,7 @@ bool save_up_axis(const std::string& file, const std::string& mesh_path, UpAxis 
     for (std::string line; std::getline(in, line) && lines.size() < 1000;)
         if (line.size() > 2 && line[1] == '\t' && line.substr(2) != key)
             lines.push_back(line);
-    std::string text;
-    for (const std::string& l : lines)
-        if (l.find('\n') == std::string::npos)
-            text += l + "\n";
-    try
-    {
-        std::filesystem::create_directories(std::filesystem::path(file).parent_path());
-        io::write_file_atomically(file, text);
-        return true;
-    }
-    catch (const std::exception&)
-    {
-        return false;
-    }
+    return write_lines(file, lines);
 }
 
 UiOutput EditorUi::build(const Document& document, EditorState& state, const Camera& camera)

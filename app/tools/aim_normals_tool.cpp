@@ -16,17 +16,13 @@ bool AimNormalsTool::press(const ToolContext& context, Modifiers, ScreenPoint at
     set_.clear();
     if (!context.normal_handles)
         return false;
-    double best = kGrabRadiusPx * kGrabRadiusPx;
-    for (const GrabHandle& h : context.normal_handles())
+    const std::vector<GrabHandle> handles = context.normal_handles();
+    const Grabbed grabbed = nearest_handle(handles, camera_, view, at);
+    if (grabbed.handle != nullptr)
     {
-        const glm::dvec3 w = camera_.project(h.point, view.width, view.height);
-        const double d2 = (w.x - at.x) * (w.x - at.x) + (w.y - at.y) * (w.y - at.y);
-        if (w.z >= 0 && w.z <= 1 && d2 < best)
-        {
-            best = d2;
-            set_ = h.set;
-            direction_ = {h.direction[0], h.direction[1], h.direction[2]};
-        }
+        set_ = grabbed.handle->set;
+        const Vec3& d = grabbed.handle->direction;
+        direction_ = {d[0], d[1], d[2]};
     }
     last_ = pressed_at_ = at;
     return !set_.empty();

@@ -57,4 +57,13 @@ public:
 //! How far from a handle (in pixels) a press still grabs it.
 inline constexpr double kGrabRadiusPx = 12;
 
+//! The handle nearest to `at` on screen within kGrabRadiusPx, and its window depth.
+struct Grabbed
+{
+    const GrabHandle* handle = nullptr;
+    double depth = 0;
+};
+Grabbed nearest_handle(std::span<const GrabHandle> handles, const Camera& camera,
+                       const ViewRect& view, ScreenPoint at);
+
 } // namespace meshfair::app

@@ -12,20 +12,12 @@ bool MovePinsTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
     set_.clear();
     if (!context.pin_handles)
         return false;
-    double best = kGrabRadiusPx * kGrabRadiusPx;
-    for (const GrabHandle& h : context.pin_handles())
-    {
-        const glm::dvec3 w = camera_.project(h.point, view_.width, view_.height);
-        const double d2 = (w.x - at.x) * (w.x - at.x) + (w.y - at.y) * (w.y - at.y);
-        if (w.z >= 0 && w.z <= 1 && d2 < best)
-        {
-            best = d2;
-            set_ = h.set;
-            depth_ = w.z;
-        }
-    }
-    if (set_.empty())
+    const std::vector<GrabHandle> handles = context.pin_handles();
+    const Grabbed grabbed = nearest_handle(handles, camera_, view_, at);
+    if (grabbed.handle == nullptr)
         return false;
+    set_ = grabbed.handle->set;
+    depth_ = grabbed.depth;
     from_ = camera_.unproject({at.x, at.y, depth_}, view_.width, view_.height);
     pressed_at_ = at;
     return true;

@@ -31,6 +31,24 @@ ToolRegistry::ToolRegistry()
     slot(ToolKind::AimNormals) = std::make_unique<AimNormalsTool>();
 }
 
+Grabbed nearest_handle(std::span<const GrabHandle> handles, const Camera& camera,
+                       const ViewRect& view, ScreenPoint at)
+{
+    Grabbed grabbed;
+    double best = kGrabRadiusPx * kGrabRadiusPx;
+    for (const GrabHandle& h : handles)
+    {
+        const glm::dvec3 w = camera.project(h.point, view.width, view.height);
+        const double d2 = (w.x - at.x) * (w.x - at.x) + (w.y - at.y) * (w.y - at.y);
+        if (w.z >= 0 && w.z <= 1 && d2 < best)
+        {
+            best = d2;
+            grabbed = {&h, w.z};
+        }
+    }
+    return grabbed;
+}
+
 InteractiveTool* ToolRegistry::find(ToolKind kind) const
 {
     const auto k = static_cast<size_t>(kind);

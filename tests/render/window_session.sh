@@ -16,12 +16,7 @@ fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
 name=session
 . "$(dirname "$0")/window_support.sh"
-rm -rf "$work"
-mkdir -p "$work"
-export GALLIUM_DRIVER=llvmpipe
-export XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state"
-export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
-
+fresh_work_dir "$work"
 "$cli" noise "$bunny" -o "$work/scan.obj" --sigma 0.3 --seed 4 >/dev/null
 cp "$work/scan.obj" "$work/base.obj"
 start_editor "$meshfair" "$work/scan.obj" "$work/editor.log" "$work/widgets.tsv"

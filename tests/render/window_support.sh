@@ -37,6 +37,16 @@ wait_exit() {
     fi
 }
 
+# fresh_work_dir DIR: an empty work folder, holding the editor's settings and recovery files
+# too (none of the user's), and the environment of a window test.
+fresh_work_dir() {
+    rm -rf "$1"
+    mkdir -p "$1"
+    export GALLIUM_DRIVER=llvmpipe
+    export XDG_CONFIG_HOME="$1/config" XDG_STATE_HOME="$1/state"
+    export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
+}
+
 # The editor driven as a person drives it (xdotool), with its --trace on stdout in $log and
 # its --widget-map in $map. start_editor MESHFAIR MESH LOG MAP [ARGS...] sets $pid and $win.
 start_editor() {

@@ -19,12 +19,7 @@ fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
 name=tools
 . "$(dirname "$0")/window_support.sh"
-rm -rf "$work"
-mkdir -p "$work"
-export GALLIUM_DRIVER=llvmpipe
-export XDG_CONFIG_HOME="$work/config" XDG_STATE_HOME="$work/state"
-export ASAN_OPTIONS="${ASAN_OPTIONS:-}:detect_leaks=0"
-
+fresh_work_dir "$work"
 "$cli" noise "$bunny" -o "$work/noisy.obj" --sigma 0.3 --seed 2 >/dev/null
 cp "$work/noisy.obj" "$work/loaded.obj"
 start_editor "$meshfair" "$work/noisy.obj" "$work/editor.log" "$work/widgets.tsv"
