@@ -93,7 +93,7 @@ struct GlRenderer::Gl
     GLuint triangle_face_texture = 0, face_area_texture = 0;
     GLuint face_selected = 0, face_selected_texture = 0; // one byte per face
     GLuint selected_points = 0;                          // indices of the selected vertices
-    GLuint vertex_selected = 0;                          // one float per vertex (the tint)
+    GLuint vertex_selected = 0;                          // one byte per vertex (the tint)
     GLuint glyph_vao = 0, glyph_points = 0;              // the glyphs' points, all groups
     GLsizei selected_point_count = 0;
     GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
@@ -130,7 +130,8 @@ struct GlRenderer::Gl
         glBindBuffer(GL_ARRAY_BUFFER, colors);
         glVertexAttribPointer(kColor, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
         glBindBuffer(GL_ARRAY_BUFFER, vertex_selected);
-        glVertexAttribPointer(kSelected, 1, GL_FLOAT, GL_FALSE, 0, nullptr);
+        // The flags as they are, 0 or 1, read as floats (not normalized: 1 is 1.0).
+        glVertexAttribPointer(kSelected, 1, GL_UNSIGNED_BYTE, GL_FALSE, 0, nullptr);
         glEnableVertexAttribArray(kSelected);
         glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, triangles);
         glBindVertexArray(lines_vao);
@@ -241,8 +242,8 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     upload<std::uint8_t>(GL_TEXTURE_BUFFER, gl_->face_selected,
                          std::vector<std::uint8_t>(static_cast<size_t>(face_count_), 0), n);
     gl_->selected_point_count = 0;
-    upload<float>(GL_ARRAY_BUFFER, gl_->vertex_selected,
-                  std::vector<float>(static_cast<size_t>(vertex_count_), 0.0f), n);
+    upload<std::uint8_t>(GL_ARRAY_BUFFER, gl_->vertex_selected,
+                         std::vector<std::uint8_t>(static_cast<size_t>(vertex_count_), 0), n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data.edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data.boundary_edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data.singular_edges, n);
@@ -316,12 +317,8 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
     // (its length changes with the selection, which changes far less often than frames).
     glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_selected);
     glBufferSubData(GL_TEXTURE_BUFFER, 0, static_cast<GLsizeiptr>(faces.size()), faces.data());
-    std::vector<float> tint(vertices.size());
-    for (size_t i = 0; i < vertices.size(); ++i)
-        tint[i] = vertices[i] ? 1.0f : 0.0f;
     glBindBuffer(GL_ARRAY_BUFFER, gl_->vertex_selected);
-    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(tint.size() * sizeof(float)),
-                    tint.data());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(vertices.size()), vertices.data());
     std::vector<std::uint32_t> selected;
     for (size_t i = 0; i < vertices.size(); ++i)
         if (vertices[i])
