@@ -99,12 +99,12 @@ key() {
 # a widget scrolled out of the side panel is scrolled to with the wheel, as a person does).
 widget_at() {
     local label=$1 at="" wheel
-    for attempt in $(seq 1 40); do
+    for attempt in $(seq 1 50); do
         at=$(awk -F'\t' -v n="$label" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map")
         [ -n "$at" ] && break
-        if [ "$attempt" -gt 4 ]; then
-            wheel=5 # down, then up
-            [ "$attempt" -gt 22 ] && wheel=4
+        if [ "$attempt" -gt 12 ]; then # not drawn yet, or scrolled out of the panel
+            wheel=5                      # down, then up
+            [ "$attempt" -gt 31 ] && wheel=4
             xdotool mousemove --window "$win" 830 400 click "$wheel"
         fi
         sleep 0.1
