@@ -11,9 +11,8 @@
 #include <random>
 
 #include "app/editor/editor_session.h"
-#include "app/render/gl_renderer.h"
+#include "app/render/recording_renderer.h"
 #include "tests/helpers.h"
-#include "tests/render/render_support.h"
 
 using namespace meshfair;
 using namespace meshfair::app;
@@ -83,8 +82,7 @@ TEST_SUITE("History")
         for (const unsigned seed : {1u, 2u, 3u, 4u})
         {
             CAPTURE(seed);
-            test::offscreen_context(kWidth, kHeight);
-            GlRenderer renderer;
+            RecordingRenderer renderer;
             Mesh bunny_like = test::icosphere(3);
             EditorSession s(make_document(std::move(bunny_like), "sphere.obj"), renderer);
             s.state().offscreen = true;

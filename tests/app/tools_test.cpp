@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-// The selection tools through an EditorSession drawing with GlRenderer on OSMesa: which
+// The selection tools through an EditorSession drawing with a RecordingRenderer (picking and visibility by a software depth test, no GL): which
 // elements a click, a rectangle, a lasso and a brush select from a known camera. The
 // expected sets are worked out in world coordinates, not from the screen maths.
 #include "app/editor/editor_session.h"
@@ -10,9 +10,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "app/render/gl_renderer.h"
+#include "app/render/recording_renderer.h"
 #include "tests/helpers.h"
-#include "tests/render/render_support.h"
 
 using namespace meshfair;
 using namespace meshfair::app;
@@ -25,11 +24,10 @@ constexpr int kN = 10; // a 10 x 10 grid of unit quads, vertices at integer (x, 
 // A session on a grid seen from the front, orthographic, the whole framebuffer its view.
 struct GridSession
 {
-    GlRenderer renderer;
+    RecordingRenderer renderer;
     EditorSession session;
     explicit GridSession(Mesh mesh = test::open_grid(kN, kN))
-        : renderer((test::offscreen_context(kWidth, kHeight), GlRenderer())),
-          session(make_document(std::move(mesh), "grid.obj"), renderer)
+        : session(make_document(std::move(mesh), "grid.obj"), renderer)
     {
         session.set_view_rect(ViewRect::whole(kWidth, kHeight));
         session.state().offscreen = true;
