@@ -178,6 +178,19 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 break;
             case Kind::ClickWidget:
             {
+                // A widget scrolled out of the side panel is scrolled to with the wheel over
+                // the panel, down then up, as a person does.
+                const ViewRect& v = session.view_rect();
+                const ScreenPoint panel{v.framebuffer_width - 170.0, v.framebuffer_height / 2.0, 0};
+                for (int attempt = 0;
+                     attempt < 40 && frame.has_interface() && !frame.ui().widget(a.text); ++attempt)
+                {
+                    InputEvent wheel = input_event(InputEvent::Type::Scroll, panel);
+                    wheel.amount = attempt < 20 ? -3 : 3;
+                    frame.input().push(input_event(InputEvent::Type::MouseMove, panel));
+                    frame.input().push(wheel);
+                    run_until_taken(frame, host);
+                }
                 const std::optional<WidgetRect> w = frame.ui().widget(a.text);
                 if (!w)
                 {

@@ -14,7 +14,9 @@
 #include "app/editor/interface_context.h"
 #include "app/editor/key_map.h"
 #include "app/editor/script.h"
+#include "app/render/image.h"
 #include "app/render/recording_renderer.h"
+#include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
 #include "tests/helpers.h"
@@ -399,5 +401,49 @@ TEST_SUITE("Editor sets")
         CHECK(e.session.state().region_holes.empty());
         e.key("ctrl+z");
         CHECK(e.doc().sets[0].vertices.size() == 48);
+    }
+}
+
+TEST_SUITE("Editor scripts")
+{
+    // A script's host without GL: the same frames as the window's, through the Editor above.
+    struct TestHost final : ScriptHost
+    {
+        Editor& e;
+        explicit TestHost(Editor& editor) : e(editor) {}
+        void run_frame() override { e.run(); }
+        EditorFrame& frame_driver() override { return e.frame; }
+        void screenshot(const std::string& path) override
+        {
+            write_png(e.renderer.read_pixels(kWidth, kHeight), path);
+        }
+    };
+
+    TEST_CASE("a script's keys, drags and widget clicks take a person's path")
+    {
+        const fs::path mesh = bunny_copy();
+        Editor e(mesh);
+        TestHost host(e);
+        const Script script = parse_script(R"({"actions": [
+            {"key": "r"}, {"drag": [[300, 250], [420, 330]]},
+            {"click_widget": "Grow"}, {"key": "shift+r"},
+            {"click_widget": "sets/region 1/rename"}, {"key": "ctrl+a"}, {"type": "cheek"},
+            {"key": "enter"},
+            {"solver": {"steps_per_run": 7}}, {"click_widget": "Play"}, {"frames": 3},
+            {"key": "ctrl+s"}]})",
+                                           "person.json");
+        play_script(script, e.session, host);
+        while (e.session.playing())
+            e.session.take_frame();
+        REQUIRE(e.doc().sets.size() == 1);
+        CHECK(e.doc().sets[0].name == "cheek");
+        CHECK(e.session.tool() == ToolKind::Rectangle);
+        CHECK(e.doc().steps_from_base == 7);
+        CHECK(e.session.history().undo_label() == "solve 7 steps");
+        // A widget that is not on screen names what is.
+        const Script missing = parse_script(R"([{"click_widget": "Launch"}])", "m.json");
+        CHECK_THROWS_WITH_AS(play_script(missing, e.session, host),
+                             doctest::Contains("'m.json': actions[0]: no widget 'Launch'"),
+                             InvalidInputError);
     }
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-// The selection tools through an EditorSession drawing with a RecordingRenderer (picking and visibility by a software depth test, no GL): which
-// elements a click, a rectangle, a lasso and a brush select from a known camera. The
-// expected sets are worked out in world coordinates, not from the screen maths.
+// The selection tools through an EditorSession drawing with a RecordingRenderer (picking and
+// visibility by a software depth test, no GL): which elements a click, a rectangle, a lasso and a
+// brush select from a known camera. The expected sets are worked out in world coordinates, not from
+// the screen maths.
 #include "app/editor/editor_session.h"
 
 #include <doctest/doctest.h>
