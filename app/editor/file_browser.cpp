@@ -67,6 +67,7 @@ void FileBrowser::open(Mode mode, const fs::path& start, const std::string& file
     listed_.clear(); // read the folder afresh each time the dialog opens
     open_ = true;
     just_opened_ = true;
+    focus_name_ = true;
 }
 
 std::optional<std::string> FileBrowser::draw(WidgetMap* widgets)
@@ -128,11 +129,19 @@ std::optional<std::string> FileBrowser::draw(WidgetMap* widgets)
     std::array<char, 512> name{};
     std::strncpy(name.data(), file_name_.c_str(), name.size() - 1);
     ImGui::SetNextItemWidth(-160);
-    if (ImGui::IsWindowAppearing())
-        ImGui::SetKeyboardFocusHere(); // the name field takes the keys at once
+    // The name field takes the keys as soon as the dialog shows (asked again until it has
+    // them: a popup's first frame may be hidden), its text selected, so that typing at once
+    // replaces it as in any file dialog.
+    if (focus_name_ && !ImGui::IsAnyItemActive())
+        ImGui::SetKeyboardFocusHere();
     const bool enter =
-        ImGui::InputText("##name", name.data(), name.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+        ImGui::InputText("##name", name.data(), name.size(),
+                         ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+    if (ImGui::IsItemActive())
+        focus_name_ = false;
     track("name");
+    if (ImGui::IsItemActive())
+        track("name#active");
     file_name_ = name.data();
     ImGui::SameLine();
     if ((ImGui::Button(mode_ == Mode::Open ? "Open" : "Save") || enter) && !file_name_.empty())

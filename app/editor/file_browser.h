@@ -36,7 +36,8 @@ public:
               Files files = Files::Meshes, std::string title = {});
     Files files() const { return files_; }
     bool is_open() const { return open_; }
-    //! Where each widget was drawn, by name ("dialog/name", "dialog/OK", "dialog/Cancel").
+    //! \brief Where each widget was drawn, by name ("dialog/name", "dialog/OK", "dialog/Cancel";
+    //! "dialog/name#active" while the name field has the keys).
     std::optional<std::string> draw(WidgetMap* widgets = nullptr);
     const std::string& title() const { return title_; }
 
@@ -51,6 +52,7 @@ private:
     Files files_ = Files::Meshes;
     bool open_ = false;
     bool just_opened_ = false;
+    bool focus_name_ = false; // the name field is to take the keys
     std::filesystem::path directory_;
     std::filesystem::path listed_; // the directory `entries_` lists
     std::vector<std::filesystem::directory_entry> entries_;

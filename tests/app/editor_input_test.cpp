@@ -208,6 +208,12 @@ TEST_SUITE("Editor input")
         fs::remove(saved);
         e.key("ctrl+s");
         CHECK(fs::exists(saved));
+        // Typing at once, without Ctrl+A: the name shown is selected, the typing replaces it.
+        e.key("ctrl+shift+s");
+        e.type("at-once.obj");
+        e.key("enter");
+        CHECK(fs::exists(mesh.parent_path() / "at-once.obj"));
+        CHECK(e.doc().path == (mesh.parent_path() / "at-once.obj").string());
     }
 
     TEST_CASE("M and D over the view: the pins follow the cursor, the normals turn, one step each")

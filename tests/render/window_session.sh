@@ -78,7 +78,7 @@ key ctrl+s
 wait_line "command save: ok"
 click_widget "File"
 click_widget "File/Export recipe..."
-widget_at "dialog/name" >/dev/null
+wait_dialog
 key ctrl+a
 type_text "session-recipe.json"
 key Return
@@ -87,21 +87,21 @@ grep -q reproduces "$log" || true
 
 # Reopen the mesh as it was read (a copy of the base), import the recipe, export it again.
 key ctrl+o
-widget_at "dialog/name" >/dev/null
+wait_dialog
 key ctrl+a
 type_text "base.obj"
 key Return
 wait_line "command open: ok"
 click_widget "File"
 click_widget "File/Import recipe..."
-widget_at "dialog/name" >/dev/null
+wait_dialog
 key ctrl+a
 type_text "session-recipe.json"
 key Return
 wait_line "command import recipe: ok"
 click_widget "File"
 click_widget "File/Export recipe..."
-widget_at "dialog/name" >/dev/null
+wait_dialog
 key ctrl+a
 type_text "reimported.json"
 key Return
@@ -118,6 +118,7 @@ cmp -s "$work/base.obj" "$work/scan.obj" && fail "the saved file is the base: no
 steps=$(grep -o '"iterations": [0-9]*' "$work/session-recipe.json" | head -1 | grep -o '[0-9]*$')
 [ "$steps" -gt 0 ] || fail "the exported recipe runs no step"
 # The imported recipe gives the same sets and settings (its steps: none since the reopen).
+[ -f "$work/reimported.json" ] || fail "no reimported.json written: $(ls "$work")"
 diff <(grep -v '"iterations"' "$work/session-recipe.json") \
     <(grep -v '"iterations"' "$work/reimported.json") >/dev/null ||
     fail "the imported recipe exports other sets or settings"

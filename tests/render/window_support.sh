@@ -142,6 +142,11 @@ drag() {
     sleep 0.3
 }
 
+# wait_dialog: until a file dialog shows with its name field taking the keys.
+wait_dialog() {
+    widget_at "dialog/name#active" >/dev/null
+}
+
 # type_text TEXT: typed fast, as a person in a hurry types.
 type_text() {
     xdotool type --delay 8 "$1"

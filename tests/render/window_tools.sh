@@ -96,7 +96,7 @@ total=$(grep -c '^v ' "$work/loaded.obj")
 # --- 3. Menus and file dialogs with typed names.
 click_widget "File"
 click_widget "File/Export recipe..."
-widget_at "dialog/name" >/dev/null
+wait_dialog
 key ctrl+a
 type_text "exported-by-hand.json"
 key Return
@@ -106,6 +106,7 @@ wait_line "command export recipe: ok"
     -e '^editor.log$' -e '^widgets.tsv$' -e '^config$' -e '^state$')" ] ||
     fail "files under other names: $(ls "$work")"
 key ctrl+shift+s
+wait_dialog
 key ctrl+a
 type_text "renamed-scan.obj"
 key Return
