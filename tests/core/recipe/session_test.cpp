@@ -12,19 +12,15 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
-#include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
+#include "tests/session_checks.h"
 
 using namespace meshfair;
 
 namespace {
 
-// A named recipe on a noisy mesh, for loops over configurations.
-struct Case
-{
-    const char* name;
-    Recipe recipe;
-};
+using test::noisy;
+using test::RecipeCase;
 
 // The list without repeats, in order (small meshes make some picks coincide).
 std::vector<Index> distinct(std::initializer_list<Index> picks)
@@ -37,10 +33,10 @@ std::vector<Index> distinct(std::initializer_list<Index> picks)
 }
 
 // Every term of the paper on a mesh, alone and combined (normals held fixed).
-std::vector<Case> configurations(const Mesh& m)
+std::vector<RecipeCase> configurations(const Mesh& m)
 {
     const Index nv = m.vertex_count(), nf = m.face_count();
-    std::vector<Case> cases;
+    std::vector<RecipeCase> cases;
     Recipe base;
     base.iterations = 20;
     cases.push_back({"edge", base});
@@ -98,12 +94,6 @@ std::vector<Case> configurations(const Mesh& m)
     return cases;
 }
 
-Mesh noisy(Mesh m, double sigma = 0.05, unsigned seed = 17)
-{
-    test::perturb(m, sigma, seed);
-    return m;
-}
-
 bool same_bits(const Mesh& a, const Mesh& b, Index v)
 {
     return std::memcmp(&a.positions[3 * v], &b.positions[3 * v], 3 * sizeof(Scalar)) == 0;
@@ -121,55 +111,7 @@ TEST_SUITE("Session")
         {
             const Mesh m = noisy(clean);
             const Topology t = build_topology(m);
-            for (Case c : configurations(m))
-            {
-                CAPTURE(c.name);
-                Session s(m, t, c.recipe);
-                Mesh x = m;
-                s.apply_hard_targets(x.positions);
-                s.step(x.positions); // away from the targets: every term is non-zero
-                s.step(x.positions);
-                const TermEnergies e = s.energy(x.positions);
-                std::vector<Scalar> share(static_cast<size_t>(m.vertex_count()));
-                const auto sum = [&](EnergyTerm term) {
-                    s.vertex_energy(x.positions, term, share);
-                    for (const Scalar v : share)
-                        REQUIRE(v >= 0);
-                    return std::accumulate(share.begin(), share.end(), Scalar(0));
-                };
-                const auto close = [](Scalar a, Scalar b) {
-                    return std::abs(a - b) <= 1e-12 * std::max<Scalar>(1, std::abs(b));
-                };
-                CHECK(close(sum(EnergyTerm::Edge), e.edge));
-                CHECK(close(sum(EnergyTerm::Soft), e.soft));
-                CHECK(close(sum(EnergyTerm::Centroid), e.centroid));
-                CHECK(close(sum(EnergyTerm::Normal), e.normal));
-                CHECK(close(sum(EnergyTerm::Total), e.edge + e.soft + e.centroid + e.normal));
-            }
-        }
-    }
-
-    TEST_CASE("energy never increases with lambda = 0.5 nor with the line search")
-    {
-        for (const Mesh& clean : {test::icosphere(2), test::mixed_polygons(),
-                                  test::quad_torus(10, 6, 2, 0.6), test::nonmanifold_fan()})
-        {
-            const Mesh m = noisy(clean);
-            const Topology t = build_topology(m);
-            for (Case c : configurations(m))
-                for (const bool optimal : {false, true})
-                {
-                    if (std::string(c.name) == "centroid exact" && clean.face_size(0) == 4)
-                        continue; // quads sit on the exact denominator's bound (tested apart)
-                    CAPTURE(c.name);
-                    CAPTURE(optimal);
-                    c.recipe.optimal_step = optimal;
-                    Mesh x = m;
-                    const SmoothResult r = smooth(x, t, c.recipe);
-                    for (size_t k = 1; k < r.energies.size(); ++k)
-                        CHECK(r.energies[k].total() <=
-                              r.energies[k - 1].total() * (1 + 1e-14) + 1e-300);
-                }
+            test::check_energy_never_increases(m, t, configurations(m), false);
         }
     }
 
@@ -177,7 +119,7 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::icosphere(2), 0.05, 2);
         const Topology t = build_topology(m);
-        for (Case c : configurations(m))
+        for (RecipeCase c : configurations(m))
         {
             CAPTURE(c.name);
             c.recipe.iterations = 1;
@@ -193,7 +135,7 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
-        for (const Case& c : configurations(m))
+        for (const RecipeCase& c : configurations(m))
         {
             CAPTURE(c.name);
             Mesh x = m;
@@ -299,8 +241,7 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::mixed_polygons(), 0.1);
         const Topology t = build_topology(m);
-        const Index nv = m.vertex_count();
-        std::vector<Case> cases;
+        std::vector<RecipeCase> cases;
         Recipe base;
         base.iterations = 20000;
         base.hard = HardVertices{{0, 3, 8, 11}, {}};
@@ -324,29 +265,14 @@ TEST_SUITE("Session")
         all.soft = SoftVertices{{false, {3, 8, 12}}, 0.5, {}};
         all.centroid = CentroidConstraints{{false, {1, 5}}, 2.0, {}, CentroidDenominator::Paper};
         cases.push_back({"combined", all});
-        for (Case c : cases)
-            for (const bool optimal : {false, true})
-            {
-                CAPTURE(c.name);
-                CAPTURE(optimal);
-                c.recipe.optimal_step = optimal;
-                Mesh x = m;
-                const Session session(x, t, c.recipe);
-                const std::vector<Scalar> expected =
-                    test::direct_minimizer(m, t, c.recipe, m.positions,
-                                           std::vector<Index>(session.free_vertices().begin(),
-                                                              session.free_vertices().end()));
-                smooth(x, t, c.recipe);
-                for (Index k = 0; k < 3 * nv; ++k)
-                    CHECK(x.positions[k] == doctest::Approx(expected[k]).scale(1).epsilon(1e-9));
-            }
+        test::check_reaches_direct_minimizer(m, t, cases);
     }
 
     TEST_CASE("precompute once + k steps equals k one-shot runs, bit for bit")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
-        for (const Case& c : configurations(m))
+        for (const RecipeCase& c : configurations(m))
         {
             CAPTURE(c.name);
             Mesh a = m;
@@ -367,7 +293,7 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
-        for (const Case& c : configurations(m))
+        for (const RecipeCase& c : configurations(m))
         {
             CAPTURE(c.name);
             Mesh a = m;
@@ -397,13 +323,13 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology whole = build_topology(m);
-        std::vector<Case> cases = configurations(m);
+        std::vector<RecipeCase> cases = configurations(m);
         Recipe joint;
         joint.iterations = 5;
         joint.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Initial, {}};
         joint.joint = Joint{0.5};
         cases.push_back({"normal, joint mode", joint});
-        for (const Case& c : cases)
+        for (const RecipeCase& c : cases)
         {
             CAPTURE(c.name);
             const TopologyParts parts = required_topology(c.recipe);
@@ -519,7 +445,7 @@ TEST_SUITE("Session")
             io::write_mesh(bunny, path, {io::Encoding::Ascii});
             const Mesh m = noisy(io::read_mesh(path), 0.002, 9);
             const Topology t = build_topology(m);
-            for (Case c : configurations(m))
+            for (RecipeCase c : configurations(m))
             {
                 CAPTURE(c.name);
                 c.recipe.iterations = 3;

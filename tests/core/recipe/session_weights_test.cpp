@@ -12,18 +12,15 @@
 
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
-#include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
+#include "tests/session_checks.h"
 
 using namespace meshfair;
 
 namespace {
 
-struct Case
-{
-    const char* name;
-    Recipe recipe;
-};
+using test::noisy;
+using test::RecipeCase;
 
 // Weights in [0, 3], about one in eight of them 0.
 std::vector<Scalar> random_weights(size_t count, unsigned seed)
@@ -46,10 +43,10 @@ std::vector<Index> every(Index n, Index stride, Index first = 0)
 
 // Every weighted term alone and combined, with random weights (normals held fixed but
 // for "smoothed", whose soft normals are weighted too).
-std::vector<Case> weighted_configurations(const Mesh& m)
+std::vector<RecipeCase> weighted_configurations(const Mesh& m)
 {
     const Index nv = m.vertex_count(), nf = m.face_count();
-    std::vector<Case> cases;
+    std::vector<RecipeCase> cases;
     Recipe base;
     base.iterations = 20;
 
@@ -101,12 +98,6 @@ std::vector<Case> weighted_configurations(const Mesh& m)
     return cases;
 }
 
-Mesh noisy(Mesh m, double sigma = 0.05, unsigned seed = 17)
-{
-    test::perturb(m, sigma, seed);
-    return m;
-}
-
 // Sets with a weight per element, member by member (GCC 12 warns falsely on nested
 // aggregate temporaries).
 SoftVertices soft_set(std::vector<Index> vertices, Scalar mu, std::vector<Scalar> weights)
@@ -155,21 +146,7 @@ TEST_SUITE("Session")
         {
             const Mesh m = noisy(clean);
             const Topology t = build_topology(m);
-            for (Case c : weighted_configurations(m))
-                for (const bool optimal : {false, true})
-                {
-                    if (std::string(c.name) == "centroid exact" && clean.face_size(0) == 4)
-                        continue; // quads sit on the exact denominator's bound
-                    CAPTURE(c.name);
-                    CAPTURE(optimal);
-                    c.recipe.optimal_step = optimal;
-                    Mesh x = m;
-                    const SmoothResult r = smooth(x, t, c.recipe);
-                    for (size_t k = 1; k < r.energies.size(); ++k)
-                        CHECK(r.energies[k].total() <=
-                              r.energies[k - 1].total() * (1 + 1e-14) + 1e-300);
-                    CHECK(r.energies.back().total() < r.energies.front().total());
-                }
+            test::check_energy_never_increases(m, t, weighted_configurations(m), true);
         }
     }
 
@@ -181,7 +158,7 @@ TEST_SUITE("Session")
         Recipe base;
         base.iterations = 20000;
         base.hard = HardVertices{{0, 11}, {}};
-        std::vector<Case> cases;
+        std::vector<RecipeCase> cases;
         Recipe soft = base;
         soft.soft = SoftVertices{{false, every(nv, 1, 1)}, 0.5, {}};
         soft.soft->vertices.indices.erase(soft.soft->vertices.indices.begin() + 10);
@@ -205,28 +182,14 @@ TEST_SUITE("Session")
         all.centroid = CentroidConstraints{{false, {1, 5}}, 2.0, {}, CentroidDenominator::Paper};
         all.centroid->weights = {0.25, 3.0};
         cases.push_back({"combined", all});
-        for (Case c : cases)
-            for (const bool optimal : {false, true})
-            {
-                CAPTURE(c.name);
-                CAPTURE(optimal);
-                c.recipe.optimal_step = optimal;
-                const Session session(m, t, c.recipe);
-                const std::vector<Scalar> expected =
-                    test::direct_minimizer(m, t, c.recipe, m.positions,
-                                           std::vector<Index>(session.free_vertices().begin(),
-                                                              session.free_vertices().end()));
-                const std::vector<Scalar> x = smoothed_positions(m, t, c.recipe);
-                for (Index k = 0; k < 3 * nv; ++k)
-                    CHECK(x[k] == doctest::Approx(expected[k]).scale(1).epsilon(1e-9));
-            }
+        test::check_reaches_direct_minimizer(m, t, cases);
     }
 
     TEST_CASE("with weights the fused step and the general step give the same bits")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
-        for (const Case& c : weighted_configurations(m))
+        for (const RecipeCase& c : weighted_configurations(m))
         {
             CAPTURE(c.name);
             Mesh a = m;
@@ -244,7 +207,7 @@ TEST_SUITE("Session")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
-        for (Case c : weighted_configurations(m))
+        for (RecipeCase c : weighted_configurations(m))
         {
             CAPTURE(c.name);
             Recipe ones = c.recipe, none = c.recipe;
