@@ -41,7 +41,7 @@ void SolverController::clear()
     run_open_ = false;
     run_before_.reset();
     solver_.clear();
-    restarted_.reset();
+    running_.reset();
     seen_.reset();
     problems_for_.reset();
 }
@@ -51,7 +51,7 @@ void SolverController::start_from_base()
     document_.steps_from_base = 0;
     document_.reproducible = true;
     document_.shape_recipe.reset();
-    restarted_.reset(); // the next update restarts from the base
+    running_.reset(); // the next update restarts from the base
     seen_.reset();
 }
 
@@ -73,23 +73,21 @@ void SolverController::restart_if_needed()
     };
     if (seen_ && same(*seen_))
         return;
-    seen_ = v;
+    const std::optional<DocumentVersions> before = std::exchange(seen_, v);
     if (!problems().empty())
     {
         solver_.clear();
-        restarted_.reset(); // a valid recipe restarts from scratch
+        running_.reset(); // a valid recipe restarts from scratch
         return;
     }
     const std::vector<ConstraintSet>& sets = document_.sets;
     const SolverSettings& settings = document_.solver;
     // An edit of the shape (undo, reset, noise, apply) starts the run again from it.
-    const bool shape_edited = !restarted_ || restarted_->versions.positions != v.positions ||
-                              restarted_->versions.base != v.base;
-    if (!shape_edited && same_run(sets, settings, restarted_->sets, restarted_->solver, false))
-    {
-        // Names, colours, visibility or the pace changed: nothing for the solver.
-    }
-    else if (!shape_edited && same_run(sets, settings, restarted_->sets, restarted_->solver, true))
+    const bool shape_edited =
+        !running_ || !before || before->positions != v.positions || before->base != v.base;
+    if (!shape_edited && same_run(sets, settings, running_->sets, running_->solver, false))
+        return; // names, colours, visibility or the pace changed: nothing for the solver
+    if (!shape_edited && same_run(sets, settings, running_->sets, running_->solver, true))
     {
         // Only the pins moved: new right-hand sides, the run goes on.
         const Recipe recipe =
@@ -120,7 +118,6 @@ void SolverController::restart_if_needed()
         if (run_open_)
             solver_.resume();
     }
-    restarted_ = RunInputs{sets, settings, v};
     running_ = std::make_shared<const ShapeRecipe>(ShapeRecipe{sets, settings});
 }
 
@@ -139,8 +136,6 @@ bool SolverController::update()
         // The run's own positions: no restart for them.
         if (seen_)
             seen_->positions = document_.versions.positions;
-        if (restarted_)
-            restarted_->versions.positions = document_.versions.positions;
         fresh = true;
     }
     if (run_open_ && !solver_.status().playing && solver_.status().ready)

@@ -73,18 +73,11 @@ private:
     LiveSolver solver_;
     std::vector<std::string> problems_;
     std::optional<DocumentVersions> problems_for_;
-    //! The sets and settings of the solver's last restart, and the versions it saw.
-    struct RunInputs
-    {
-        std::vector<ConstraintSet> sets;
-        SolverSettings solver;
-        DocumentVersions versions;
-    };
-    std::optional<RunInputs> restarted_;
-    std::shared_ptr<const ShapeRecipe> running_; // the recipe of the solver's run
-    std::optional<DocumentVersions> seen_;       // the versions of the last restart decision
-    int steps_at_restart_ = 0;                   // steps_from_base when the solver last restarted
-    bool run_open_ = false;                      // play() began a run not yet recorded
+    //! The sets and settings the solver runs (null: no run), as the shapes it makes record.
+    std::shared_ptr<const ShapeRecipe> running_;
+    std::optional<DocumentVersions> seen_; // the versions of the last restart decision
+    int steps_at_restart_ = 0;             // steps_from_base when the solver last restarted
+    bool run_open_ = false;                // play() began a run not yet recorded
     std::optional<EditState> run_before_;
     DisplayGeometry display_;      // the solver's newest display geometry
     std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown
