@@ -26,21 +26,21 @@ CommandSpec spec_of(const Command& command)
             else if constexpr (std::is_same_v<T, cmd::SelectSet>)
                 return {"select set", kSelection, kSelection};
             else if constexpr (std::is_same_v<T, cmd::AddToSet>)
-                return {"add to set", kSets, kSets};
+                return {"add to set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::RemoveFromSet>)
-                return {"remove from set", kSets, kSets};
+                return {"remove from set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::CloseHoles>)
-                return {"close holes", kSets, kSets};
+                return {"close holes", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::EnableSet>)
-                return {c.enabled ? "enable set" : "disable set", kSets, kSets};
+                return {c.enabled ? "enable set" : "disable set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::SetSetWeight>)
                 return {"set weight", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::CreateSet>)
-                return {"new set", kSets, kSets};
+                return {"new set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::DeleteSet>)
-                return {"delete set", kSets, kSets};
+                return {"delete set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::RenameSet>)
-                return {"rename set", kSets, kSets};
+                return {"rename set", kSets, kSets | kSetMembers};
             else if constexpr (std::is_same_v<T, cmd::SetColor>)
                 return {"set colour", kSets, kSets};
             else if constexpr (std::is_same_v<T, cmd::ShowSet>)
@@ -52,7 +52,7 @@ CommandSpec spec_of(const Command& command)
             else if constexpr (std::is_same_v<T, cmd::SetSolverSettings>)
                 return {"solver settings", kSettings, kSettings};
             else if constexpr (std::is_same_v<T, cmd::ImportRecipe>)
-                return {"import recipe", kSets | kSettings, kSets | kSettings, true};
+                return {"import recipe", kSets | kSettings, kSets | kSettings | kSetMembers, true};
             else if constexpr (std::is_same_v<T, cmd::Step>)
                 // The solver bumps the positions it publishes.
                 return {"step", kPositions, 0, true};

@@ -346,7 +346,7 @@ bool CommandExecutor::operator()(const cmd::Recover&) const
     const RecoveryInfo info = s.autosaver_.recover(d);
     s.history_.clear();
     s.solver_.clear();
-    d.versions.bump(kSelection | kSets | kSettings | kPositions | kBasePositions);
+    d.versions.bump(kSelection | kSets | kSetMembers | kSettings | kPositions | kBasePositions);
     st.recovery_saved_at.reset();
     say("recovered the session saved at " + info.saved_at);
     return true;
@@ -441,7 +441,8 @@ void EditorSession::close_step()
 
 void EditorSession::after_history(unsigned parts)
 {
-    document_.versions.bump(parts);
+    // The sets restored may hold other elements: their membership counts as changed.
+    document_.versions.bump((parts & kSets) ? parts | kSetMembers : parts);
     if (parts & (kPositions | kBasePositions))
         document_.modified = true;
 }

@@ -24,9 +24,10 @@ namespace meshfair::app {
 struct DocumentVersions
 {
     std::uint64_t selection = 0, sets = 0, settings = 0, positions = 0, base = 0;
+    std::uint64_t set_members = 0; //!< bumped with sets when their elements change
     //! Bumps the parts of `parts` (EditPart flags of history.h).
     void bump(unsigned parts);
-    //! Every change so far (the autosave's "something changed").
+    //! Every change so far (the autosave's "something changed"; members change with sets).
     std::uint64_t total() const { return selection + sets + settings + positions + base; }
 };
 

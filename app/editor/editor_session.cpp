@@ -247,7 +247,7 @@ void EditorSession::prepare_ui()
         synced_.energy = state_.solver.energy_version;
     }
     state_.problems = solver_.problems();
-    if (synced_.notes != document_.versions.sets)
+    if (synced_.notes != document_.versions.set_members)
     {
         state_.notes = constraint_notes(document_.sets);
         state_.region_holes.clear();
@@ -261,7 +261,7 @@ void EditorSession::prepare_ui()
                         " vertices it encloses (hidden from the view when selected): they "
                         "would stay fixed among moving ones; 'close holes' takes them in");
                 }
-        synced_.notes = document_.versions.sets;
+        synced_.notes = document_.versions.set_members;
     }
     state_.playing = solver_.playing();
     HistoryStatus& h = state_.history;
@@ -324,9 +324,13 @@ void EditorSession::sync_renderer()
         renderer_.set_selection(document_.selected_vertices, document_.selected_faces);
         synced_.selection = v.selection;
     }
-    const bool sets_changed = synced_.glyphs_sets != v.sets;
-    if (sets_changed)
+    // The border ring depends on which vertices the regions hold, not on where pins go.
+    if (synced_.border != v.set_members)
+    {
         border_ = region_border(document_);
+        synced_.border = v.set_members;
+    }
+    const bool sets_changed = synced_.glyphs_sets != v.sets;
     // Glyphs sit on the surface: they follow the positions when there are sets.
     if (sets_changed || (synced_.glyphs_positions != v.positions && !document_.sets.empty()))
     {

@@ -155,7 +155,7 @@ private:
     struct Synced
     {
         std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
-            counts;
+            border, counts;
         std::optional<std::uint64_t> energy;
     } synced_;
     RegionBorder border_; // of the current sets

@@ -195,6 +195,7 @@ void DocumentVersions::bump(unsigned parts)
     settings += (parts & kSettings) ? 1 : 0;
     positions += (parts & kPositions) ? 1 : 0;
     base += (parts & kBasePositions) ? 1 : 0;
+    set_members += (parts & kSetMembers) ? 1 : 0;
 }
 
 } // namespace meshfair::app

@@ -245,7 +245,10 @@ TEST_SUITE("Editor input")
         const glm::dvec3 w = e.session.camera().project(
             {x[i], x[i + 1], x[i + 2]}, e.session.view_rect().width, e.session.view_rect().height);
         const ScreenPoint from{w.x + e.session.view_rect().x, w.y + e.session.view_rect().y, 0};
+        const std::uint64_t members = e.doc().versions.set_members;
         e.drag({from, {from.x + 10, from.y, 0}, {from.x + 30, from.y - 20, 0}});
+        // Moving pins changes no set's elements: notes, holes and the border ring stay.
+        CHECK(e.doc().versions.set_members == members);
         REQUIRE(e.doc().sets[0].targets.size() == pins.vertices.size());
         // Targets away from the base; the solver puts the pins there at once.
         const std::vector<Scalar>& base_shape = e.doc().base_positions;
