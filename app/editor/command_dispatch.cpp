@@ -306,9 +306,8 @@ bool CommandExecutor::operator()(const cmd::ExportRecipe& c) const
 bool CommandExecutor::operator()(const cmd::ImportRecipe& c) const
 {
     ImportedRecipe imported = import_recipe(d, c.path);
-    imported.settings.iterations_per_frame = d.solver.iterations_per_frame;
     d.sets = std::move(imported.sets);
-    d.solver = imported.settings;
+    d.solver = with_pace(imported.settings, d.solver); // the recipe says nothing of the pace
     say("imported " + c.path + " (" + std::to_string(imported.iterations) +
         " iterations in the file: Step runs them)");
     return true;

@@ -171,6 +171,14 @@ std::array<float, 3> default_color(ConstraintKind kind)
     return {1, 1, 1};
 }
 
+SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace)
+{
+    settings.iterations_per_frame = pace.iterations_per_frame;
+    settings.steps_per_run = pace.steps_per_run;
+    settings.until_converged = pace.until_converged;
+    return settings;
+}
+
 bool takes_weight(ConstraintKind kind)
 {
     return kind == ConstraintKind::Anchor || kind == ConstraintKind::Centroid ||
@@ -349,11 +357,7 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
               const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
               bool ignoring_pin_targets)
 {
-    SolverSettings x = a_settings, y = b_settings;
-    x.iterations_per_frame = y.iterations_per_frame = 0; // the pace, not the recipe
-    x.steps_per_run = y.steps_per_run = 0;
-    x.until_converged = y.until_converged = false;
-    if (!(x == y) || a.size() != b.size())
+    if (!(with_pace(a_settings, b_settings) == b_settings) || a.size() != b.size())
         return false;
     for (size_t k = 0; k < a.size(); ++k)
         if (a[k].kind != b[k].kind || a[k].vertices != b[k].vertices || a[k].faces != b[k].faces ||

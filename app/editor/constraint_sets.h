@@ -85,6 +85,10 @@ struct SolverSettings
     bool operator==(const SolverSettings&) const = default;
 };
 
+//! \brief `settings` with the pace of `pace`: the steps per frame, the steps per run and
+//! "until converged", which say how the editor runs a recipe and are not part of it.
+SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace);
+
 //! Whether a kind's sets carry a weight mu (anchor, centroid, normal, soft normal).
 bool takes_weight(ConstraintKind kind);
 //! The weight a set's elements get: its own, or its kind's in `settings`.
