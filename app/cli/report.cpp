@@ -140,6 +140,8 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
     if (!session.normal_smoothing_trace().empty())
         j["normal_smoothing_energy"] = session.normal_smoothing_trace();
     j["notes"] = read_report.notes;
+    for (const std::string& note : session.notes())
+        j["notes"].push_back(note);
     return j;
 }
 

@@ -29,9 +29,10 @@ void JointTerm::normal_rhs(std::span<const Scalar> x, std::span<const Scalar> u,
     const Scalar* u0 = smoothing_->soft_target(f);
     for (int a = 0; a < 3; ++a)
         r[a] = -mu * Mu[a] + ws * (u0[a] - uf[a]);
-    for (const Index g : topology_->face_neighbors_of(f))
+    smoothing_->for_each_neighbor(f, [&](Index g, Scalar w) {
         for (int a = 0; a < 3; ++a)
-            r[a] += gamma_ * (u[3 * g + a] - uf[a]);
+            r[a] += gamma_ * w * (u[3 * g + a] - uf[a]);
+    });
 }
 
 bool JointTerm::minimizer(std::span<const Scalar> x, std::span<const Scalar> u, Index f,
@@ -45,7 +46,7 @@ bool JointTerm::minimizer(std::span<const Scalar> x, std::span<const Scalar> u, 
             m *= normal_term_->face_weight(f);
     }
     const Scalar ws = smoothing_->soft_weight(f);
-    const Scalar d = gamma_ * topology_->dual_valence(f) + ws;
+    const Scalar d = gamma_ * smoothing_->neighbor_weight_sum(f) + ws;
     Scalar L[6];
     if (!cholesky3(d, M, L))
         return false;
@@ -53,9 +54,10 @@ bool JointTerm::minimizer(std::span<const Scalar> x, std::span<const Scalar> u, 
     const Scalar* u0 = smoothing_->soft_target(f);
     for (int a = 0; a < 3; ++a)
         b[a] = ws * u0[a];
-    for (const Index g : topology_->face_neighbors_of(f))
+    smoothing_->for_each_neighbor(f, [&](Index g, Scalar w) {
         for (int a = 0; a < 3; ++a)
-            b[a] += gamma_ * u[3 * g + a];
+            b[a] += gamma_ * w * u[3 * g + a];
+    });
     cholesky3_solve(L, b, out);
     return true;
 }

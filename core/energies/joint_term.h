@@ -25,7 +25,9 @@ namespace meshfair {
 //! Then u_f += lambda (u_f* - u_f) and u_f is renormalized. Hard faces keep their normals;
 //! a face whose matrix is singular (no dual neighbour, no soft constraint and a planar
 //! polygon) keeps its normal. Weights: gamma >= 0; mu_f (FaceNormalTerm::face_weight) and
-//! mu_S,f (NormalSmoothingTerm::soft_weight), the per-face weights, >= 0.
+//! mu_S,f (NormalSmoothingTerm::soft_weight), the per-face weights, >= 0. With bilateral
+//! weights on the smoothing term, gamma n*_f becomes gamma sum_g w_fg and each u_g weighs
+//! gamma w_fg (NormalSmoothingTerm::for_each_neighbor); session reweights them.
 class JointTerm
 {
 public:

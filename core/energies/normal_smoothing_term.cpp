@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/solver/parallel.h"
+
 namespace meshfair {
 
 bool normalize3(Scalar* v)
@@ -47,6 +49,20 @@ NormalSmoothingTerm::NormalSmoothingTerm(const Topology& topology,
 
 Scalar NormalSmoothingTerm::dual_energy(std::span<const Scalar> u) const
 {
+    if (weights_)
+    {
+        // Each pair is listed from both of its faces: half of each listing.
+        Scalar sum = 0;
+        for (Index f = 0; f < topology_->face_count; ++f)
+            for_each_neighbor(f, [&](Index g, Scalar w) {
+                for (int a = 0; a < 3; ++a)
+                {
+                    const Scalar diff = u[3 * g + a] - u[3 * f + a];
+                    sum += Scalar(0.5) * w * diff * diff;
+                }
+            });
+        return sum;
+    }
     const auto& d = topology_->dual_edge_faces;
     Scalar sum = 0;
     for (size_t k = 0; k < d.size(); k += 2)
@@ -76,36 +92,45 @@ void NormalSmoothingTerm::apply_hard(std::span<Scalar> u) const
         std::copy_n(&hard_normal_[3 * k], 3, &u[3 * hard_faces_[k]]);
 }
 
-void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda, std::span<Scalar> scratch) const
+void NormalSmoothingTerm::displacements(std::span<const Scalar> u, std::span<Scalar> du_all) const
 {
-    const Index faces = topology_->face_count;
-    // Displacements from the old normals first (Jacobi), then all updates at once.
-    for (Index f = 0; f < faces; ++f)
-    {
-        Scalar* du = &scratch[3 * f];
+    // Each face writes its own displacement: any thread count gives the same bits.
+    parallel_for(topology_->face_count, [&](Index f) {
+        Scalar* du = &du_all[3 * f];
         du[0] = du[1] = du[2] = 0;
         const Scalar weight = soft_weight(f);
         const Scalar* target = soft_target(f);
-        const Scalar denominator = topology_->dual_valence(f) + weight;
+        const Scalar denominator = neighbor_weight_sum(f) + weight;
         if (is_hard(f) || !(denominator > 0))
-            continue;
+            return;
         const Scalar* uf = &u[3 * f];
-        for (const Index g : topology_->face_neighbors_of(f))
-            for (int a = 0; a < 3; ++a)
-                du[a] += u[3 * g + a] - uf[a];
+        if (weights_)
+            for_each_neighbor(f, [&](Index g, Scalar w) {
+                for (int a = 0; a < 3; ++a)
+                    du[a] += w * (u[3 * g + a] - uf[a]);
+            });
+        else
+            for (const Index g : topology_->face_neighbors_of(f))
+                for (int a = 0; a < 3; ++a)
+                    du[a] += u[3 * g + a] - uf[a];
         for (int a = 0; a < 3; ++a)
             du[a] = (du[a] + weight * (target[a] - uf[a])) / denominator;
-    }
-    for (Index f = 0; f < faces; ++f)
-    {
+    });
+}
+
+void NormalSmoothingTerm::step(std::span<Scalar> u, Scalar lambda, std::span<Scalar> scratch) const
+{
+    // Displacements from the old normals first (Jacobi), then all updates at once.
+    displacements(u, scratch);
+    parallel_for(topology_->face_count, [&](Index f) {
         if (is_hard(f))
-            continue;
+            return;
         Scalar next[3];
         for (int a = 0; a < 3; ++a)
             next[a] = u[3 * f + a] + lambda * scratch[3 * f + a];
         if (normalize3(next))
             std::copy_n(next, 3, &u[3 * f]);
-    }
+    });
 }
 
 } // namespace meshfair

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/bilateral_face_weights.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -22,6 +23,11 @@ namespace meshfair {
 //! has zero length keeps its previous value). Faces with n*_f = 0 and no soft constraint
 //! do not move. The renormalization makes the step a heuristic rather than a descent
 //! step, as in the paper.
+//!
+//! With bilateral weights (set_weights) the dual edges weigh w_fg and the neighbours may be
+//! the faces sharing a vertex: E_U(u) = sum_{f~g} w_fg |u_f - u_g|^2 + soft terms (each
+//! pair once), whose Jacobi step is
+//! du_f = (sum_g w_fg (u_g - u_f) + mu_f [f in F_S] (u0_f - u_f)) / (sum_g w_fg + mu_f [f in F_S]).
 class NormalSmoothingTerm
 {
 public:
@@ -42,17 +48,47 @@ public:
     }
     bool has_soft() const { return !soft_faces_.empty(); }
 
-    //! sum over E* of |u_f - u_g|^2.
+    //! \brief Weighs the face graph with `weights` (kept by the caller, outliving this
+    //! term; nullptr: every dual edge weighs 1 again, the paper's E_U bit for bit).
+    void set_weights(const BilateralFaceWeights* weights) { weights_ = weights; }
+    const BilateralFaceWeights* weights() const { return weights_; }
+    //! sum_g w_fg over f's neighbours (n*_f without weights).
+    Scalar neighbor_weight_sum(Index f) const
+    {
+        return weights_ ? weights_->weight_sum(f) : static_cast<Scalar>(topology_->dual_valence(f));
+    }
+    //! visit(g, w_fg) for each neighbour g of f (w_fg = 1 without weights).
+    template <class Visit>
+    void for_each_neighbor(Index f, Visit&& visit) const
+    {
+        if (!weights_)
+        {
+            for (const Index g : topology_->face_neighbors_of(f))
+                visit(g, Scalar(1));
+            return;
+        }
+        const std::span<const Index> faces = weights_->neighbors_of(f);
+        const std::span<const Scalar> w = weights_->weights_of(f);
+        for (size_t k = 0; k < faces.size(); ++k)
+            visit(faces[k], w[k]);
+    }
+
+    //! sum over E* of |u_f - u_g|^2 (of w_fg |u_f - u_g|^2 over the weighed pairs).
     Scalar dual_energy(std::span<const Scalar> u) const;
     //! sum_{F_S} mu_f |u_f - u0_f|^2.
     Scalar soft_energy(std::span<const Scalar> u) const;
     //! Writes the hard normals into u.
     void apply_hard(std::span<Scalar> u) const;
+    //! \brief The Jacobi displacements du (3 #F) of E_U at u, before lambda and the
+    //! renormalization: du_f = r_f / D_f with r_f = -1/2 dE_U/du_f and D_f the diagonal
+    //! (the weights' sum plus mu_f); 0 at hard faces and faces with D_f = 0.
+    void displacements(std::span<const Scalar> u, std::span<Scalar> du) const;
     //! One generalized Jacobi step on E_U, then renormalization; `scratch` holds 3 #F.
     void step(std::span<Scalar> u, Scalar lambda, std::span<Scalar> scratch) const;
 
 private:
     const Topology* topology_;
+    const BilateralFaceWeights* weights_ = nullptr;
     std::vector<Index> hard_faces_, soft_faces_;
     // Per-face arrays exist only when there are hard (soft) faces: a recipe without
     // normal smoothing pays nothing for it (66 bytes per face otherwise).

@@ -262,6 +262,16 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
         check_weights(ns.soft.weights, ns.soft.mu, ns.soft.faces.size(), "faces",
                       {"normal_smoothing.soft", "weights"});
         check_directions(ns.soft.normals, {"normal_smoothing.soft", "normals"});
+        if (ns.bilateral)
+        {
+            const BilateralWeights& b = *ns.bilateral;
+            if (!(std::isfinite(b.sigma_s) && b.sigma_s > 0))
+                throw RecipeError("normal_smoothing.bilateral.sigma_s", "must be finite and > 0");
+            if (!(std::isfinite(b.sigma_r) && b.sigma_r > 0))
+                throw RecipeError("normal_smoothing.bilateral.sigma_r", "must be finite and > 0");
+            if (b.reweight_every < 1)
+                throw RecipeError("normal_smoothing.bilateral.reweight_every", "must be >= 1");
+        }
         for (size_t k = 0; k < ns.soft.faces.size(); ++k)
             if (hard_faces[ns.soft.faces[k]])
                 throw RecipeError(item("normal_smoothing.soft.faces", k),
@@ -276,6 +286,21 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
             throw RecipeError("joint",
                               "needs a \"normal\" section (its faces and mu couple x "
                               "and u)");
+    }
+    if (r.method == Method::Taubin)
+    {
+        if (!(std::isfinite(r.taubin_mu) && r.taubin_mu < -r.lambda))
+            throw RecipeError("taubin_mu",
+                              "must be finite and below -lambda (Taubin's mu < "
+                              "-lambda < 0 keeps the low frequencies)");
+        if (r.optimal_step)
+            throw RecipeError("lambda",
+                              "\"optimal\" is not a step length of method \"taubin\" "
+                              "(its two steps have fixed lengths)");
+        if (r.joint)
+            throw RecipeError("joint",
+                              "is not available with method \"taubin\" (the normals "
+                              "have no lambda|mu pair)");
     }
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/energies/bilateral_face_weights.h"
 #include "core/energies/face_centroid_term.h"
 #include "core/mesh/mesh.h"
 
@@ -15,8 +16,11 @@ namespace meshfair {
 //! Descent direction of each step.
 enum class Method
 {
-    Jacobi,         //!< generalized Jacobi: each vertex's own minimizer (the product's mode)
-    GradientDescent //!< dx = -1/2 dE/dx (unpreconditioned), for the paper's comparison
+    Jacobi,          //!< generalized Jacobi: each vertex's own minimizer (the product's mode)
+    GradientDescent, //!< dx = -1/2 dE/dx (unpreconditioned), for the paper's comparison
+    //! Taubin's lambda|mu \cite taubin_1995: each step is a Jacobi step of length lambda
+    //! then one of length taubin_mu < -lambda (shrinks less; for comparison)
+    Taubin
 };
 
 //! A list of element indices, or every element of the mesh ("all").
@@ -103,11 +107,18 @@ struct NormalSmoothing
     Scalar lambda = 0.5;
     HardNormals hard;
     SoftNormals soft;
+    //! absent: every dual edge weighs 1 (the paper's E_U)
+    std::optional<BilateralWeights> bilateral = {};
 };
 
 struct Joint
 {
     Scalar gamma = 1;
+};
+
+//! Keep the enclosed volume of every closed component (VolumeConstraint).
+struct KeepVolume
+{
 };
 
 //! \brief Everything one smoothing run needs besides the mesh: the constraint sets and
@@ -121,6 +132,7 @@ struct Recipe
     Scalar lambda = 0.5;
     Scalar tolerance = 0; //!< stop when the relative energy decrease falls below
     Method method = Method::Jacobi;
+    Scalar taubin_mu = -0.53; //!< the second step's length, Method::Taubin only
 
     std::optional<Region> region;
     std::optional<HardVertices> hard;
@@ -129,6 +141,7 @@ struct Recipe
     std::optional<NormalConstraints> normal;
     std::optional<NormalSmoothing> normal_smoothing;
     std::optional<Joint> joint;
+    std::optional<KeepVolume> volume;
 };
 
 //! \brief Checks a recipe against a mesh: indices in range and not repeated (nor in two

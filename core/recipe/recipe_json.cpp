@@ -40,7 +40,9 @@ void expect_object(const Json& j, const std::string& key,
             std::string list;
             for (const auto a : allowed)
                 list += (list.empty() ? "" : ", ") + std::string(a);
-            throw RecipeError(child(key, name), "unknown key (allowed here: " + list + ")");
+            throw RecipeError(child(key, name), list.empty()
+                                                    ? "unknown key (this section takes none)"
+                                                    : "unknown key (allowed here: " + list + ")");
         }
     }
 }
@@ -416,12 +418,40 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
     return merge_sets(sets, "normal", &NormalConstraints::faces, &NormalConstraints::normals);
 }
 
+BilateralWeights parse_bilateral(const Json& s)
+{
+    const std::string key = "normal_smoothing.bilateral";
+    expect_object(s, key, {"sigma_s", "sigma_r", "reweight_every", "neighbors"});
+    BilateralWeights b;
+    if (s.contains("sigma_s"))
+        b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
+    if (s.contains("sigma_r"))
+        b.sigma_r = step_length(s["sigma_r"], child(key, "sigma_r"));
+    if (s.contains("reweight_every"))
+    {
+        b.reweight_every = count(s["reweight_every"], child(key, "reweight_every"));
+        if (b.reweight_every < 1)
+            throw RecipeError(child(key, "reweight_every"), "must be >= 1 (got 0)");
+    }
+    if (s.contains("neighbors"))
+    {
+        const Json& v = s["neighbors"];
+        if (v == "edge")
+            b.neighbors = FaceNeighborhood::Edge;
+        else if (v == "vertex")
+            b.neighbors = FaceNeighborhood::Vertex;
+        else
+            throw RecipeError(child(key, "neighbors"), "must be \"edge\" or \"vertex\"");
+    }
+    return b;
+}
+
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
     expect_object(j, "",
-                  {"iterations", "lambda", "tolerance", "method", "region", "hard", "soft",
-                   "centroid", "normal", "normal_smoothing", "joint"});
+                  {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
+                   "soft", "centroid", "normal", "normal_smoothing", "joint", "volume"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -435,9 +465,13 @@ Recipe parse_recipe_json(const Json& j)
             r.method = Method::Jacobi;
         else if (m == "gradient_descent")
             r.method = Method::GradientDescent;
+        else if (m == "taubin")
+            r.method = Method::Taubin;
         else
-            throw RecipeError("method", "must be \"jacobi\" or \"gradient_descent\"");
+            throw RecipeError("method", "must be \"jacobi\", \"gradient_descent\" or \"taubin\"");
     }
+    if (j.contains("taubin_mu"))
+        r.taubin_mu = number(j["taubin_mu"], "taubin_mu");
     if (j.contains("region"))
     {
         const Json& s = j["region"];
@@ -472,7 +506,7 @@ Recipe parse_recipe_json(const Json& j)
     if (j.contains("normal_smoothing"))
     {
         const Json& s = j["normal_smoothing"];
-        expect_object(s, "normal_smoothing", {"iterations", "lambda", "hard", "soft"});
+        expect_object(s, "normal_smoothing", {"iterations", "lambda", "hard", "soft", "bilateral"});
         NormalSmoothing ns;
         if (s.contains("iterations"))
             ns.iterations = count(s["iterations"], "normal_smoothing.iterations");
@@ -502,6 +536,8 @@ Recipe parse_recipe_json(const Json& j)
             if (h.contains("weights"))
                 ns.soft.weights = weights(h["weights"], "normal_smoothing.soft.weights");
         }
+        if (s.contains("bilateral"))
+            ns.bilateral = parse_bilateral(s["bilateral"]);
         r.normal_smoothing = std::move(ns);
     }
     if (j.contains("joint"))
@@ -512,6 +548,11 @@ Recipe parse_recipe_json(const Json& j)
         if (s.contains("gamma"))
             joint.gamma = weight(s["gamma"], "joint.gamma");
         r.joint = joint;
+    }
+    if (j.contains("volume"))
+    {
+        expect_object(j["volume"], "volume", {});
+        r.volume = KeepVolume{};
     }
     return r;
 }
@@ -586,7 +627,11 @@ nlohmann::json recipe_to_json(const Recipe& r)
     j["iterations"] = r.iterations;
     j["lambda"] = r.optimal_step ? Json("optimal") : Json(r.lambda);
     j["tolerance"] = r.tolerance;
-    j["method"] = r.method == Method::Jacobi ? "jacobi" : "gradient_descent";
+    j["method"] = r.method == Method::Jacobi            ? "jacobi"
+                  : r.method == Method::GradientDescent ? "gradient_descent"
+                                                        : "taubin";
+    if (r.method == Method::Taubin)
+        j["taubin_mu"] = r.taubin_mu;
     if (r.region)
     {
         Json s = Json::object();
@@ -658,10 +703,21 @@ nlohmann::json recipe_to_json(const Recipe& r)
             if (!ns.soft.weights.empty())
                 s["soft"]["weights"] = ns.soft.weights;
         }
+        if (ns.bilateral)
+        {
+            const BilateralWeights& b = *ns.bilateral;
+            s["bilateral"] = {
+                {"sigma_s", b.sigma_s},
+                {"sigma_r", b.sigma_r},
+                {"reweight_every", b.reweight_every},
+                {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
+        }
         j["normal_smoothing"] = s;
     }
     if (r.joint)
         j["joint"] = {{"gamma", r.joint->gamma}};
+    if (r.volume)
+        j["volume"] = Json::object();
     return j;
 }
 

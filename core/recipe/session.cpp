@@ -70,6 +70,8 @@ TopologyParts required_topology(const Recipe& recipe)
         parts = parts | TopologyParts::Corners;
     if (recipe.normal && (recipe.normal->source == NormalSource::Smoothed || recipe.joint))
         parts = parts | TopologyParts::Dual;
+    if (recipe.volume)
+        parts = parts | TopologyParts::Corners | TopologyParts::Edges;
     return parts;
 }
 
@@ -162,7 +164,9 @@ void Session::precompute()
 
     normal_.reset();
     smoothing_.reset();
+    bilateral_.reset();
     joint_.reset();
+    joint_steps_ = 0;
     normals_.clear();
     smoothing_trace_.clear();
     if (recipe_.normal)
@@ -189,27 +193,44 @@ void Session::precompute()
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
                            soft_normals, ns.soft.weights);
         smoothing_->apply_hard(normals_);
+        const bool smooths = n.source == NormalSource::Smoothed || recipe_.joint;
         // Scratch normals for normal smoothing and the joint update only.
-        if (n.source == NormalSource::Smoothed || recipe_.joint)
+        if (smooths)
             scratch_u_.assign(3 * static_cast<size_t>(nf), 0);
         else
             scratch_u_ = {};
+        if (smooths && ns.bilateral)
+        {
+            bilateral_.emplace(mesh, *topology_, *ns.bilateral, x0);
+            bilateral_->reweight(x0, normals_);
+            smoothing_->set_weights(&*bilateral_);
+        }
         if (n.source == NormalSource::Smoothed)
         {
             // Normal smoothing first, then integration of the smoothed normals through
-            // the face-normal term (the paper's two-stage process).
-            smoothing_trace_.push_back(smoothing_->dual_energy(normals_) +
-                                       smoothing_->soft_energy(normals_));
+            // the face-normal term (the paper's two-stage process). With bilateral
+            // weights the trace follows the robust energy that the reweighting lowers.
+            const auto smoothing_energy = [&] {
+                return (bilateral_ ? bilateral_->robust_energy(normals_)
+                                   : smoothing_->dual_energy(normals_)) +
+                       smoothing_->soft_energy(normals_);
+            };
+            smoothing_trace_.push_back(smoothing_energy());
             for (int k = 0; k < ns.iterations; ++k)
             {
+                if (bilateral_ && k > 0 && k % bilateral_->reweight_every() == 0)
+                    bilateral_->reweight(x0, normals_);
                 smoothing_->step(normals_, ns.lambda, scratch_u_);
-                smoothing_trace_.push_back(smoothing_->dual_energy(normals_) +
-                                           smoothing_->soft_energy(normals_));
+                smoothing_trace_.push_back(smoothing_energy());
             }
         }
         if (recipe_.joint)
             joint_.emplace(*normal_, *smoothing_, *topology_, recipe_.joint->gamma);
     }
+
+    volume_.reset();
+    if (recipe_.volume)
+        volume_.emplace(mesh, *topology_, x0, fixed);
 
     // The Jacobi system: constant diagonal, blocks while the normals stay fixed.
     system_.diagonal.assign(nv, 0);
@@ -224,7 +245,7 @@ void Session::precompute()
             free_.push_back(v);
     system_.block.clear();
     system_.factor.clear();
-    if (normal_ && recipe_.method == Method::Jacobi)
+    if (normal_ && recipe_.method != Method::GradientDescent)
     {
         system_.block.assign(6 * static_cast<size_t>(nv), 0);
         if (joint_) // the blocks are rebuilt and factored again every step
@@ -317,6 +338,12 @@ const std::vector<Index>& Session::soft_vertices() const
 {
     static const std::vector<Index> none;
     return soft_ ? soft_->vertices() : none;
+}
+
+const std::vector<std::string>& Session::notes() const
+{
+    static const std::vector<std::string> none;
+    return volume_ ? volume_->notes() : none;
 }
 
 const std::vector<Index>& Session::centroid_faces() const
@@ -474,6 +501,8 @@ StepInfo Session::step()
         return general_step(x_);
     fused_step(x_, next_);
     std::swap(x_, next_);
+    if (volume_)
+        volume_->project(x_);
     return StepInfo{recipe_.lambda};
 }
 
@@ -494,22 +523,19 @@ StepInfo Session::general_step(std::span<Scalar> x)
     if (joint_ && use_blocks)
         factor_blocks(); // the normals moved in the previous step
 
-    parallel_for(static_cast<Index>(free_.size()),
-                 [&](Index k) { std::fill_n(&system_.rhs[3 * free_[k]], 3, Scalar(0)); });
-    edge_.add_rhs(x, free_, system_.rhs);
-    if (soft_)
-        soft_->add_rhs(x, free_, system_.rhs);
-    if (centroid_)
-        centroid_->add_rhs(x, free_, system_.rhs);
-    if (normal_)
-        normal_->add_rhs(x, normals_, free_, system_.rhs);
-
-    if (recipe_.method == Method::Jacobi)
-        jacobi_displacements(system_, free_, use_blocks, dx_);
-    else
-        gradient_displacements(system_, free_, dx_);
-
+    assemble_displacements(x, use_blocks);
     StepInfo info;
+    if (recipe_.method == Method::Taubin)
+    {
+        // lambda, then mu < -lambda from the new positions: Taubin's two passes.
+        apply_displacements(free_, dx_, recipe_.lambda, x);
+        assemble_displacements(x, use_blocks);
+        apply_displacements(free_, dx_, recipe_.taubin_mu, x);
+        if (volume_)
+            volume_->project(x);
+        info.lambda = recipe_.lambda;
+        return info;
+    }
     info.lambda = recipe_.lambda;
     if (recipe_.optimal_step)
     {
@@ -525,9 +551,35 @@ StepInfo Session::general_step(std::span<Scalar> x)
     // Joint mode updates u from the old x and old u, like x: one Jacobi step on both.
     // The line search is exact for x with u held; u never steps past its minimizer.
     if (joint_)
+    {
+        // Bilateral weights: a new stage of the robust energy every reweight_every steps
+        // (the first stage's weights come from the precomputation).
+        if (bilateral_ && joint_steps_ > 0 && joint_steps_ % bilateral_->reweight_every() == 0)
+            bilateral_->reweight(x, normals_);
+        ++joint_steps_;
         joint_->update_normals(x, normals_, std::min<Scalar>(info.lambda, 1), scratch_u_);
+    }
     apply_displacements(free_, dx_, info.lambda, x);
+    if (volume_)
+        volume_->project(x);
     return info;
+}
+
+void Session::assemble_displacements(std::span<const Scalar> x, bool use_blocks)
+{
+    parallel_for(static_cast<Index>(free_.size()),
+                 [&](Index k) { std::fill_n(&system_.rhs[3 * free_[k]], 3, Scalar(0)); });
+    edge_.add_rhs(x, free_, system_.rhs);
+    if (soft_)
+        soft_->add_rhs(x, free_, system_.rhs);
+    if (centroid_)
+        centroid_->add_rhs(x, free_, system_.rhs);
+    if (normal_)
+        normal_->add_rhs(x, normals_, free_, system_.rhs);
+    if (recipe_.method == Method::GradientDescent)
+        gradient_displacements(system_, free_, dx_);
+    else // Jacobi, and each of Taubin's two passes
+        jacobi_displacements(system_, free_, use_blocks, dx_);
 }
 
 void Session::vertex_energy(std::span<const Scalar> x, EnergyTerm term,

@@ -13,6 +13,7 @@
 #include "core/energies/joint_term.h"
 #include "core/energies/normal_smoothing_term.h"
 #include "core/energies/soft_vertex_term.h"
+#include "core/energies/volume_constraint.h"
 #include "core/recipe/recipe.h"
 #include "core/solver/jacobi_system.h"
 
@@ -71,6 +72,9 @@ public:
     //! at least required_topology(recipe) (else SolverError).
     //! \throw RecipeError if the recipe does not fit the mesh.
     Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe);
+    // The terms point at one another (joint mode, bilateral weights): not copied, not moved.
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
 
     //! Replaces the recipe and precomputes again.
     void set_recipe(const Recipe& recipe);
@@ -126,8 +130,13 @@ public:
     const std::vector<Index>& centroid_faces() const;
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.
     std::span<const Scalar> normals() const { return normals_; }
-    //! E_U before and after each normal-smoothing iteration (normals "smoothed").
+    //! E_U before and after each normal-smoothing iteration (normals "smoothed"); with
+    //! bilateral weights, the robust energy E_R + the soft part (BilateralFaceWeights).
     const std::vector<Scalar>& normal_smoothing_trace() const { return smoothing_trace_; }
+    //! What the run leaves undone, for reports (the components whose volume is not kept).
+    const std::vector<std::string>& notes() const;
+    //! The volume constraint, when the recipe keeps volumes.
+    const VolumeConstraint* volume() const { return volume_ ? &*volume_ : nullptr; }
     //! How many times the precomputation ran (1 after construction).
     int precompute_count() const { return precompute_count_; }
 
@@ -158,6 +167,8 @@ private:
     //! The general step (separate right-hand side, displacement, line search, joint
     //! update), in place on x.
     StepInfo general_step(std::span<Scalar> x);
+    //! The right-hand side and the displacements dx_ of the free vertices at x.
+    void assemble_displacements(std::span<const Scalar> x, bool use_blocks);
     void check_size(std::span<const Scalar> x, const char* what) const;
 
     const Mesh* mesh_;
@@ -176,7 +187,10 @@ private:
     std::optional<FaceCentroidTerm> centroid_;
     std::optional<FaceNormalTerm> normal_;
     std::optional<NormalSmoothingTerm> smoothing_;
+    std::optional<BilateralFaceWeights> bilateral_; //!< the smoothing term's weights, if any
     std::optional<JointTerm> joint_;
+    int joint_steps_ = 0; //!< joint steps since the precomputation (for reweighting)
+    std::optional<VolumeConstraint> volume_;
 
     std::vector<Scalar> normals_; //!< 3 #F
     std::vector<Scalar> smoothing_trace_;

@@ -88,7 +88,8 @@ TEST_SUITE("Recipe")
     {
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
-              "method, region, hard, soft, centroid, normal, normal_smoothing, joint)");
+              "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
+              "volume)");
         CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
               "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets, weights)");
         CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==
@@ -125,7 +126,7 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iterations": -2})") ==
               "'r.json': iterations: must be an integer in [0, 2147483647] (got -2)");
         CHECK(error_of(R"({"method": "newton"})") ==
-              "'r.json': method: must be \"jacobi\" or \"gradient_descent\"");
+              "'r.json': method: must be \"jacobi\", \"gradient_descent\" or \"taubin\"");
         CHECK(error_of(R"({"centroid": {"faces": "all", "denominator": "printed"}})") ==
               "'r.json': centroid.denominator: must be \"paper\" or \"exact\"");
         CHECK(error_of(R"({"normal": {"faces": [0], "normals": [[0, 0, 0]]}})") ==
@@ -145,6 +146,72 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iterations": 3,})") ==
               "'r.json':1:18: not valid JSON: syntax error while parsing object key - unexpected "
               "'}'; expected string literal");
+    }
+
+    TEST_CASE(
+        "bilateral weights, the volume and Taubin's method: parsed, written back, and "
+        "refused naming the key")
+    {
+        const Recipe r = parse_recipe(R"({"method": "taubin", "taubin_mu": -0.6, "volume": {},
+            "normal": {"faces": "all", "normals": "smoothed"}, "normal_smoothing": {"bilateral":
+            {"sigma_s": 2, "sigma_r": 0.3, "reweight_every": 3, "neighbors": "vertex"}}})",
+                                      "r.json");
+        CHECK(r.method == Method::Taubin);
+        CHECK(r.taubin_mu == -0.6);
+        CHECK(r.volume.has_value());
+        REQUIRE(r.normal_smoothing->bilateral.has_value());
+        const BilateralWeights& b = *r.normal_smoothing->bilateral;
+        CHECK(b.sigma_s == 2);
+        CHECK(b.sigma_r == 0.3);
+        CHECK(b.reweight_every == 3);
+        CHECK(b.neighbors == FaceNeighborhood::Vertex);
+        const Recipe back = parse_recipe(recipe_to_json(r).dump(), "again.json");
+        CHECK(recipe_to_json(back) == recipe_to_json(r));
+        // Defaults, and nothing new written for a recipe that does not use them.
+        const Recipe d = parse_recipe(R"({"normal": {"faces": "all"}, "normal_smoothing":
+            {"bilateral": {}}})",
+                                      "r.json");
+        CHECK(d.normal_smoothing->bilateral->sigma_s == 1);
+        CHECK(d.normal_smoothing->bilateral->sigma_r == 0.35);
+        CHECK(d.normal_smoothing->bilateral->reweight_every == 1);
+        CHECK(d.normal_smoothing->bilateral->neighbors == FaceNeighborhood::Edge);
+        const nlohmann::json plain = recipe_to_json(parse_recipe("{}", "r.json"));
+        CHECK(!plain.contains("taubin_mu"));
+        CHECK(!plain.contains("volume"));
+
+        const std::string smoothing = R"({"normal": {"faces": "all"}, "normal_smoothing": )";
+        CHECK(error_of(smoothing + R"({"bilateral": {"sigma_s": 0}}})") ==
+              "'r.json': normal_smoothing.bilateral.sigma_s: must be > 0 (got 0)");
+        CHECK(error_of(smoothing + R"({"bilateral": {"sigma_r": -0.3}}})") ==
+              "'r.json': normal_smoothing.bilateral.sigma_r: must be > 0 (got -0.3)");
+        CHECK(error_of(smoothing + R"({"bilateral": {"reweight_every": 0}}})") ==
+              "'r.json': normal_smoothing.bilateral.reweight_every: must be >= 1 (got 0)");
+        CHECK(error_of(smoothing + R"({"bilateral": {"neighbors": "face"}}})") ==
+              "'r.json': normal_smoothing.bilateral.neighbors: must be \"edge\" or \"vertex\"");
+        CHECK(error_of(smoothing + R"({"bilateral": {"sigma": 1}}})") ==
+              "'r.json': normal_smoothing.bilateral.sigma: unknown key (allowed here: sigma_s, "
+              "sigma_r, reweight_every, neighbors)");
+        CHECK(error_of(R"({"volume": {"keep": true}})") ==
+              "'r.json': volume.keep: unknown key (this section takes none)");
+        CHECK(error_of(R"({"volume": true})") == "'r.json': volume: must be an object");
+        CHECK(error_of(R"({"method": "taubin", "taubin_mu": -0.4})") ==
+              "recipe: taubin_mu: must be finite and below -lambda (Taubin's mu < -lambda < 0 "
+              "keeps the low frequencies)");
+        CHECK(error_of(R"({"method": "taubin", "lambda": "optimal"})") ==
+              "recipe: lambda: \"optimal\" is not a step length of method \"taubin\" (its two "
+              "steps have fixed lengths)");
+        CHECK(error_of(R"({"method": "taubin", "normal": {"faces": "all"}, "joint": {}})") ==
+              "recipe: joint: is not available with method \"taubin\" (the normals have no "
+              "lambda|mu pair)");
+        // In code, where the parser cannot refuse them first.
+        Recipe bad;
+        bad.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Smoothed, {}};
+        bad.normal_smoothing = NormalSmoothing{};
+        bad.normal_smoothing->bilateral =
+            BilateralWeights{std::nan(""), 0.35, 1, FaceNeighborhood::Edge};
+        CHECK_THROWS_WITH_AS(check_recipe(bad, test::quad_cube()),
+                             "recipe: normal_smoothing.bilateral.sigma_s: must be finite and > 0",
+                             RecipeError);
     }
 
     TEST_CASE("coordinates beyond 1e100 are refused before smoothing, where they would overflow")

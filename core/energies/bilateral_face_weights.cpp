@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/bilateral_face_weights.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/geometry/face_geometry.h"
+#include "core/solver/parallel.h"
+
+namespace meshfair {
+
+namespace {
+
+Scalar squared_distance3(const Scalar* a, const Scalar* b)
+{
+    Scalar sum = 0;
+    for (int k = 0; k < 3; ++k)
+        sum += (a[k] - b[k]) * (a[k] - b[k]);
+    return sum;
+}
+
+//! The faces sharing a vertex with f, for every f: CSR, each list sorted, f excluded.
+void vertex_neighborhoods(const Mesh& mesh, const Topology& topology, std::vector<Index>& offsets,
+                          std::vector<Index>& neighbors)
+{
+    const Index nf = mesh.face_count();
+    offsets.assign(static_cast<size_t>(nf) + 1, 0);
+    neighbors.clear();
+    // `seen[g] == f + 1` marks g as already listed for f: no clearing between faces.
+    std::vector<Index> seen(nf, 0);
+    for (Index f = 0; f < nf; ++f)
+    {
+        const size_t start = neighbors.size();
+        for (const Index v : mesh.face(f))
+            for (const Index corner : topology.corners_of_vertex(v))
+            {
+                const Index g = topology.corner_face[corner];
+                if (g != f && seen[g] != f + 1)
+                {
+                    seen[g] = f + 1;
+                    neighbors.push_back(g);
+                }
+            }
+        std::sort(neighbors.begin() + static_cast<std::ptrdiff_t>(start), neighbors.end());
+        offsets[f + 1] = static_cast<Index>(neighbors.size());
+    }
+}
+
+} // namespace
+
+Scalar mean_dual_edge_length(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x)
+{
+    const auto& d = topology.dual_edge_faces;
+    if (d.empty())
+        return 0;
+    Scalar sum = 0;
+    for (size_t k = 0; k < d.size(); k += 2)
+    {
+        const Vec3 a = face_centroid(mesh, x, d[k]), b = face_centroid(mesh, x, d[k + 1]);
+        sum += std::sqrt(squared_distance3(a.data(), b.data()));
+    }
+    return sum / static_cast<Scalar>(d.size() / 2);
+}
+
+BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& topology,
+                                           const BilateralWeights& settings,
+                                           std::span<const Scalar> x)
+    : mesh_(&mesh),
+      sigma_s_(settings.sigma_s * mean_dual_edge_length(mesh, topology, x)),
+      sigma_r_(settings.sigma_r),
+      reweight_every_(settings.reweight_every)
+{
+    if (settings.neighbors == FaceNeighborhood::Vertex)
+        vertex_neighborhoods(mesh, topology, offsets_, neighbors_);
+    else
+    {
+        offsets_ = topology.face_neighbor_offsets;
+        neighbors_ = topology.face_neighbors;
+    }
+    const Index nf = mesh.face_count();
+    spatial_.assign(neighbors_.size(), 1);
+    weights_.assign(neighbors_.size(), 1);
+    weight_sum_.resize(nf);
+    for (Index f = 0; f < nf; ++f)
+        weight_sum_[f] = static_cast<Scalar>(offsets_[f + 1] - offsets_[f]);
+    centroids_.assign(3 * static_cast<size_t>(nf), 0);
+}
+
+void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const Scalar> u)
+{
+    const Index nf = mesh_->face_count();
+    Scalar* centroids = centroids_.data();
+    parallel_for(nf, [&](Index f) {
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        std::copy(c.begin(), c.end(), &centroids[3 * f]);
+    });
+    // 1 / 2 sigma^2, or 0 for a spatial factor of 1 (sigma_s = 0: no scale to measure).
+    const Scalar spatial_rate = sigma_s_ > 0 ? Scalar(1) / (2 * sigma_s_ * sigma_s_) : 0;
+    const Scalar range_rate = Scalar(1) / (2 * sigma_r_ * sigma_r_);
+    parallel_for(nf, [&](Index f) {
+        Scalar sum = 0;
+        for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
+        {
+            const Index g = neighbors_[k];
+            spatial_[k] =
+                std::exp(-spatial_rate * squared_distance3(&centroids[3 * f], &centroids[3 * g]));
+            weights_[k] =
+                spatial_[k] * std::exp(-range_rate * squared_distance3(&u[3 * f], &u[3 * g]));
+            sum += weights_[k];
+        }
+        weight_sum_[f] = sum;
+    });
+}
+
+Scalar BilateralFaceWeights::robust_energy(std::span<const Scalar> u) const
+{
+    const Scalar range_rate = Scalar(1) / (2 * sigma_r_ * sigma_r_);
+    const Scalar scale = sigma_r_ * sigma_r_;
+    // Each unordered pair is listed from both faces: half of each listing.
+    return Scalar(0.5) * deterministic_sum(mesh_->face_count(), [&](Index f) {
+               Scalar sum = 0;
+               for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
+                   sum += spatial_[k] * scale *
+                          (1 - std::exp(-range_rate *
+                                        squared_distance3(&u[3 * f], &u[3 * neighbors_[k]])));
+               return sum;
+           });
+}
+
+} // namespace meshfair

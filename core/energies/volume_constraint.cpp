@@ -1,0 +1,277 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/energies/volume_constraint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/errors.h"
+#include "core/solver/parallel.h"
+
+namespace meshfair {
+
+namespace {
+
+const Scalar* at(std::span<const Scalar> x, Index v)
+{
+    return x.data() + 3 * static_cast<std::ptrdiff_t>(v);
+}
+
+Scalar det3(const Scalar* a, const Scalar* b, const Scalar* c)
+{
+    return a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+           a[2] * (b[0] * c[1] - b[1] * c[0]);
+}
+
+//! out += a x b
+void add_cross(const Scalar* a, const Scalar* b, Scalar* out)
+{
+    out[0] += a[1] * b[2] - a[2] * b[1];
+    out[1] += a[2] * b[0] - a[0] * b[2];
+    out[2] += a[0] * b[1] - a[1] * b[0];
+}
+
+Index find_root(std::vector<Index>& parent, Index v)
+{
+    while (parent[v] != v)
+    {
+        parent[v] = parent[parent[v]];
+        v = parent[v];
+    }
+    return v;
+}
+
+//! 6 V_f: the fan of face f from its first corner.
+Scalar face_volume6(const Mesh& mesh, std::span<const Scalar> x, Index f)
+{
+    const std::span<const Index> face = mesh.face(f);
+    Scalar sum = 0;
+    for (size_t m = 1; m + 1 < face.size(); ++m)
+        sum += det3(at(x, face[0]), at(x, face[m]), at(x, face[m + 1]));
+    return sum;
+}
+
+} // namespace
+
+void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x,
+                      Index i, Scalar* out)
+{
+    // For the fan from corner 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
+    out[0] = out[1] = out[2] = 0;
+    for (const Index corner : topology.corners_of_vertex(i))
+    {
+        const Index f = topology.corner_face[corner];
+        const std::span<const Index> face = mesh.face(f);
+        const size_t n = face.size(), p = static_cast<size_t>(corner - mesh.face_offsets[f]);
+        const Scalar* a = at(x, face[0]);
+        if (p == 0)
+            for (size_t m = 1; m + 1 < n; ++m)
+                add_cross(at(x, face[m]), at(x, face[m + 1]), out);
+        else
+        {
+            if (p + 1 < n) // x_p is the middle corner of triangle (0, p, p+1)
+                add_cross(at(x, face[p + 1]), a, out);
+            if (p >= 2) // x_p is the last corner of triangle (0, p-1, p)
+                add_cross(a, at(x, face[p - 1]), out);
+        }
+    }
+}
+
+VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
+                                   std::span<const Scalar> x, std::span<const char> fixed)
+    : mesh_(&mesh), topology_(&topology)
+{
+    const Index nv = mesh.vertex_count(), nf = mesh.face_count();
+    // Components: the vertices joined by faces, numbered in order of their first face.
+    std::vector<Index> parent(nv);
+    std::iota(parent.begin(), parent.end(), Index(0));
+    for (Index f = 0; f < nf; ++f)
+    {
+        const std::span<const Index> face = mesh.face(f);
+        const Index a = find_root(parent, face[0]);
+        for (const Index v : face.subspan(1))
+        {
+            const Index b = find_root(parent, v);
+            if (b != a)
+                parent[b] = a;
+        }
+    }
+    std::vector<Index> label(nv, kInvalidIndex), face_component(nf);
+    Index count = 0;
+    for (Index f = 0; f < nf; ++f)
+    {
+        const Index root = find_root(parent, mesh.face(f)[0]);
+        if (label[root] == kInvalidIndex)
+            label[root] = count++;
+        face_component[f] = label[root];
+    }
+    // An edge is closed when exactly two faces traverse it, in opposite directions.
+    const Index ne = topology.edge_count();
+    std::vector<unsigned char> forward(ne, 0);
+    for (Index f = 0; f < nf; ++f)
+        for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
+            if (mesh.face_vertices[k] == topology.edge_vertices[2 * topology.corner_edge[k]])
+                forward[topology.corner_edge[k]] =
+                    static_cast<unsigned char>(std::min(forward[topology.corner_edge[k]] + 1, 2));
+    closed_.assign(count, 1);
+    for (Index f = 0; f < nf; ++f)
+        for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
+        {
+            const Index e = topology.corner_edge[k];
+            if (topology.edge_face_count(e) != 2 || forward[e] != 1)
+                closed_[face_component[f]] = 0;
+        }
+    // Faces and free vertices of each closed component, in CSR form.
+    face_offsets_.assign(static_cast<size_t>(count) + 1, 0);
+    vertex_offsets_.assign(static_cast<size_t>(count) + 1, 0);
+    for (Index f = 0; f < nf; ++f)
+        if (closed_[face_component[f]])
+            ++face_offsets_[face_component[f] + 1];
+    std::vector<Index> vertex_component(nv, kInvalidIndex);
+    for (Index v = 0; v < nv; ++v)
+        if (label[find_root(parent, v)] != kInvalidIndex &&
+            topology.corners_of_vertex(v).size() > 0)
+        {
+            vertex_component[v] = label[find_root(parent, v)];
+            if (closed_[vertex_component[v]] && !fixed[v])
+                ++vertex_offsets_[vertex_component[v] + 1];
+        }
+    std::partial_sum(face_offsets_.begin(), face_offsets_.end(), face_offsets_.begin());
+    std::partial_sum(vertex_offsets_.begin(), vertex_offsets_.end(), vertex_offsets_.begin());
+    faces_.resize(face_offsets_.back());
+    vertices_.resize(vertex_offsets_.back());
+    std::vector<Index> fill_faces(face_offsets_.begin(), face_offsets_.end() - 1);
+    std::vector<Index> fill_vertices(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
+    for (Index f = 0; f < nf; ++f)
+        if (closed_[face_component[f]])
+            faces_[fill_faces[face_component[f]]++] = f;
+    for (Index v = 0; v < nv; ++v)
+        if (vertex_component[v] != kInvalidIndex && closed_[vertex_component[v]] && !fixed[v])
+            vertices_[fill_vertices[vertex_component[v]]++] = v;
+
+    const Index closed = closed_component_count();
+    if (closed == 0)
+        throw RecipeError("volume",
+                          "the mesh has no closed component (each has a boundary, an edge of "
+                          "three or more faces, or faces of opposite orientations): it "
+                          "encloses no volume to keep");
+    target_.assign(count, 0);
+    for (Index c = 0; c < count; ++c)
+        if (closed_[c])
+            target_[c] = volume(c, x);
+    if (closed < count)
+    {
+        // The first face of the first few open components, in face order.
+        std::string first;
+        Index listed = 0;
+        std::vector<char> named(count, 0);
+        for (Index f = 0; f < nf && listed < 5; ++f)
+            if (!closed_[face_component[f]] && !named[face_component[f]])
+            {
+                named[face_component[f]] = 1;
+                first += (listed++ ? ", " : "") + std::to_string(f);
+            }
+        notes_.push_back(
+            "volume: " + std::to_string(count - closed) + " of " + std::to_string(count) +
+            " components are not closed (a boundary, an edge of three or more "
+            "faces, or faces of opposite orientations; first faces " +
+            first + (count - closed > listed ? ", ..." : "") + "): their volumes are not kept");
+    }
+    gradient_.assign(3 * static_cast<size_t>(nv), 0);
+    cubic_.assign(4 * faces_.size(), 0);
+}
+
+Index VolumeConstraint::closed_component_count() const
+{
+    return static_cast<Index>(std::count(closed_.begin(), closed_.end(), 1));
+}
+
+Scalar VolumeConstraint::volume(Index component, std::span<const Scalar> x) const
+{
+    if (!closed_[component])
+        return 0; // its faces are not listed: an open component encloses nothing
+    const Index begin = face_offsets_[component];
+    const Index n = face_offsets_[component + 1] - begin;
+    return deterministic_sum(n,
+                             [&](Index k) { return face_volume6(*mesh_, x, faces_[begin + k]); }) /
+           6;
+}
+
+void VolumeConstraint::project(std::span<Scalar> x)
+{
+    const Mesh& mesh = *mesh_;
+    const Topology& topology = *topology_;
+    Scalar* g = gradient_.data();
+    for (Index component = 0; component < component_count(); ++component)
+    {
+        const Index vbegin = vertex_offsets_[component],
+                    vcount = vertex_offsets_[component + 1] - vbegin;
+        if (!closed_[component] || vcount == 0)
+            continue;
+        // g_i = dV/dx_i (times 6), gathered over the corners of i: for the fan from corner
+        // 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
+        parallel_for(vcount, [&](Index k) {
+            const Index i = vertices_[vbegin + k];
+            volume_gradient6(mesh, topology, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
+        });
+        // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
+        // expanded in t.
+        // g stays 0 at fixed vertices: only free ones are ever written.
+        const Index fbegin = face_offsets_[component],
+                    fcount = face_offsets_[component + 1] - fbegin;
+        const std::span<const Scalar> direction = gradient_;
+        Scalar* cubic = cubic_.data();
+        parallel_for(fcount, [&](Index k) {
+            const std::span<const Index> face = mesh.face(faces_[fbegin + k]);
+            Scalar* out = &cubic[4 * static_cast<std::ptrdiff_t>(fbegin + k)];
+            out[0] = out[1] = out[2] = out[3] = 0;
+            const Scalar *a = at(x, face[0]), *ga = at(direction, face[0]);
+            for (size_t m = 1; m + 1 < face.size(); ++m)
+            {
+                const Scalar *b = at(x, face[m]), *c = at(x, face[m + 1]);
+                const Scalar *gb = at(direction, face[m]), *gc = at(direction, face[m + 1]);
+                out[0] += det3(a, b, c);
+                out[1] += det3(ga, b, c) + det3(a, gb, c) + det3(a, b, gc);
+                out[2] += det3(a, gb, gc) + det3(ga, b, gc) + det3(ga, gb, c);
+                out[3] += det3(ga, gb, gc);
+            }
+        });
+        Scalar coefficient[4];
+        for (int d = 0; d < 4; ++d)
+            coefficient[d] = deterministic_sum(fcount, [&](Index k) {
+                return cubic[4 * static_cast<std::ptrdiff_t>(fbegin + k) + d];
+            });
+        // Newton from t = 0 on 6 (V(t) - V_0). g is the gradient of 6 V, so the slope at 0
+        // is c1 = |g|^2: positive unless no free vertex moves the volume.
+        const Scalar goal = 6 * target_[component];
+        const auto residual = [&](Scalar t) {
+            return coefficient[0] - goal +
+                   t * (coefficient[1] + t * (coefficient[2] + t * coefficient[3]));
+        };
+        if (!(coefficient[1] > 0))
+            continue; // no free vertex moves the volume
+        Scalar t = 0;
+        for (int iteration = 0; iteration < 50; ++iteration)
+        {
+            const Scalar slope = coefficient[1] + t * (2 * coefficient[2] + 3 * t * coefficient[3]);
+            if (!(slope > 0))
+                break;
+            const Scalar next = t - residual(t) / slope;
+            if (next == t)
+                break;
+            t = next;
+            if (std::abs(residual(t)) <= 1e-15 * std::abs(goal))
+                break;
+        }
+        if (!std::isfinite(t))
+            continue;
+        parallel_for(vcount, [&](Index k) {
+            const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
+            for (int a = 0; a < 3; ++a)
+                x[i + a] += t * g[i + a];
+        });
+    }
+}
+
+} // namespace meshfair
