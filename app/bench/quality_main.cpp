@@ -1,0 +1,703 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// meshfair-quality: denoising quality as the mesh-denoising literature measures it (mean
+// normal angle, vertex distance to the clean surface, volume change, seams at a region's
+// border), of MeshFair's recipes run through the product path (read_recipe, smooth) and of
+// two reference filters written in app/bench/reference_filters.cpp, on the generated meshes
+// of app/bench/quality_meshes.h and the bundled bunny, under the noise models of
+// app/bench/quality_noise.h. One run, seeded: the same numbers on every machine.
+#include <CLI/CLI.hpp>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/bench/quality_meshes.h"
+#include "app/bench/quality_metrics.h"
+#include "app/bench/quality_noise.h"
+#include "app/bench/reference_filters.h"
+#include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
+#include "core/recipe/session.h"
+#include "core/solver/parallel.h"
+#include "core/topology/topology.h"
+
+namespace {
+
+using namespace meshfair;
+using namespace meshfair::bench;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr Scalar kNaN = std::numeric_limits<Scalar>::quiet_NaN();
+
+struct Options
+{
+    std::vector<std::string> recipes; //!< name=path; empty: assets/recipes/*.json
+    std::vector<std::string> meshes;  //!< empty: all (quick: cube)
+    std::string bunny = MESHFAIR_DEFAULT_MESH;
+    std::string out = "quality-results.tsv";
+    std::string markdown;
+    std::string write_meshes;
+    std::string denoise_preset = "denoise";
+    int taubin_pairs = TaubinSettings{}.pairs;
+    Scalar bilateral_sigma_r = BilateralSettings{}.sigma_r;
+    std::uint64_t seed = 1;
+    int threads = 0;
+    bool quick = false;
+};
+
+struct NamedRecipe
+{
+    std::string name;
+    Recipe recipe;
+};
+
+//! One line of the results: a method on one noisy mesh.
+struct Row
+{
+    std::string mesh, noise;
+    Scalar level = 0;
+    std::string method;
+    Scalar theta_deg = kNaN, ev = kNaN, dv_percent = kNaN, seconds = kNaN;
+    std::string note; //!< "refused: why" when the recipe did not fit the mesh
+};
+
+//! One line of the seam table.
+struct SeamRow
+{
+    std::string what; //!< "bunny experiment" or "mesh noise level"
+    std::string method;
+    SeamFigure figure;
+    std::string note;
+};
+
+struct MeshInfo
+{
+    std::string name;
+    Index vertices = 0, faces = 0;
+    Scalar mean_edge = 0;
+    bool is_closed = false, is_quads = false;
+};
+
+std::string format(const char* spec, double v)
+{
+    char buffer[64];
+    std::snprintf(buffer, sizeof buffer, spec, v);
+    return buffer;
+}
+
+std::string level_name(Scalar level)
+{
+    return format("%.1f", level);
+}
+
+//! FNV-1a of the base seed and the case's name: each mesh and case has its own stream.
+std::uint64_t case_seed(std::uint64_t base, const std::string& name)
+{
+    std::uint64_t h = 14695981039346656037ull ^ base;
+    for (const unsigned char c : name)
+        h = (h ^ c) * 1099511628211ull;
+    return h;
+}
+
+std::vector<NamedRecipe> load_recipes(const Options& o)
+{
+    std::vector<std::pair<std::string, std::string>> specs; // name, path
+    if (o.recipes.empty())
+    {
+        for (const auto& entry : fs::directory_iterator(MESHFAIR_RECIPES_DIR))
+            if (entry.path().extension() == ".json")
+                specs.emplace_back(entry.path().stem().string(), entry.path().string());
+        std::sort(specs.begin(), specs.end());
+    }
+    for (const std::string& spec : o.recipes)
+    {
+        const size_t eq = spec.find('=');
+        if (eq == std::string::npos)
+            specs.emplace_back(fs::path(spec).stem().string(), spec);
+        else
+            specs.emplace_back(spec.substr(0, eq), spec.substr(eq + 1));
+    }
+    std::vector<NamedRecipe> recipes;
+    std::set<std::string> names{"noisy", "bilateral", "taubin"};
+    for (const auto& [name, path] : specs)
+    {
+        if (name.empty() || name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQ"
+                                                   "RSTUVWXYZ0123456789_.-") != std::string::npos)
+            throw InvalidInputError("--recipe '" + name + "=" + path +
+                                    "': a name is letters, digits, '_', '.' or '-'");
+        if (!names.insert(name).second)
+            throw InvalidInputError("--recipe: the name '" + name + "' is taken");
+        try
+        {
+            recipes.push_back({name, read_recipe(path)});
+        }
+        catch (const InvalidInputError& e)
+        {
+            throw InvalidInputError("recipe '" + name + "': " + e.what());
+        }
+    }
+    return recipes;
+}
+
+std::vector<std::string> mesh_names(const Options& o)
+{
+    std::vector<std::string> known = generated_mesh_names();
+    known.push_back("bunny");
+    if (o.meshes.empty())
+        return o.quick ? std::vector<std::string>{"cube"} : known;
+    for (const std::string& name : o.meshes)
+        if (std::find(known.begin(), known.end(), name) == known.end())
+        {
+            std::string list;
+            for (const std::string& k : known)
+                list += (list.empty() ? "" : ", ") + k;
+            throw InvalidInputError("--meshes: unknown mesh '" + name + "' (known: " + list + ")");
+        }
+    return o.meshes;
+}
+
+Mesh load_mesh(const std::string& name, const Options& o)
+{
+    return name == "bunny" ? io::read_mesh(o.bunny) : generated_mesh(name);
+}
+
+//! The region's vertices: its listed vertices and the corners of its faces.
+std::vector<Index> region_vertices(const Region& region, const Mesh& mesh)
+{
+    std::vector<Index> v = region.vertices;
+    for (const Index f : region.faces)
+        for (const Index i : mesh.face(f))
+            v.push_back(i);
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+    return v;
+}
+
+void write_positions(const Mesh& mesh, std::span<const Scalar> x, const fs::path& path)
+{
+    fs::create_directories(path.parent_path());
+    Mesh copy = mesh;
+    copy.positions.assign(x.begin(), x.end());
+    io::write_mesh(copy, path.string());
+}
+
+double seconds_since(Clock::time_point start)
+{
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+//! Runs a recipe through the product path on a copy of `noisy`; false (and `note`) when
+//! the recipe does not fit the mesh.
+bool run_recipe(const Recipe& recipe, const Mesh& mesh, const Topology& topology,
+                std::span<const Scalar> noisy, std::vector<Scalar>& x, double& seconds,
+                std::string& note)
+{
+    Mesh m = mesh;
+    m.positions.assign(noisy.begin(), noisy.end());
+    const auto start = Clock::now();
+    try
+    {
+        smooth(m, topology, recipe);
+    }
+    catch (const InvalidInputError& e)
+    {
+        note = std::string("refused: ") + e.what();
+        return false;
+    }
+    catch (const SolverError& e)
+    {
+        note = std::string("refused: ") + e.what();
+        return false;
+    }
+    seconds = seconds_since(start);
+    x = std::move(m.positions);
+    return true;
+}
+
+class QualityRun
+{
+public:
+    QualityRun(Options o, std::vector<NamedRecipe> recipes)
+        : o_(std::move(o)), recipes_(std::move(recipes))
+    {
+    }
+
+    void run_mesh(const std::string& name);
+    void run_seam_experiment();
+    void write_tsv() const;
+    std::string markdown() const;
+
+private:
+    std::string noise_table(const std::string& noise, std::vector<std::string>& notes) const;
+    std::string time_table() const;
+    std::string seam_table() const;
+    Row measure(const std::string& mesh, const std::string& noise, Scalar level,
+                const std::string& method, const Mesh& m, std::span<const Scalar> x,
+                const SurfaceDistance& clean, bool is_closed, double seconds) const;
+    std::string goals() const;
+
+    Options o_;
+    std::vector<NamedRecipe> recipes_;
+    std::vector<MeshInfo> meshes_;
+    std::vector<Row> rows_;
+    std::vector<SeamRow> seams_;
+    std::string seam_setup_;
+};
+
+Row QualityRun::measure(const std::string& mesh, const std::string& noise, Scalar level,
+                        const std::string& method, const Mesh& m, std::span<const Scalar> x,
+                        const SurfaceDistance& clean, bool is_closed, double seconds) const
+{
+    Row row;
+    row.mesh = mesh, row.noise = noise, row.level = level, row.method = method;
+    row.theta_deg = mean_normal_angle_deg(m, x, m.positions);
+    row.ev = mean_relative_distance(clean, x);
+    if (is_closed)
+        row.dv_percent = volume_change_percent(m, x, m.positions);
+    row.seconds = seconds;
+    return row;
+}
+
+void QualityRun::run_mesh(const std::string& name)
+{
+    const Mesh mesh = load_mesh(name, o_);
+    const Topology topology = build_topology(mesh);
+    const SurfaceDistance clean(mesh, mesh.positions);
+    MeshInfo info{name,
+                  mesh.vertex_count(),
+                  mesh.face_count(),
+                  mean_edge_length(topology, mesh.positions),
+                  topology.boundary_edge_count == 0 && topology.singular_edge_count == 0,
+                  mesh.corner_count() == 4 * mesh.face_count()};
+    meshes_.push_back(info);
+    const fs::path dir = fs::path(o_.write_meshes) / name;
+    if (!o_.write_meshes.empty())
+        write_positions(mesh, mesh.positions, dir / "clean.obj");
+
+    std::vector<NoiseCase> cases = standard_noise_cases();
+    if (o_.quick)
+        cases = {{NoiseModel::GaussianNormal, 0.4}};
+    for (const NoiseCase& noise : cases)
+    {
+        const std::string noise_id = noise_name(noise.model), level = level_name(noise.level);
+        std::fprintf(stderr, "meshfair-quality: %s, %s %s\n", name.c_str(), noise_id.c_str(),
+                     level.c_str());
+        const std::vector<Scalar> noisy =
+            noisy_positions(mesh, noise, case_seed(o_.seed, name + "/" + noise_id + "/" + level));
+        const fs::path case_dir = dir / (noise_id + "-" + level);
+        const auto record = [&](const std::string& method, std::span<const Scalar> x,
+                                double seconds) {
+            rows_.push_back(measure(name, noise_id, noise.level, method, mesh, x, clean,
+                                    info.is_closed, seconds));
+            if (!o_.write_meshes.empty())
+                write_positions(mesh, x, case_dir / (method + ".obj"));
+        };
+        record("noisy", noisy, 0);
+
+        std::vector<Scalar> x = noisy;
+        auto start = Clock::now();
+        BilateralSettings bilateral;
+        bilateral.sigma_r = o_.bilateral_sigma_r;
+        bilateral_normal_filter(mesh, topology, x, bilateral);
+        record("bilateral", x, seconds_since(start));
+
+        x = noisy;
+        start = Clock::now();
+        taubin_smooth(topology, x, TaubinSettings{o_.taubin_pairs});
+        record("taubin", x, seconds_since(start));
+
+        for (const NamedRecipe& r : recipes_)
+        {
+            double seconds = 0;
+            std::string note;
+            if (!run_recipe(r.recipe, mesh, topology, noisy, x, seconds, note))
+            {
+                Row refused;
+                refused.mesh = name, refused.noise = noise_id, refused.level = noise.level;
+                refused.method = r.name, refused.note = note;
+                rows_.push_back(refused);
+                continue;
+            }
+            record(r.name, x, seconds);
+            if (r.recipe.region)
+                seams_.push_back(
+                    {name + " " + noise_id + " " + level, r.name,
+                     seam_figure(mesh, topology, x, region_vertices(*r.recipe.region, mesh)), ""});
+        }
+    }
+}
+
+void QualityRun::run_seam_experiment()
+{
+    // The bunny with Gaussian noise of 0.4 mean edge lengths along the normals; the region is
+    // the 30% of its vertices nearest to its highest vertex (largest y: the head and ears).
+    const Mesh bunny = io::read_mesh(o_.bunny);
+    const Topology topology = build_topology(bunny);
+    const NoiseCase noise{NoiseModel::GaussianNormal, 0.4};
+    const std::vector<Scalar> noisy = noisy_positions(bunny, noise, case_seed(o_.seed, "seam"));
+    const Index nv = bunny.vertex_count();
+    Index top = 0;
+    for (Index i = 1; i < nv; ++i)
+        if (bunny.positions[3 * i + 1] > bunny.positions[3 * top + 1])
+            top = i;
+    std::vector<Index> order(static_cast<size_t>(nv));
+    std::iota(order.begin(), order.end(), 0);
+    const auto distance2 = [&](Index i) {
+        Scalar d = 0;
+        for (int a = 0; a < 3; ++a)
+            d += std::pow(bunny.positions[3 * i + a] - bunny.positions[3 * top + a], 2);
+        return d;
+    };
+    std::stable_sort(order.begin(), order.end(),
+                     [&](Index a, Index b) { return distance2(a) < distance2(b); });
+    std::vector<Index> region(order.begin(), order.begin() + nv * 3 / 10);
+    std::sort(region.begin(), region.end());
+    const Scalar radius = region.empty() ? 0 : std::sqrt(distance2(order[region.size() - 1]));
+    seam_setup_ = "Bunny (" + std::to_string(nv) + " vertices), Gaussian noise along the " +
+                  "normals, s = 0.4; region: the " + std::to_string(region.size()) +
+                  " vertices (30%) within " + format("%.3f", radius) + " of vertex " +
+                  std::to_string(top) + " (the highest); each recipe with that region and " +
+                  "10 iterations.";
+    const fs::path dir = fs::path(o_.write_meshes) / "seam";
+    const auto record = [&](const std::string& method, std::span<const Scalar> x,
+                            const std::string& note) {
+        seams_.push_back({"bunny experiment", method,
+                          x.empty() ? SeamFigure{} : seam_figure(bunny, topology, x, region),
+                          note});
+        if (!o_.write_meshes.empty() && !x.empty())
+            write_positions(bunny, x, dir / (method + ".obj"));
+    };
+    record("clean", bunny.positions, "");
+    record("noisy", noisy, "");
+    if (!o_.write_meshes.empty())
+    {
+        std::ofstream list(dir / "region-vertices.txt");
+        for (const Index v : region)
+            list << v << "\n";
+    }
+    for (const NamedRecipe& r : recipes_)
+    {
+        Recipe recipe = r.recipe;
+        recipe.region = Region{region, {}};
+        recipe.iterations = 10;
+        std::vector<Scalar> x;
+        double seconds = 0;
+        std::string note;
+        if (!run_recipe(recipe, bunny, topology, noisy, x, seconds, note))
+            x.clear();
+        record(r.name, x, note);
+    }
+}
+
+void QualityRun::write_tsv() const
+{
+    if (o_.out.empty())
+        return;
+    const fs::path path(o_.out);
+    if (path.has_parent_path())
+        fs::create_directories(path.parent_path());
+    std::ostringstream s;
+    s << "mesh\tnoise\tlevel\tmethod\ttheta_deg\tev\tdv_percent\tseconds\tnote\n";
+    const auto number = [](Scalar v) {
+        return std::isnan(v) ? std::string("NA") : format("%.9g", v);
+    };
+    for (const Row& r : rows_)
+    {
+        std::string note = r.note;
+        std::replace_if(
+            note.begin(), note.end(), [](char c) { return c == '\t' || c == '\n'; }, ' ');
+        s << r.mesh << '\t' << r.noise << '\t' << level_name(r.level) << '\t' << r.method << '\t'
+          << number(r.theta_deg) << '\t' << number(r.ev) << '\t' << number(r.dv_percent) << '\t'
+          << number(r.seconds) << '\t' << note << '\n';
+    }
+    io::write_file_atomically(path.string(), s.str());
+}
+
+//! The Markdown separator of `columns` right-aligned columns.
+std::string separator(size_t columns)
+{
+    std::string s;
+    for (size_t k = 0; k < columns; ++k)
+        s += "---:|";
+    return s;
+}
+
+std::vector<std::string> method_names(const std::vector<NamedRecipe>& recipes)
+{
+    std::vector<std::string> names{"noisy", "bilateral", "taubin"};
+    for (const NamedRecipe& r : recipes)
+        names.push_back(r.name);
+    return names;
+}
+
+std::string QualityRun::goals() const
+{
+    std::ostringstream s;
+    s << "## Goals\n\n";
+    const auto is_generated = [](const std::string& mesh) { return mesh != "bunny"; };
+    const auto find = [&](const Row& like, const std::string& method) -> const Row* {
+        for (const Row& r : rows_)
+            if (r.mesh == like.mesh && r.noise == like.noise && r.level == like.level &&
+                r.method == method)
+                return &r;
+        return nullptr;
+    };
+    const auto preset = std::find_if(recipes_.begin(), recipes_.end(), [&](const NamedRecipe& r) {
+        return r.name == o_.denoise_preset;
+    });
+    if (preset == recipes_.end())
+        s << "- theta <= 0.85 x bilateral theta: skipped, no recipe named '" << o_.denoise_preset
+          << "' (--denoise-preset).\n";
+    else
+    {
+        int cases = 0;
+        std::vector<std::string> failures;
+        for (const Row& r : rows_)
+            if (r.method == "bilateral" && is_generated(r.mesh))
+            {
+                const Row* p = find(r, preset->name);
+                ++cases;
+                if (!p || std::isnan(p->theta_deg) || !(p->theta_deg <= 0.85 * r.theta_deg))
+                    failures.push_back(r.mesh + " " + r.noise + " " + level_name(r.level) + " (" +
+                                       (p ? format("%.2f", p->theta_deg) : "?") + " vs " +
+                                       format("%.2f", 0.85 * r.theta_deg) + ")");
+            }
+        s << "- theta(" << preset->name << ") <= 0.85 x theta(bilateral) on every generated "
+          << "mesh and noise case: " << (failures.empty() ? "PASS" : "FAIL") << " ("
+          << cases - static_cast<int>(failures.size()) << "/" << cases << ")";
+        for (size_t k = 0; k < failures.size(); ++k)
+            s << (k == 0 ? "; fails on " : ", ") << failures[k];
+        s << "\n";
+    }
+    for (const NamedRecipe& recipe : recipes_)
+    {
+        const Row* worst = nullptr;
+        int refused = 0;
+        for (const Row& r : rows_)
+            if (r.method == recipe.name)
+            {
+                if (!r.note.empty())
+                    ++refused;
+                else if (!std::isnan(r.dv_percent) &&
+                         (!worst || std::abs(r.dv_percent) > std::abs(worst->dv_percent)))
+                    worst = &r;
+            }
+        const bool ok = refused == 0 && (!worst || std::abs(worst->dv_percent) <= 0.5);
+        s << "- |dV| <= 0.5% for " << recipe.name
+          << " on the closed meshes: " << (ok ? "PASS" : "FAIL");
+        if (worst)
+            s << " (largest " << format("%+.3f", worst->dv_percent) << "% on " << worst->mesh << " "
+              << worst->noise << " " << level_name(worst->level) << ")";
+        if (refused)
+            s << ", refused on " << refused << " cases";
+        s << "\n";
+    }
+    return s.str();
+}
+
+std::string QualityRun::noise_table(const std::string& noise, std::vector<std::string>& notes) const
+{
+    const std::vector<std::string> methods = method_names(recipes_);
+    std::ostringstream s;
+    s << "\n## " << noise << "\n\n| mesh | s |";
+    for (const std::string& m : methods)
+        s << " " << m << " |";
+    s << "\n|---|---|" << separator(methods.size()) << "\n";
+    std::map<std::pair<std::string, Scalar>, std::map<std::string, const Row*>> table;
+    std::vector<std::pair<std::string, Scalar>> order;
+    for (const Row& r : rows_)
+        if (r.noise == noise)
+        {
+            const auto key = std::pair{r.mesh, r.level};
+            if (!table.contains(key))
+                order.push_back(key);
+            table[key][r.method] = &r;
+        }
+    for (const auto& key : order)
+    {
+        s << "| " << key.first << " | " << level_name(key.second) << " |";
+        for (const std::string& m : methods)
+        {
+            const auto it = table[key].find(m);
+            if (it == table[key].end())
+                s << " |";
+            else if (!it->second->note.empty())
+            {
+                s << " refused |";
+                notes.push_back(key.first + " " + noise + " " + m + ": " + it->second->note);
+            }
+            else
+                s << " " << format("%.2f", it->second->theta_deg) << " / "
+                  << format("%.3f", 1e3 * it->second->ev) << " / "
+                  << (std::isnan(it->second->dv_percent) ? std::string("-")
+                                                         : format("%+.2f", it->second->dv_percent))
+                  << " |";
+        }
+        s << "\n";
+    }
+    return s.str();
+}
+
+std::string QualityRun::time_table() const
+{
+    const std::vector<std::string> methods = method_names(recipes_);
+    std::ostringstream s;
+    s << "\n## Time (seconds of one run, mean over the noise cases)\n\n| mesh |";
+    for (size_t k = 1; k < methods.size(); ++k)
+        s << " " << methods[k] << " |";
+    s << "\n|---|" << separator(methods.size() - 1) << "\n";
+    for (const MeshInfo& mesh : meshes_)
+    {
+        s << "| " << mesh.name << " |";
+        for (size_t k = 1; k < methods.size(); ++k)
+        {
+            Scalar sum = 0;
+            int n = 0;
+            for (const Row& r : rows_)
+                if (r.mesh == mesh.name && r.method == methods[k] && r.note.empty())
+                    sum += r.seconds, ++n;
+            s << " " << (n ? format("%.3f", sum / n) : std::string("-")) << " |";
+        }
+        s << "\n";
+    }
+    return s.str();
+}
+
+std::string QualityRun::seam_table() const
+{
+    std::ostringstream s;
+    s << "\n## Seams\n\n"
+      << seam_setup_ << " Dihedral angles (degrees, 0 = flat), 95th "
+      << "percentile: border rings = edges with an end within 2 rings of the region's border "
+      << "ring (inside or out); inner border = those of them with both ends in the region; "
+      << "interior = edges inside the region further in. Edge counts in parentheses.\n\n"
+      << "| case | method | border rings p95 | inner border p95 | interior p95 |\n"
+      << "|---|---|---:|---:|---:|\n";
+    for (const SeamRow& r : seams_)
+    {
+        s << "| " << r.what << " | " << r.method << " | ";
+        const auto cell = [](Scalar p95, Index edges) {
+            return (std::isnan(p95) ? std::string("-") : format("%.2f", p95)) + " (" +
+                   std::to_string(edges) + ")";
+        };
+        if (!r.note.empty())
+            s << r.note << " | | |\n";
+        else
+            s << cell(r.figure.border_p95_deg, r.figure.border_edges) << " | "
+              << cell(r.figure.inner_border_p95_deg, r.figure.inner_border_edges) << " | "
+              << cell(r.figure.interior_p95_deg, r.figure.interior_edges) << " |\n";
+    }
+    return s.str();
+}
+
+std::string QualityRun::markdown() const
+{
+    std::ostringstream s;
+    s << "# MeshFair denoising quality (meshfair-quality, seed " << o_.seed << ")\n\n";
+    s << "| mesh | vertices | faces | mean edge | closed |\n|---|---:|---:|---:|---|\n";
+    for (const MeshInfo& m : meshes_)
+        s << "| " << m.name << " | " << m.vertices << " | " << m.faces
+          << (m.is_quads ? " quads" : "") << " | " << format("%.4f", m.mean_edge) << " | "
+          << (m.is_closed ? "yes" : "no") << " |\n";
+    s << "\nEach cell: theta (mean face-normal angle to the clean mesh, degrees) / E_v (mean "
+         "vertex distance to the clean surface, in 1e-3 of the bounding-box diagonal) / dV "
+         "(volume change, %). s: noise in mean edge lengths. Taubin: "
+      << o_.taubin_pairs << " lambda|mu pairs (0.5, -0.53); bilateral: 20 normal and 10 vertex "
+      << "iterations, sigma_r = " << o_.bilateral_sigma_r << ".\n";
+    std::vector<std::string> noises, notes;
+    for (const Row& r : rows_)
+        if (std::find(noises.begin(), noises.end(), r.noise) == noises.end())
+            noises.push_back(r.noise);
+    for (const std::string& noise : noises)
+        s << noise_table(noise, notes);
+    for (const std::string& n : notes)
+        s << "\n- " << n;
+    s << (notes.empty() ? "" : "\n") << time_table() << seam_table() << "\n" << goals();
+    return s.str();
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    CLI::App app{
+        "meshfair-quality: denoising quality of MeshFair's recipes against a bilateral "
+        "normal filter and Taubin smoothing, on generated meshes with creases and the "
+        "bunny"};
+    Options o;
+    app.add_option("--recipe", o.recipes,
+                   "a recipe as NAME=PATH (repeatable; default: every assets/recipes/*.json, "
+                   "named by its stem)");
+    app.add_option("--meshes", o.meshes,
+                   "meshes to run, comma-separated: cube, cylinder, cad-part, cut-sphere, "
+                   "quad-box, bunny (default: all)")
+        ->delimiter(',');
+    app.add_option("--bunny", o.bunny, "the bunny's file")->check(CLI::ExistingFile);
+    app.add_option("--out", o.out, "results, one row per mesh, noise case and method (TSV)");
+    app.add_option("--markdown", o.markdown, "also write the Markdown report there");
+    app.add_option("--write-meshes", o.write_meshes,
+                   "write the clean, noisy and smoothed meshes (OBJ) under this directory");
+    app.add_option("--denoise-preset", o.denoise_preset,
+                   "the recipe the theta goal is checked for");
+    app.add_option("--taubin-pairs", o.taubin_pairs, "lambda|mu pairs of Taubin smoothing")
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--bilateral-sigma-r", o.bilateral_sigma_r,
+                   "range width of the bilateral normal filter (on |n_f - n_g|)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--seed", o.seed, "base seed of the noise");
+    app.add_option("--threads", o.threads, "threads (default: all cores)")
+        ->check(CLI::Range(1, 1024));
+    app.add_flag("--quick", o.quick,
+                 "smoke configuration: the cube (unless --meshes), Gaussian noise along the "
+                 "normals at s = 0.4 only");
+    try
+    {
+        app.parse(argc, argv);
+    }
+    catch (const CLI::ParseError& e)
+    {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    set_thread_count(o.threads);
+    try
+    {
+        const auto start = Clock::now();
+        std::vector<NamedRecipe> recipes = load_recipes(o);
+        const std::vector<std::string> meshes = mesh_names(o);
+        QualityRun run(o, std::move(recipes));
+        for (const std::string& name : meshes)
+            run.run_mesh(name);
+        run.run_seam_experiment();
+        run.write_tsv();
+        const std::string report = run.markdown();
+        std::cout << report;
+        if (!o.markdown.empty())
+            io::write_file_atomically(o.markdown, report);
+        std::fprintf(stderr, "meshfair-quality: done in %.1f s\n", seconds_since(start));
+        return 0;
+    }
+    catch (const InvalidInputError& e)
+    {
+        std::fprintf(stderr, "meshfair-quality: %s\n", e.what());
+        return 2;
+    }
+    catch (const std::exception& e)
+    {
+        std::fprintf(stderr, "meshfair-quality: %s\n", e.what());
+        return 1;
+    }
+}
