@@ -67,7 +67,7 @@ if [ "$mode" = run ]; then
     "$cli" noise assets/bunny.obj -o "$out/bunny-noisy.obj" --sigma 0.3 --seed 1
     echo "wrote $out/bunny-noisy.obj (Gaussian noise, sigma = 0.3 mean edge lengths)"
     "$cli" smooth "$out/bunny-noisy.obj" -o "$out/bunny-smoothed.obj" \
-        --recipe assets/recipes/combined.json --report "$out/report.json"
+        --recipe assets/recipes/denoise.json --report "$out/report.json"
     echo
     echo "report ($out/report.json):"
     cat "$out/report.json"
