@@ -287,6 +287,22 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                               "needs a \"normal\" section (its faces and mu couple x "
                               "and u)");
     }
+    if (r.falloff)
+    {
+        const Falloff& f = *r.falloff;
+        if (!(std::isfinite(f.radius) && f.radius >= 0))
+            throw RecipeError("falloff.radius", "must be finite and >= 0");
+        check_weight(f.mu, "falloff.mu");
+        if (!f.border && !f.pins)
+            throw RecipeError("falloff.around", "must name \"border\", \"pins\" or both");
+        if (!(f.border && r.region) && !(f.pins && r.hard && !r.hard->vertices.empty()))
+            throw RecipeError(
+                "falloff",
+                std::string("has nothing to fade from: it needs ") +
+                    (f.border && f.pins ? "a \"region\" (its border) or \"hard\" vertices (pins)"
+                     : f.border         ? "a \"region\" (around: border)"
+                                        : "\"hard\" vertices (around: pins)"));
+    }
     if (r.method == Method::Taubin)
     {
         if (!(std::isfinite(r.taubin_mu) && r.taubin_mu < -r.lambda))

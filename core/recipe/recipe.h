@@ -9,6 +9,7 @@
 
 #include "core/energies/bilateral_face_weights.h"
 #include "core/energies/face_centroid_term.h"
+#include "core/energies/falloff.h"
 #include "core/mesh/mesh.h"
 
 namespace meshfair {
@@ -116,6 +117,23 @@ struct Joint
     Scalar gamma = 1;
 };
 
+//! \brief Soft anchors that fade with the distance along the surface from the fixed rest
+//! around a region (its border) and from the pins (hard vertices): vertex i at distance d
+//! is held with mu * curve(d / radius) (0 from the radius on), toward its input position
+//! near the border and toward its input position moved by the same fraction of its
+//! nearest pin's displacement near a pin (Blender's proportional editing), so the smoothed
+//! patch meets the rest without a seam and a dragged pin raises a smooth bump. The anchors
+//! add to the soft section's (docs/math.md, "Falloff").
+struct Falloff
+{
+    Scalar radius = 8;
+    bool radius_in_edge_lengths = true; //!< radius in mean edge lengths, else mesh units
+    FalloffCurve curve = FalloffCurve::Smooth;
+    Scalar mu = 1;
+    bool border = true; //!< fade from the region's border (with a region)
+    bool pins = true;   //!< fade from the hard vertices (with hard vertices)
+};
+
 //! Keep the enclosed volume of every closed component (VolumeConstraint).
 struct KeepVolume
 {
@@ -142,6 +160,7 @@ struct Recipe
     std::optional<NormalSmoothing> normal_smoothing;
     std::optional<Joint> joint;
     std::optional<KeepVolume> volume;
+    std::optional<Falloff> falloff;
 };
 
 //! \brief Checks a recipe against a mesh: indices in range and not repeated (nor in two

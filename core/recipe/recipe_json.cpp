@@ -446,12 +446,66 @@ BilateralWeights parse_bilateral(const Json& s)
     return b;
 }
 
+constexpr std::pair<const char*, FalloffCurve> kFalloffCurves[] = {
+    {"smooth", FalloffCurve::Smooth}, {"sphere", FalloffCurve::Sphere},
+    {"root", FalloffCurve::Root},     {"linear", FalloffCurve::Linear},
+    {"sharp", FalloffCurve::Sharp},   {"constant", FalloffCurve::Constant}};
+
+Falloff parse_falloff(const Json& s)
+{
+    expect_object(s, "falloff", {"radius", "units", "curve", "mu", "around"});
+    Falloff f;
+    if (s.contains("radius"))
+        f.radius = weight(s["radius"], "falloff.radius");
+    if (s.contains("units"))
+    {
+        if (s["units"] == "edge_lengths")
+            f.radius_in_edge_lengths = true;
+        else if (s["units"] == "mesh")
+            f.radius_in_edge_lengths = false;
+        else
+            throw RecipeError("falloff.units", "must be \"edge_lengths\" or \"mesh\"");
+    }
+    if (s.contains("curve"))
+    {
+        bool known = false;
+        for (const auto& [name, curve] : kFalloffCurves)
+            if (s["curve"] == name)
+            {
+                f.curve = curve;
+                known = true;
+            }
+        if (!known)
+            throw RecipeError("falloff.curve",
+                              "must be \"smooth\", \"sphere\", \"root\", "
+                              "\"linear\", \"sharp\" or \"constant\"");
+    }
+    if (s.contains("mu"))
+        f.mu = weight(s["mu"], "falloff.mu");
+    if (s.contains("around"))
+    {
+        const Json& a = s["around"];
+        if (!a.is_array() || a.empty())
+            throw RecipeError("falloff.around",
+                              "must be a non-empty list of \"border\" and \"pins\"");
+        f.border = f.pins = false;
+        for (size_t k = 0; k < a.size(); ++k)
+            if (a[k] == "border")
+                f.border = true;
+            else if (a[k] == "pins")
+                f.pins = true;
+            else
+                throw RecipeError(item("falloff.around", k), "must be \"border\" or \"pins\"");
+    }
+    return f;
+}
+
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
     expect_object(j, "",
                   {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
-                   "soft", "centroid", "normal", "normal_smoothing", "joint", "volume"});
+                   "soft", "centroid", "normal", "normal_smoothing", "joint", "volume", "falloff"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -554,6 +608,8 @@ Recipe parse_recipe_json(const Json& j)
         expect_object(j["volume"], "volume", {});
         r.volume = KeepVolume{};
     }
+    if (j.contains("falloff"))
+        r.falloff = parse_falloff(j["falloff"]);
     return r;
 }
 
@@ -718,6 +774,24 @@ nlohmann::json recipe_to_json(const Recipe& r)
         j["joint"] = {{"gamma", r.joint->gamma}};
     if (r.volume)
         j["volume"] = Json::object();
+    if (r.falloff)
+    {
+        const Falloff& f = *r.falloff;
+        const char* curve = "smooth";
+        for (const auto& [name, c] : kFalloffCurves)
+            if (c == f.curve)
+                curve = name;
+        Json around = Json::array();
+        if (f.border)
+            around.push_back("border");
+        if (f.pins)
+            around.push_back("pins");
+        j["falloff"] = {{"radius", f.radius},
+                        {"units", f.radius_in_edge_lengths ? "edge_lengths" : "mesh"},
+                        {"curve", curve},
+                        {"mu", f.mu},
+                        {"around", around}};
+    }
     return j;
 }
 

@@ -6,6 +6,7 @@
 #include <array>
 #include <utility>
 
+#include "core/energies/falloff.h"
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
@@ -119,7 +120,12 @@ void Session::precompute()
     // positions directly: no gathered copies (a million-vertex mesh would keep their
     // freed pages resident).
     soft_.reset();
-    if (recipe_.soft)
+    falloff_pin_ = {};
+    falloff_base_ = {};
+    falloff_share_ = {};
+    if (recipe_.falloff)
+        build_falloff_anchors(fixed, is_hard);
+    else if (recipe_.soft)
     {
         const SoftVertices& s = *recipe_.soft;
         std::vector<Index> vertices;
@@ -286,6 +292,111 @@ void Session::precompute()
     }
 }
 
+void Session::build_falloff_anchors(const std::vector<char>& fixed,
+                                    const std::vector<char>& is_hard)
+{
+    // Every anchor of a vertex, the soft section's and the falloff's, merges into one:
+    // sum_c m_c |x - t_c|^2 = M |x - (sum_c m_c t_c) / M|^2 + const, M = sum_c m_c.
+    const Mesh& mesh = *mesh_;
+    const Index nv = mesh.vertex_count();
+    const std::span<const Scalar> x0 = mesh.positions;
+    const Falloff& f = *recipe_.falloff;
+    std::vector<Scalar> weight(nv, 0), target_sum(3 * static_cast<size_t>(nv), 0);
+    std::vector<Scalar> pin_sum(3 * static_cast<size_t>(nv), 0); // sum of m w (pin moves)
+    std::vector<Scalar> pin_share(nv, 0);
+    std::vector<Index> pin(nv, kInvalidIndex);
+    const auto add = [&](Index v, Scalar m, const Scalar* t) {
+        weight[v] += m;
+        for (int a = 0; a < 3; ++a)
+            target_sum[3 * v + a] += m * t[a];
+    };
+    if (recipe_.soft)
+    {
+        const SoftVertices& s = *recipe_.soft;
+        const std::vector<Scalar> targets = flatten(s.targets);
+        const auto one = [&](Index v, size_t k) {
+            const Scalar m = s.weights.empty() ? s.mu : s.mu * s.weights[s.vertices.all ? v : k];
+            const Scalar* t = targets.empty()
+                                  ? &x0[3 * v]
+                                  : &targets[3 * (s.vertices.all ? static_cast<size_t>(v) : k)];
+            add(v, m, t);
+        };
+        if (s.vertices.all)
+        {
+            for (Index v = 0; v < nv; ++v)
+                if (!is_hard[v])
+                    one(v, 0);
+        }
+        else
+            for (size_t k = 0; k < s.vertices.indices.size(); ++k)
+                one(s.vertices.indices[k], k);
+    }
+    const Scalar radius =
+        f.radius * (f.radius_in_edge_lengths ? mean_neighbor_edge_length(*topology_, x0) : 1);
+    if (f.border && recipe_.region)
+    {
+        // From the rest's ring around the region: the fixed vertices (not pins) next to a
+        // free one.
+        std::vector<Index> ring;
+        for (Index v = 0; v < nv; ++v)
+            if (fixed[v] && !is_hard[v] &&
+                std::ranges::any_of(topology_->neighbors(v), [&](Index j) { return !fixed[j]; }))
+                ring.push_back(v);
+        const SurfaceDistances d = surface_distances(*topology_, x0, ring, radius);
+        for (Index v = 0; v < nv; ++v)
+            if (!fixed[v])
+                if (const Scalar w = falloff_weight(f.curve, d.distance[v], radius); w > 0)
+                    add(v, f.mu * w, &x0[3 * v]);
+    }
+    if (f.pins && !hard_.empty())
+    {
+        const SurfaceDistances d = surface_distances(*topology_, x0, hard_, radius);
+        for (Index v = 0; v < nv; ++v)
+            if (!fixed[v])
+                if (const Scalar w = falloff_weight(f.curve, d.distance[v], radius); w > 0)
+                {
+                    // Toward x0 moved by w times the nearest pin's displacement (set apart,
+                    // so that moving the pins moves these targets: set_hard_targets).
+                    add(v, f.mu * w, &x0[3 * v]);
+                    pin[v] = d.source[v];
+                    pin_share[v] = f.mu * w * w;
+                }
+    }
+    std::vector<Index> vertices;
+    std::vector<Scalar> weights;
+    for (Index v = 0; v < nv; ++v)
+        if (!fixed[v] && weight[v] > 0)
+        {
+            vertices.push_back(v);
+            weights.push_back(weight[v]);
+            falloff_pin_.push_back(pin[v]);
+            for (int a = 0; a < 3; ++a)
+                falloff_base_.push_back(target_sum[3 * v + a] / weight[v]);
+            falloff_share_.push_back(pin_share[v] / weight[v]);
+        }
+    if (std::ranges::none_of(falloff_pin_, [](Index k) { return k != kInvalidIndex; }))
+        falloff_pin_ = {}; // no pin moves any target
+    soft_.emplace(nv, std::move(vertices), Scalar(1), std::span<const Scalar>{}, weights);
+    update_falloff_targets();
+}
+
+void Session::update_falloff_targets()
+{
+    if (falloff_pin_.empty())
+    {
+        soft_->set_targets(falloff_base_);
+        return;
+    }
+    std::vector<Scalar> targets = falloff_base_;
+    const std::span<const Scalar> x0 = mesh_->positions;
+    for (size_t k = 0; k < falloff_pin_.size(); ++k)
+        if (const Index p = falloff_pin_[k]; p != kInvalidIndex && !hard_targets_.empty())
+            for (int a = 0; a < 3; ++a)
+                targets[3 * k + a] +=
+                    falloff_share_[k] * (hard_targets_[3 * p + a] - x0[3 * hard_[p] + a]);
+    soft_->set_targets(targets);
+}
+
 void Session::factor_blocks()
 {
     for (const Index i : free_)
@@ -317,6 +428,8 @@ void Session::set_hard_targets(std::span<const Scalar> targets)
         throw InvalidInputError("Session::set_hard_targets: expected " +
                                 std::to_string(3 * hard_.size()) + " values");
     hard_targets_.assign(targets.begin(), targets.end());
+    if (!falloff_pin_.empty())
+        update_falloff_targets(); // the anchors around the pins follow them
 }
 
 void Session::set_soft_targets(std::span<const Scalar> targets)

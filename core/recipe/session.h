@@ -142,6 +142,10 @@ public:
 
 private:
     void precompute();
+    //! The soft term from the soft section's anchors and the falloff's, merged per vertex.
+    void build_falloff_anchors(const std::vector<char>& fixed, const std::vector<char>& is_hard);
+    //! The merged soft targets for the current hard targets (the falloff moves with pins).
+    void update_falloff_targets();
     void factor_blocks();
     //! True when step() can be fused: the Jacobi method with a fixed lambda and fixed
     //! normals (no line search, no joint mode).
@@ -191,6 +195,11 @@ private:
     std::optional<JointTerm> joint_;
     int joint_steps_ = 0; //!< joint steps since the precomputation (for reweighting)
     std::optional<VolumeConstraint> volume_;
+    //! Falloff, per soft vertex: its nearest pin (index into hard_) or kInvalidIndex, its
+    //! target with the pins unmoved (3 each) and the share of the pin's displacement it
+    //! follows. Empty without falloff; falloff_pin_ is empty when no pin moves a target.
+    std::vector<Index> falloff_pin_;
+    std::vector<Scalar> falloff_base_, falloff_share_;
 
     std::vector<Scalar> normals_; //!< 3 #F
     std::vector<Scalar> smoothing_trace_;

@@ -89,7 +89,7 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
-              "volume)");
+              "volume, falloff)");
         CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
               "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets, weights)");
         CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==
@@ -203,6 +203,29 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"method": "taubin", "normal": {"faces": "all"}, "joint": {}})") ==
               "recipe: joint: is not available with method \"taubin\" (the normals have no "
               "lambda|mu pair)");
+        const Recipe f = parse_recipe(R"({"region": {"vertices": [1]}, "falloff": {"radius": 0.5,
+            "units": "mesh", "curve": "sphere", "mu": 2, "around": ["border"]}})",
+                                      "r.json");
+        REQUIRE(f.falloff.has_value());
+        CHECK(f.falloff->radius == 0.5);
+        CHECK(!f.falloff->radius_in_edge_lengths);
+        CHECK(f.falloff->curve == FalloffCurve::Sphere);
+        CHECK(f.falloff->mu == 2);
+        CHECK(f.falloff->border);
+        CHECK(!f.falloff->pins);
+        CHECK(recipe_to_json(parse_recipe(recipe_to_json(f).dump(), "again.json")) ==
+              recipe_to_json(f));
+        CHECK(error_of(R"({"falloff": {"radius": -2}})") ==
+              "'r.json': falloff.radius: must be >= 0 (got -2)");
+        CHECK(error_of(R"({"falloff": {"curve": "bell"}})") ==
+              "'r.json': falloff.curve: must be \"smooth\", \"sphere\", \"root\", \"linear\", "
+              "\"sharp\" or \"constant\"");
+        CHECK(error_of(R"({"falloff": {"units": "cm"}})") ==
+              "'r.json': falloff.units: must be \"edge_lengths\" or \"mesh\"");
+        CHECK(error_of(R"({"falloff": {"around": []}})") ==
+              "'r.json': falloff.around: must be a non-empty list of \"border\" and \"pins\"");
+        CHECK(error_of(R"({"falloff": {"around": ["border", "edges"]}})") ==
+              "'r.json': falloff.around[1]: must be \"border\" or \"pins\"");
         // In code, where the parser cannot refuse them first.
         Recipe bad;
         bad.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Smoothed, {}};
