@@ -4,10 +4,12 @@
 
 #include <doctest/doctest.h>
 
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include "core/recipe/session.h"
+#include "core/solver/parallel.h"
 #include "core/solver/solver.h"
 #include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
@@ -59,6 +61,22 @@ void check_reaches_direct_minimizer(const Mesh& m, const Topology& t,
                 CHECK(x.positions[static_cast<size_t>(k)] ==
                       doctest::Approx(expected[static_cast<size_t>(k)]).scale(1).epsilon(1e-9));
         }
+}
+
+void check_same_bits_on_one_and_two_threads(const Mesh& m, const Topology& t, const Recipe& r)
+{
+    std::vector<std::vector<Scalar>> results;
+    for (const int threads : {1, 2})
+    {
+        set_thread_count(threads);
+        Mesh x = m;
+        smooth(x, t, r);
+        results.push_back(x.positions);
+    }
+    set_thread_count(0);
+    CHECK(std::memcmp(results[0].data(), results[1].data(), results[0].size() * sizeof(Scalar)) ==
+          0);
+    CHECK(results[0] != m.positions);
 }
 
 } // namespace meshfair::test

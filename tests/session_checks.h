@@ -32,4 +32,7 @@ void check_energy_never_increases(const Mesh& m, const Topology& t,
 void check_reaches_direct_minimizer(const Mesh& m, const Topology& t,
                                     std::span<const RecipeCase> cases);
 
+//! \brief smooth(m, t, r) on one thread and on two give the same bits, and move the mesh.
+void check_same_bits_on_one_and_two_threads(const Mesh& m, const Topology& t, const Recipe& r);
+
 } // namespace meshfair::test

@@ -86,18 +86,9 @@ std::vector<Scalar> vertex_normals(const Mesh& mesh, std::span<const Scalar> x)
     std::vector<Scalar> normals(3 * static_cast<size_t>(mesh.vertex_count()), 0);
     for (Index f = 0; f < mesh.face_count(); ++f)
     {
-        // Newell's area vector (twice the area times the unit normal); the factor 2 is the
-        // same for every face and goes with the normalization.
+        // Newell's area vector: the area times the unit normal (area weighting).
+        const Vec3 n = face_area_vector(mesh, x, f);
         const auto face = mesh.face(f);
-        Vec3 n{0, 0, 0};
-        for (size_t k = 0; k < face.size(); ++k)
-        {
-            const Scalar* p = &x[3 * face[k]];
-            const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
-            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        }
         for (const Index v : face)
             for (int a = 0; a < 3; ++a)
                 normals[3 * v + a] += n[a];

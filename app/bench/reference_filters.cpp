@@ -14,22 +14,6 @@ namespace meshfair::bench {
 
 namespace {
 
-// Newell's area vector of face f (its length is the area of a planar polygon).
-Vec3 area_vector(const Mesh& mesh, std::span<const Scalar> x, Index f)
-{
-    const auto face = mesh.face(f);
-    Vec3 n{0, 0, 0};
-    for (size_t k = 0; k < face.size(); ++k)
-    {
-        const Scalar* p = &x[3 * face[k]];
-        const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
-        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    return {n[0] / 2, n[1] / 2, n[2] / 2};
-}
-
 Scalar distance2(const Scalar* a, const Scalar* b)
 {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
@@ -80,7 +64,7 @@ void bilateral_normal_filter(const Mesh& mesh, const Topology& topology, std::sp
     std::vector<Scalar> areas(static_cast<size_t>(nf));
     for (Index f = 0; f < nf; ++f)
     {
-        const Vec3 n = area_vector(mesh, x, f);
+        const Vec3 n = face_area_vector(mesh, x, f);
         areas[f] = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     }
     Scalar spacing = 0;

@@ -60,7 +60,8 @@ Scalar mean_dual_edge_length(const Mesh& mesh, const Topology& topology, std::sp
         const Vec3 a = face_centroid(mesh, x, d[k]), b = face_centroid(mesh, x, d[k + 1]);
         sum += std::sqrt(squared_distance3(a.data(), b.data()));
     }
-    return sum / static_cast<Scalar>(d.size() / 2);
+    const size_t pairs = d.size() / 2;
+    return sum / static_cast<Scalar>(pairs);
 }
 
 BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& topology,

@@ -7,7 +7,10 @@
 
 namespace meshfair {
 
-Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f)
+namespace {
+
+//! Twice Newell's vector: the normal's unnormalized sum, as face_normal has always summed it.
+Vec3 newell_sum(const Mesh& mesh, std::span<const Scalar> x, Index f)
 {
     const auto face = mesh.face(f);
     Vec3 n{0, 0, 0};
@@ -19,6 +22,20 @@ Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f)
         n[1] += (p[2] - q[2]) * (p[0] + q[0]);
         n[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
+    return n;
+}
+
+} // namespace
+
+Vec3 face_area_vector(const Mesh& mesh, std::span<const Scalar> x, Index f)
+{
+    const Vec3 n = newell_sum(mesh, x, f);
+    return {n[0] / 2, n[1] / 2, n[2] / 2};
+}
+
+Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f)
+{
+    const Vec3 n = newell_sum(mesh, x, f);
     const Scalar len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 0))
         return {0, 0, 0};

@@ -33,6 +33,10 @@ inline Vec3 face_centroid(const Mesh& mesh, std::span<const Scalar> x, Index f)
     return c;
 }
 
+//! \brief Newell's vector of face f: the sum over its corners of the cross products of
+//! consecutive positions, halved; for a planar polygon, its area times its unit normal.
+Vec3 face_area_vector(const Mesh& mesh, std::span<const Scalar> x, Index f);
+
 //! \brief Unit normal of face f by Newell's method (the normalized sum of the cross
 //! products of consecutive corners), well defined for non-planar polygons; the zero
 //! vector for a face of zero area.

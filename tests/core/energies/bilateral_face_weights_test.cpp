@@ -15,6 +15,7 @@
 #include "core/solver/parallel.h"
 #include "tests/energy_checks.h"
 #include "tests/helpers.h"
+#include "tests/session_checks.h"
 
 using namespace meshfair;
 
@@ -267,18 +268,7 @@ TEST_SUITE("BilateralFaceWeights")
                 CAPTURE(joint);
                 r.normal_smoothing->bilateral = BilateralWeights{1.0, 0.35, 2, n};
                 r.joint = joint ? std::optional<Joint>(Joint{1.0}) : std::nullopt;
-                std::vector<std::vector<Scalar>> results;
-                for (const int threads : {1, 2})
-                {
-                    set_thread_count(threads);
-                    Mesh x = m;
-                    smooth(x, t, r);
-                    results.push_back(x.positions);
-                }
-                set_thread_count(0);
-                CHECK(std::memcmp(results[0].data(), results[1].data(),
-                                  results[0].size() * sizeof(Scalar)) == 0);
-                CHECK(results[0] != m.positions);
+                test::check_same_bits_on_one_and_two_threads(m, t, r);
             }
     }
 }
