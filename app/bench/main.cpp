@@ -368,6 +368,9 @@ private:
         Session& combined_session = setup.combined;
         Session region_session(work, setup.work_topology,
                                setup.internal(combined_recipe(patch_region(mesh, 0.1))));
+        // The denoising preset as users run it (bilateral normals, integration, volume).
+        Session denoise_session(work, setup.work_topology,
+                                setup.internal(read_recipe(MESHFAIR_DENOISE_RECIPE)));
         bench::OpenMeshPeer peer(mesh);
 
         // Same update? 10 steps of each from the input positions.
@@ -423,6 +426,8 @@ private:
                 .samples.push_back(time_steps(combined_session, work.positions));
             figure("combined step, 10% region", n, order, "meshfair", "s")
                 .samples.push_back(time_steps(region_session, work.positions));
+            figure("denoise.json step", n, order, "meshfair", "s")
+                .samples.push_back(time_steps(denoise_session, work.positions));
         }
         const double bandwidth = figure("bandwidth (triad)", n, order, "machine", "B/s").median();
         figure("plain step bound", n, order, "machine", "s").samples = {plain_bytes / bandwidth};
@@ -525,6 +530,11 @@ private:
                           combined_bound * 1e3, cycles(c, omp_get_max_threads()));
             print_row(c, note);
         }
+        const Figure& denoise = get("denoise.json step", "meshfair");
+        std::snprintf(note, sizeof note, "  %.2fx the combined step; %.2fx plain",
+                      denoise.median() / get("combined step", "meshfair").median(),
+                      denoise.median() / plain.median());
+        print_row(denoise, note);
     }
 
     void write_tsv()
