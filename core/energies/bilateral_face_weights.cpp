@@ -47,6 +47,13 @@ void vertex_neighborhoods(const Mesh& mesh, const Topology& topology, std::vecto
     }
 }
 
+//! Every k-th neighbour entry goes into the median, so that at most 2^20 do.
+size_t sample_stride(size_t entries)
+{
+    constexpr size_t kMaxSample = size_t(1) << 20;
+    return std::max<size_t>(1, (entries + kMaxSample - 1) / kMaxSample);
+}
+
 } // namespace
 
 Scalar mean_dual_edge_length(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x)
@@ -70,6 +77,8 @@ BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& top
     : mesh_(&mesh),
       sigma_s_(settings.sigma_s * mean_dual_edge_length(mesh, topology, x)),
       sigma_r_(settings.sigma_r),
+      noise_scale_(settings.noise_scale),
+      effective_sigma_r_(settings.sigma_r),
       reweight_every_(settings.reweight_every)
 {
     if (settings.neighbors == FaceNeighborhood::Vertex)
@@ -86,6 +95,10 @@ BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& top
     for (Index f = 0; f < nf; ++f)
         weight_sum_[f] = static_cast<Scalar>(offsets_[f + 1] - offsets_[f]);
     centroids_.assign(3 * static_cast<size_t>(nf), 0);
+    if (noise_scale_ > 0)
+        sample_.assign((neighbors_.size() + sample_stride(neighbors_.size()) - 1) /
+                           sample_stride(neighbors_.size()),
+                       0);
 }
 
 void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const Scalar> u)
@@ -98,7 +111,23 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
     });
     // 1 / 2 sigma^2, or 0 for a spatial factor of 1 (sigma_s = 0: no scale to measure).
     const Scalar spatial_rate = sigma_s_ > 0 ? Scalar(1) / (2 * sigma_s_ * sigma_s_) : 0;
-    const Scalar range_rate = Scalar(1) / (2 * sigma_r_ * sigma_r_);
+    effective_sigma_r_ = sigma_r_;
+    if (!sample_.empty())
+    {
+        // Each pair is listed from both faces: the median of the listings is the pairs'.
+        const size_t stride = sample_stride(neighbors_.size());
+        Scalar* sample = sample_.data();
+        parallel_for(nf, [&](Index f) {
+            for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
+                if (static_cast<size_t>(k) % stride == 0)
+                    sample[static_cast<size_t>(k) / stride] =
+                        std::sqrt(squared_distance3(&u[3 * f], &u[3 * neighbors_[k]]));
+        });
+        const auto middle = sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2);
+        std::nth_element(sample_.begin(), middle, sample_.end());
+        effective_sigma_r_ = std::max(sigma_r_, noise_scale_ * *middle);
+    }
+    const Scalar range_rate = Scalar(1) / (2 * effective_sigma_r_ * effective_sigma_r_);
     parallel_for(nf, [&](Index f) {
         Scalar sum = 0;
         for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
@@ -116,8 +145,8 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
 
 Scalar BilateralFaceWeights::robust_energy(std::span<const Scalar> u) const
 {
-    const Scalar range_rate = Scalar(1) / (2 * sigma_r_ * sigma_r_);
-    const Scalar scale = sigma_r_ * sigma_r_;
+    const Scalar range_rate = Scalar(1) / (2 * effective_sigma_r_ * effective_sigma_r_);
+    const Scalar scale = effective_sigma_r_ * effective_sigma_r_;
     // Each unordered pair is listed from both faces: half of each listing.
     return Scalar(0.5) * deterministic_sum(mesh_->face_count(), [&](Index f) {
                Scalar sum = 0;

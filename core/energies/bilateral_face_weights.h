@@ -28,6 +28,9 @@ struct BilateralWeights
     Scalar sigma_r = 0.35; //!< in units of |u_f - u_g| (0 .. 2), dimensionless
     int reweight_every = 1;
     FaceNeighborhood neighbors = FaceNeighborhood::Edge;
+    //! sigma_r is at least noise_scale times the median of |u_f - u_g| over the neighbouring
+    //! faces at each reweighting (0: sigma_r as given)
+    Scalar noise_scale = 1.5;
 };
 
 //! \brief Bilateral weights of the face graph, for feature-preserving normal smoothing
@@ -54,6 +57,15 @@ struct BilateralWeights
 //! an edge (at the positions the weights are built with) and sigma_r in units of the normals
 //! (0 .. 2), so the same settings fit any scale. When that mean is 0 (no dual edge, or all
 //! faces degenerate) the spatial factor is 1.
+//!
+//! Strong noise makes neighbouring normals differ by more than any crease-keeping sigma_r,
+//! and a fixed sigma_r would then keep the noise as if it were features. Each reweighting
+//! therefore uses sigma_r' = max(sigma_r, noise_scale * m), m the median of |u_f - u_g|
+//! over the neighbour pairs (a robust scale of the normals' noise, as robust statistics
+//! scale residuals by their median): while the normals are noisy sigma_r' is wide and
+//! smooths; as they settle m falls and sigma_r' returns to sigma_r, which keeps creases
+//! (features are few, so they barely move the median). The median is taken over at most
+//! 2^20 pairs, every k-th in list order (deterministic).
 class BilateralFaceWeights
 {
 public:
@@ -79,12 +91,15 @@ public:
     //! sigma_s in units of the mesh (the setting times the mean centroid distance).
     Scalar sigma_s() const { return sigma_s_; }
     Scalar sigma_r() const { return sigma_r_; }
+    //! The sigma_r' of the last reweight (sigma_r before any).
+    Scalar effective_sigma_r() const { return effective_sigma_r_; }
     int reweight_every() const { return reweight_every_; }
 
     //! \brief Recomputes every w_fg from positions x (3 #V, for the centroids) and normals
     //! u (3 #F). Allocates nothing; the same bits for any thread count.
     void reweight(std::span<const Scalar> x, std::span<const Scalar> u);
-    //! The robust energy E_R(u) with the spatial factors of the last reweight (all 1 before).
+    //! The robust energy E_R(u) with the spatial factors and sigma_r' of the last reweight
+    //! (all 1 and sigma_r before any).
     Scalar robust_energy(std::span<const Scalar> u) const;
 
 private:
@@ -94,7 +109,8 @@ private:
     std::vector<Scalar> weights_;            //!< w_fg, per CSR entry
     std::vector<Scalar> weight_sum_;         //!< #F
     std::vector<Scalar> centroids_;          //!< 3 #F, reweight's scratch
-    Scalar sigma_s_ = 0, sigma_r_ = 0;
+    std::vector<Scalar> sample_;             //!< the median's scratch (sampled pairs)
+    Scalar sigma_s_ = 0, sigma_r_ = 0, noise_scale_ = 0, effective_sigma_r_ = 0;
     int reweight_every_ = 1;
 };
 

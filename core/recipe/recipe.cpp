@@ -271,6 +271,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                 throw RecipeError("normal_smoothing.bilateral.sigma_r", "must be finite and > 0");
             if (b.reweight_every < 1)
                 throw RecipeError("normal_smoothing.bilateral.reweight_every", "must be >= 1");
+            check_weight(b.noise_scale, "normal_smoothing.bilateral.noise_scale");
         }
         for (size_t k = 0; k < ns.soft.faces.size(); ++k)
             if (hard_faces[ns.soft.faces[k]])

@@ -421,12 +421,14 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
 BilateralWeights parse_bilateral(const Json& s)
 {
     const std::string key = "normal_smoothing.bilateral";
-    expect_object(s, key, {"sigma_s", "sigma_r", "reweight_every", "neighbors"});
+    expect_object(s, key, {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors"});
     BilateralWeights b;
     if (s.contains("sigma_s"))
         b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
     if (s.contains("sigma_r"))
         b.sigma_r = step_length(s["sigma_r"], child(key, "sigma_r"));
+    if (s.contains("noise_scale"))
+        b.noise_scale = weight(s["noise_scale"], child(key, "noise_scale"));
     if (s.contains("reweight_every"))
     {
         b.reweight_every = count(s["reweight_every"], child(key, "reweight_every"));
@@ -765,6 +767,7 @@ nlohmann::json recipe_to_json(const Recipe& r)
             s["bilateral"] = {
                 {"sigma_s", b.sigma_s},
                 {"sigma_r", b.sigma_r},
+                {"noise_scale", b.noise_scale},
                 {"reweight_every", b.reweight_every},
                 {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
         }

@@ -231,7 +231,9 @@ TEST_SUITE("BilateralFaceWeights")
             plain.step(uniform, 0.5, scratch);
 
         std::vector<Scalar> bilateral = noisy_u;
-        BilateralFaceWeights w(m, t, BilateralWeights{}, m.positions);
+        // A fixed sigma_r: each stage majorizes the same robust energy.
+        BilateralFaceWeights w(m, t, BilateralWeights{1, 0.35, 1, FaceNeighborhood::Edge, 0},
+                               m.positions);
         NormalSmoothingTerm term(t, {}, {}, {}, 0, {});
         term.set_weights(&w);
         Scalar robust = std::numeric_limits<Scalar>::infinity();
@@ -251,6 +253,57 @@ TEST_SUITE("BilateralFaceWeights")
         CAPTURE(theta_bilateral);
         CHECK(theta_bilateral < 0.5 * theta_uniform);
         CHECK(theta_bilateral < 0.25 * noisy);
+    }
+
+    TEST_CASE(
+        "strong noise widens sigma_r by the normals' median difference, and then the "
+        "smoothing removes it where a fixed sigma_r keeps it as features")
+    {
+        const Mesh clean = folded_grid();
+        Mesh m = clean;
+        test::perturb(m, 0.7, 8);
+        const Topology t = build_topology(m);
+        const std::vector<Scalar> clean_u = face_normals(clean, clean.positions);
+        const std::vector<Scalar> noisy_u = face_normals(m, m.positions);
+        std::vector<Scalar> scratch(noisy_u.size());
+        const auto smoothed = [&](Scalar noise_scale, Scalar* first_sigma) {
+            std::vector<Scalar> u = noisy_u;
+            BilateralFaceWeights w(
+                m, t, BilateralWeights{1, 0.35, 1, FaceNeighborhood::Edge, noise_scale},
+                m.positions);
+            NormalSmoothingTerm term(t, {}, {}, {}, 0, {});
+            term.set_weights(&w);
+            for (int k = 0; k < 30; ++k)
+            {
+                w.reweight(m.positions, u);
+                if (k == 0)
+                    *first_sigma = w.effective_sigma_r();
+                term.step(u, 0.5, scratch);
+            }
+            if (noise_scale > 0)
+                CHECK(w.effective_sigma_r() < *first_sigma); // it narrows as the noise goes
+            return mean_angle_degrees(u, clean_u);
+        };
+        Scalar fixed_sigma = 0, adaptive_sigma = 0;
+        const Scalar fixed = smoothed(0, &fixed_sigma);
+        (void)fixed_sigma;
+        const Scalar adaptive = smoothed(1.5, &adaptive_sigma);
+        // The median difference of the noisy normals, computed apart.
+        std::vector<Scalar> d;
+        for (Index f = 0; f < m.face_count(); ++f)
+            for (const Index g : t.face_neighbors_of(f))
+            {
+                Scalar s = 0;
+                for (int a = 0; a < 3; ++a)
+                    s += (noisy_u[3 * f + a] - noisy_u[3 * g + a]) *
+                         (noisy_u[3 * f + a] - noisy_u[3 * g + a]);
+                d.push_back(std::sqrt(s));
+            }
+        std::nth_element(d.begin(), d.begin() + static_cast<std::ptrdiff_t>(d.size() / 2), d.end());
+        CHECK(adaptive_sigma == doctest::Approx(1.5 * d[d.size() / 2]).epsilon(1e-12));
+        CAPTURE(fixed);
+        CAPTURE(adaptive);
+        CHECK(adaptive < 0.7 * fixed);
     }
 
     TEST_CASE("sessions with bilateral weights give the same bits on one and two threads")

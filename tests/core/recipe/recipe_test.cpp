@@ -190,7 +190,7 @@ TEST_SUITE("Recipe")
               "'r.json': normal_smoothing.bilateral.neighbors: must be \"edge\" or \"vertex\"");
         CHECK(error_of(smoothing + R"({"bilateral": {"sigma": 1}}})") ==
               "'r.json': normal_smoothing.bilateral.sigma: unknown key (allowed here: sigma_s, "
-              "sigma_r, reweight_every, neighbors)");
+              "sigma_r, noise_scale, reweight_every, neighbors)");
         CHECK(error_of(R"({"volume": {"keep": true}})") ==
               "'r.json': volume.keep: unknown key (this section takes none)");
         CHECK(error_of(R"({"volume": true})") == "'r.json': volume: must be an object");
