@@ -275,6 +275,17 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
         problems.push_back(
             "normal sets with their own directions need the 'initial' source and "
             "no joint mode for the other normal sets");
+    if (settings.falloff)
+    {
+        const bool border = settings.falloff->border && any_of_kind(sets, ConstraintKind::Region);
+        const bool pins = settings.falloff->pins && any_of_kind(sets, ConstraintKind::Pin);
+        if (!border && !pins)
+            problems.push_back("the falloff needs a region (its border) or pins to fade from");
+    }
+    if (settings.method == Method::Taubin && (settings.optimal_step || settings.joint))
+        problems.push_back("Taubin's method takes a fixed lambda and no joint mode");
+    if (settings.method == Method::Taubin && !(settings.taubin_mu < -settings.lambda))
+        problems.push_back("Taubin's mu must be below -lambda");
     return problems;
 }
 
@@ -286,7 +297,11 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     r.optimal_step = settings.optimal_step;
     r.lambda = settings.lambda;
     r.tolerance = settings.tolerance;
-    r.method = Method::Jacobi;
+    r.method = settings.method;
+    r.taubin_mu = settings.taubin_mu;
+    if (settings.keep_volume)
+        r.volume = KeepVolume{};
+    r.falloff = settings.falloff;
     if (any_of_kind(sets, ConstraintKind::Region))
         r.region = Region{sorted(merged(sets, ConstraintKind::Region, true)),
                           sorted(merged(sets, ConstraintKind::Region, false))};
@@ -345,6 +360,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
             ns.soft.mu = settings.soft_normal_mu;
             weigh(soft_from, settings, ns.soft.mu, ns.soft.weights);
             ns.soft.normals = merged_normals(sets, ConstraintKind::SoftNormal, input_normal);
+            ns.bilateral = settings.bilateral;
             r.normal_smoothing = std::move(ns);
         }
         if (settings.joint)
@@ -530,6 +546,13 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
         s.joint = true;
         s.gamma = r.joint->gamma;
     }
+    // The editor runs Jacobi steps or Taubin's pairs; gradient descent comes in as Jacobi.
+    s.method = r.method == Method::Taubin ? Method::Taubin : Method::Jacobi;
+    s.taubin_mu = r.taubin_mu;
+    if (r.normal_smoothing)
+        s.bilateral = r.normal_smoothing->bilateral;
+    s.keep_volume = r.volume.has_value();
+    s.falloff = r.falloff;
     return out;
 }
 

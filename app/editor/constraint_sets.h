@@ -82,6 +82,15 @@ struct SolverSettings
     Scalar soft_normal_mu = 1;
     bool joint = false;
     Scalar gamma = 1;
+    //! Jacobi steps, or Taubin's lambda|mu pairs (the editor runs no gradient descent).
+    Method method = Method::Jacobi;
+    Scalar taubin_mu = -0.53;
+    //! Feature-preserving normal smoothing (with smoothed normals or joint mode), when set.
+    std::optional<BilateralWeights> bilateral;
+    //! Keep the enclosed volume of each closed component.
+    bool keep_volume = false;
+    //! Anchors fading from the regions' border and from the pins, when set.
+    std::optional<Falloff> falloff;
     bool operator==(const SolverSettings&) const = default;
 };
 

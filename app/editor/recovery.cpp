@@ -16,6 +16,7 @@
 
 #include "core/errors.h"
 #include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
 
 namespace meshfair::app {
 
@@ -134,7 +135,12 @@ Json settings_json(const SolverSettings& s)
             {"normal_smoothing_lambda", s.normal_smoothing_lambda},
             {"soft_normal_mu", s.soft_normal_mu},
             {"joint", s.joint},
-            {"gamma", s.gamma}};
+            {"gamma", s.gamma},
+            {"taubin", s.method == Method::Taubin},
+            {"taubin_mu", s.taubin_mu},
+            {"bilateral", s.bilateral ? bilateral_json(*s.bilateral) : Json(nullptr)},
+            {"keep_volume", s.keep_volume},
+            {"falloff", s.falloff ? falloff_json(*s.falloff) : Json(nullptr)}};
 }
 
 SolverSettings settings_of(const Json& j)
@@ -158,6 +164,14 @@ SolverSettings settings_of(const Json& j)
     s.soft_normal_mu = j.at("soft_normal_mu").get<Scalar>();
     s.joint = j.at("joint").get<bool>();
     s.gamma = j.at("gamma").get<Scalar>();
+    // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
+    s.method = j.value("taubin", false) ? Method::Taubin : Method::Jacobi;
+    s.taubin_mu = j.value("taubin_mu", s.taubin_mu);
+    if (j.contains("bilateral") && !j["bilateral"].is_null())
+        s.bilateral = parse_bilateral(j["bilateral"], "settings.bilateral");
+    s.keep_volume = j.value("keep_volume", false);
+    if (j.contains("falloff") && !j["falloff"].is_null())
+        s.falloff = parse_falloff(j["falloff"], "settings.falloff");
     return s;
 }
 

@@ -56,6 +56,16 @@ SolverSettings merged_settings(const SolverSettings& g, const std::vector<std::s
             s.denominator = g.denominator;
         else if (key == "normals")
             s.normal_source = g.normal_source;
+        else if (key == "method")
+            s.method = g.method;
+        else if (key == "taubin_mu")
+            s.taubin_mu = g.taubin_mu;
+        else if (key == "keep_volume")
+            s.keep_volume = g.keep_volume;
+        else if (key == "bilateral")
+            s.bilateral = g.bilateral;
+        else if (key == "falloff")
+            s.falloff = g.falloff;
     }
     return s;
 }

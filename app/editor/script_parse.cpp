@@ -426,6 +426,37 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                     r.bad(k, "must be \"initial\" or \"smoothed\"");
                 s.normal_source = n == "smoothed" ? NormalSource::Smoothed : NormalSource::Initial;
             }
+            else if (key == "method")
+            {
+                const std::string m = r.text(value, k);
+                if (m != "jacobi" && m != "taubin")
+                    r.bad(k, "must be \"jacobi\" or \"taubin\"");
+                s.method = m == "taubin" ? Method::Taubin : Method::Jacobi;
+            }
+            else if (key == "taubin_mu")
+                s.taubin_mu = r.number(value, k, -1e3, 0);
+            else if (key == "keep_volume")
+            {
+                if (!value.is_boolean())
+                    r.bad(k, "must be true or false");
+                s.keep_volume = value.get<bool>();
+            }
+            else if (key == "bilateral" || key == "falloff")
+            {
+                // A recipe's object (docs/recipe.md), or null for none.
+                if (!value.is_null())
+                    try
+                    {
+                        if (key == "bilateral")
+                            s.bilateral = parse_bilateral(value, k);
+                        else
+                            s.falloff = parse_falloff(value, k);
+                    }
+                    catch (const RecipeError& e)
+                    {
+                        r.bad(e.key(), e.message());
+                    }
+            }
             else
                 r.bad(k, "is not a solver setting");
         }

@@ -31,6 +31,7 @@ struct BilateralWeights
     //! sigma_r is at least noise_scale times the median of |u_f - u_g| over the neighbouring
     //! faces at each reweighting (0: sigma_r as given)
     Scalar noise_scale = 1.5;
+    bool operator==(const BilateralWeights&) const = default;
 };
 
 //! \brief Bilateral weights of the face graph, for feature-preserving normal smoothing

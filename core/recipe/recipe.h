@@ -132,6 +132,7 @@ struct Falloff
     Scalar mu = 1;
     bool border = true; //!< fade from the region's border (with a region)
     bool pins = true;   //!< fade from the hard vertices (with hard vertices)
+    bool operator==(const Falloff&) const = default;
 };
 
 //! Keep the enclosed volume of every closed component (VolumeConstraint).

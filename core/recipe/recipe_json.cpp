@@ -418,89 +418,10 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
     return merge_sets(sets, "normal", &NormalConstraints::faces, &NormalConstraints::normals);
 }
 
-BilateralWeights parse_bilateral(const Json& s)
-{
-    const std::string key = "normal_smoothing.bilateral";
-    expect_object(s, key, {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors"});
-    BilateralWeights b;
-    if (s.contains("sigma_s"))
-        b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
-    if (s.contains("sigma_r"))
-        b.sigma_r = step_length(s["sigma_r"], child(key, "sigma_r"));
-    if (s.contains("noise_scale"))
-        b.noise_scale = weight(s["noise_scale"], child(key, "noise_scale"));
-    if (s.contains("reweight_every"))
-    {
-        b.reweight_every = count(s["reweight_every"], child(key, "reweight_every"));
-        if (b.reweight_every < 1)
-            throw RecipeError(child(key, "reweight_every"), "must be >= 1 (got 0)");
-    }
-    if (s.contains("neighbors"))
-    {
-        const Json& v = s["neighbors"];
-        if (v == "edge")
-            b.neighbors = FaceNeighborhood::Edge;
-        else if (v == "vertex")
-            b.neighbors = FaceNeighborhood::Vertex;
-        else
-            throw RecipeError(child(key, "neighbors"), "must be \"edge\" or \"vertex\"");
-    }
-    return b;
-}
-
 constexpr std::pair<const char*, FalloffCurve> kFalloffCurves[] = {
     {"smooth", FalloffCurve::Smooth}, {"sphere", FalloffCurve::Sphere},
     {"root", FalloffCurve::Root},     {"linear", FalloffCurve::Linear},
     {"sharp", FalloffCurve::Sharp},   {"constant", FalloffCurve::Constant}};
-
-Falloff parse_falloff(const Json& s)
-{
-    expect_object(s, "falloff", {"radius", "units", "curve", "mu", "around"});
-    Falloff f;
-    if (s.contains("radius"))
-        f.radius = weight(s["radius"], "falloff.radius");
-    if (s.contains("units"))
-    {
-        if (s["units"] == "edge_lengths")
-            f.radius_in_edge_lengths = true;
-        else if (s["units"] == "mesh")
-            f.radius_in_edge_lengths = false;
-        else
-            throw RecipeError("falloff.units", "must be \"edge_lengths\" or \"mesh\"");
-    }
-    if (s.contains("curve"))
-    {
-        bool known = false;
-        for (const auto& [name, curve] : kFalloffCurves)
-            if (s["curve"] == name)
-            {
-                f.curve = curve;
-                known = true;
-            }
-        if (!known)
-            throw RecipeError("falloff.curve",
-                              "must be \"smooth\", \"sphere\", \"root\", "
-                              "\"linear\", \"sharp\" or \"constant\"");
-    }
-    if (s.contains("mu"))
-        f.mu = weight(s["mu"], "falloff.mu");
-    if (s.contains("around"))
-    {
-        const Json& a = s["around"];
-        if (!a.is_array() || a.empty())
-            throw RecipeError("falloff.around",
-                              "must be a non-empty list of \"border\" and \"pins\"");
-        f.border = f.pins = false;
-        for (size_t k = 0; k < a.size(); ++k)
-            if (a[k] == "border")
-                f.border = true;
-            else if (a[k] == "pins")
-                f.pins = true;
-            else
-                throw RecipeError(item("falloff.around", k), "must be \"border\" or \"pins\"");
-    }
-    return f;
-}
 
 Recipe parse_recipe_json(const Json& j)
 {
@@ -593,7 +514,7 @@ Recipe parse_recipe_json(const Json& j)
                 ns.soft.weights = weights(h["weights"], "normal_smoothing.soft.weights");
         }
         if (s.contains("bilateral"))
-            ns.bilateral = parse_bilateral(s["bilateral"]);
+            ns.bilateral = parse_bilateral(s["bilateral"], "normal_smoothing.bilateral");
         r.normal_smoothing = std::move(ns);
     }
     if (j.contains("joint"))
@@ -611,7 +532,7 @@ Recipe parse_recipe_json(const Json& j)
         r.volume = KeepVolume{};
     }
     if (j.contains("falloff"))
-        r.falloff = parse_falloff(j["falloff"]);
+        r.falloff = parse_falloff(j["falloff"], "falloff");
     return r;
 }
 
@@ -762,15 +683,7 @@ nlohmann::json recipe_to_json(const Recipe& r)
                 s["soft"]["weights"] = ns.soft.weights;
         }
         if (ns.bilateral)
-        {
-            const BilateralWeights& b = *ns.bilateral;
-            s["bilateral"] = {
-                {"sigma_s", b.sigma_s},
-                {"sigma_r", b.sigma_r},
-                {"noise_scale", b.noise_scale},
-                {"reweight_every", b.reweight_every},
-                {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
-        }
+            s["bilateral"] = bilateral_json(*ns.bilateral);
         j["normal_smoothing"] = s;
     }
     if (r.joint)
@@ -778,24 +691,113 @@ nlohmann::json recipe_to_json(const Recipe& r)
     if (r.volume)
         j["volume"] = Json::object();
     if (r.falloff)
-    {
-        const Falloff& f = *r.falloff;
-        const char* curve = "smooth";
-        for (const auto& [name, c] : kFalloffCurves)
-            if (c == f.curve)
-                curve = name;
-        Json around = Json::array();
-        if (f.border)
-            around.push_back("border");
-        if (f.pins)
-            around.push_back("pins");
-        j["falloff"] = {{"radius", f.radius},
-                        {"units", f.radius_in_edge_lengths ? "edge_lengths" : "mesh"},
-                        {"curve", curve},
-                        {"mu", f.mu},
-                        {"around", around}};
-    }
+        j["falloff"] = falloff_json(*r.falloff);
     return j;
+}
+
+BilateralWeights parse_bilateral(const Json& s, const std::string& key)
+{
+    expect_object(s, key, {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors"});
+    BilateralWeights b;
+    if (s.contains("sigma_s"))
+        b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
+    if (s.contains("sigma_r"))
+        b.sigma_r = step_length(s["sigma_r"], child(key, "sigma_r"));
+    if (s.contains("noise_scale"))
+        b.noise_scale = weight(s["noise_scale"], child(key, "noise_scale"));
+    if (s.contains("reweight_every"))
+    {
+        b.reweight_every = count(s["reweight_every"], child(key, "reweight_every"));
+        if (b.reweight_every < 1)
+            throw RecipeError(child(key, "reweight_every"), "must be >= 1 (got 0)");
+    }
+    if (s.contains("neighbors"))
+    {
+        const Json& v = s["neighbors"];
+        if (v == "edge")
+            b.neighbors = FaceNeighborhood::Edge;
+        else if (v == "vertex")
+            b.neighbors = FaceNeighborhood::Vertex;
+        else
+            throw RecipeError(child(key, "neighbors"), "must be \"edge\" or \"vertex\"");
+    }
+    return b;
+}
+
+Falloff parse_falloff(const Json& s, const std::string& key)
+{
+    expect_object(s, key, {"radius", "units", "curve", "mu", "around"});
+    Falloff f;
+    if (s.contains("radius"))
+        f.radius = weight(s["radius"], child(key, "radius"));
+    if (s.contains("units"))
+    {
+        if (s["units"] == "edge_lengths")
+            f.radius_in_edge_lengths = true;
+        else if (s["units"] == "mesh")
+            f.radius_in_edge_lengths = false;
+        else
+            throw RecipeError(child(key, "units"), "must be \"edge_lengths\" or \"mesh\"");
+    }
+    if (s.contains("curve"))
+    {
+        bool known = false;
+        for (const auto& [name, curve] : kFalloffCurves)
+            if (s["curve"] == name)
+            {
+                f.curve = curve;
+                known = true;
+            }
+        if (!known)
+            throw RecipeError(child(key, "curve"),
+                              "must be \"smooth\", \"sphere\", \"root\", "
+                              "\"linear\", \"sharp\" or \"constant\"");
+    }
+    if (s.contains("mu"))
+        f.mu = weight(s["mu"], child(key, "mu"));
+    if (s.contains("around"))
+    {
+        const Json& a = s["around"];
+        if (!a.is_array() || a.empty())
+            throw RecipeError(child(key, "around"),
+                              "must be a non-empty list of \"border\" and \"pins\"");
+        f.border = f.pins = false;
+        for (size_t k = 0; k < a.size(); ++k)
+            if (a[k] == "border")
+                f.border = true;
+            else if (a[k] == "pins")
+                f.pins = true;
+            else
+                throw RecipeError(item(child(key, "around"), k), "must be \"border\" or \"pins\"");
+    }
+    return f;
+}
+
+Json bilateral_json(const BilateralWeights& b)
+{
+    return {{"sigma_s", b.sigma_s},
+            {"sigma_r", b.sigma_r},
+            {"noise_scale", b.noise_scale},
+            {"reweight_every", b.reweight_every},
+            {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
+}
+
+Json falloff_json(const Falloff& f)
+{
+    const char* curve = "smooth";
+    for (const auto& [name, c] : kFalloffCurves)
+        if (c == f.curve)
+            curve = name;
+    Json around = Json::array();
+    if (f.border)
+        around.push_back("border");
+    if (f.pins)
+        around.push_back("pins");
+    return {{"radius", f.radius},
+            {"units", f.radius_in_edge_lengths ? "edge_lengths" : "mesh"},
+            {"curve", curve},
+            {"mu", f.mu},
+            {"around", around}};
 }
 
 } // namespace meshfair

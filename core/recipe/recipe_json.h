@@ -31,4 +31,14 @@ InvalidInputError json_syntax_error(const std::string& name, const std::string& 
 //! The JSON form of a recipe; parse_recipe(recipe_to_json(r).dump()) gives r back.
 nlohmann::json recipe_to_json(const Recipe& recipe);
 
+//! \brief The "bilateral" object of a recipe's normal_smoothing (docs/recipe.md), parsed
+//! with errors naming `key` ("normal_smoothing.bilateral" in a recipe); and its JSON form.
+//! Shared with the editor's scripts and recovery files.
+//! \throw RecipeError naming the key.
+BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key);
+nlohmann::json bilateral_json(const BilateralWeights& b);
+//! The same for a recipe's "falloff" object.
+Falloff parse_falloff(const nlohmann::json& j, const std::string& key);
+nlohmann::json falloff_json(const Falloff& f);
+
 } // namespace meshfair

@@ -51,6 +51,12 @@ Document edited(const fs::path& dir)
     d.sets = {pins, normals};
     d.solver.lambda = 0.25;
     d.solver.joint = true;
+    // The settings of denoising, Taubin's method, the volume and the falloff come back too.
+    d.solver.method = Method::Taubin;
+    d.solver.taubin_mu = -0.6;
+    d.solver.bilateral = BilateralWeights{2.0, 0.3, 3, FaceNeighborhood::Vertex, 1.0};
+    d.solver.keep_volume = true;
+    d.solver.falloff = Falloff{5.0, false, FalloffCurve::Sharp, 2.0, true, false};
     d.steps_from_base = 17;
     d.reproducible = false;
     return d;

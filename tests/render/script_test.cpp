@@ -258,6 +258,12 @@ TEST_SUITE("Scripted sessions")
         CHECK(message("[\n{\"tool\": \"brush\"},\n{\"tool\" \"x\"}]") ==
               "'s.json':3:11: not valid JSON: syntax error while parsing object separator - "
               "unexpected string literal; expected ':'");
+        CHECK(message(R"([{"solver": {"bilateral": {"sigma_r": 0}}}])") ==
+              "'s.json': actions[0].solver.bilateral.sigma_r: must be > 0 (got 0)");
+        CHECK(message(R"([{"solver": {"method": "newton"}}])") ==
+              "'s.json': actions[0].solver.method: must be \"jacobi\" or \"taubin\"");
+        CHECK(message(R"([{"solver": {"method": "taubin", "keep_volume": true, "bilateral": {},
+                          "falloff": {"radius": 4, "curve": "sphere"}}}])") == "accepted");
         CHECK(message(R"([{"view": "front"}, {"projection": "orthographic"}, {"scroll": 1,
                           "at": [3, 4]}, {"select": "connected"}, {"elements": "faces"},
                           {"through": true}, {"brush_radius": 3}])") == "accepted");

@@ -110,6 +110,22 @@ widget_at() {
         sleep 0.1
     done
     [ -n "$at" ] || fail "no widget '$label' on screen"
+    # Drawn but below or above the side panel's visible part (the panel is longer than the
+    # window): scrolled into view, as a hand scrolls it.
+    for _ in $(seq 1 30); do
+        local x=${at%% *} y=${at#* }
+        [ "$x" -gt 660 ] || break # the side panel only
+        if [ "$y" -gt 640 ]; then
+            wheel=5
+        elif [ "$y" -lt 40 ]; then
+            wheel=4
+        else
+            break
+        fi
+        xdotool mousemove --window "$win" 830 400 click "$wheel"
+        sleep 0.15
+        at=$(awk -F'\t' -v n="$label" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map")
+    done
     echo "$at"
 }
 

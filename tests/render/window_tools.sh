@@ -7,7 +7,8 @@
 #  2. a selection, then with each tool active, clicks on an empty part of the side panel and
 #     on its widgets: no click reaches the view (no gesture in the trace), so a region made
 #     of the selection and smoothed moves only the selected part (the saved file says so);
-#  3. the menus and the file dialogs with typed names (Ctrl+A then typing replaces the name,
+#  3. the volume and Taubin's method clicked in the solver panel, in the exported recipe;
+#     the menus and the file dialogs with typed names (Ctrl+A then typing replaces the name,
 #     fast typing loses nothing), Save As then Ctrl+S, the window's title;
 #  4. quitting with unsaved changes (asks; Cancel keeps the editor) and without.
 #   window_tools.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
@@ -93,7 +94,13 @@ total=$(grep -c '^v ' "$work/loaded.obj")
 [ "$moved" -gt 20 ] && [ "$moved" -lt $((total / 4)) ] ||
     fail "the region's run moved $moved of $total vertices (only the selected part should move)"
 
-# --- 3. Menus and file dialogs with typed names.
+# --- 3. Shape settings clicked in the solver panel, then menus and file dialogs with typed
+# names: the exported recipe keeps the volume and runs Taubin's pairs.
+settings=$(count_lines "command solver settings: ok")
+click_widget "keep volume"
+wait_line "command solver settings: ok" $((settings + 1))
+click_widget "Taubin lambda|mu"
+wait_line "command solver settings: ok" $((settings + 2))
 click_widget "File"
 click_widget "File/Export recipe..."
 wait_dialog
@@ -102,6 +109,8 @@ type_text "exported-by-hand.json"
 key Return
 wait_line "command export recipe: ok"
 [ -f "$work/exported-by-hand.json" ] || fail "the recipe was not written under the typed name"
+grep -q '"volume"' "$work/exported-by-hand.json" && grep -q '"method": "taubin"' "$work/exported-by-hand.json" ||
+    fail "the recipe lacks the volume or Taubin's method clicked in the panel"
 # No recipe under another name (the typed name appended to the suggested one, say).
 [ "$(cd "$work" && ls -- *.json)" = "exported-by-hand.json" ] ||
     fail "recipes under other names: $(cd "$work" && ls -- *.json)"

@@ -90,6 +90,67 @@ void solver_panel(const PanelContext& ui)
     toggled |= ui.checkbox("joint mode", &s.joint);
     if (s.joint)
         dragged |= weight_slider(ui, "gamma", s.gamma);
+    if (s.normal_source == NormalSource::Smoothed || s.joint)
+    {
+        // Normals kept apart across creases (bilateral weights, docs/recipe.md).
+        bool bilateral = s.bilateral.has_value();
+        if (ui.checkbox("keep creases (bilateral)", &bilateral))
+        {
+            s.bilateral =
+                bilateral ? std::optional<BilateralWeights>(BilateralWeights{}) : std::nullopt;
+            toggled = true;
+        }
+        if (s.bilateral)
+        {
+            float sigma_r = float(s.bilateral->sigma_r);
+            if (ImGui::SliderFloat("crease sigma_r", &sigma_r, 0.05f, 1.0f, "%.2f"))
+            {
+                s.bilateral->sigma_r = std::clamp(Scalar(sigma_r), Scalar(0.05), Scalar(1));
+                dragged = true;
+            }
+            ui.track("crease sigma_r");
+            bool vertex = s.bilateral->neighbors == FaceNeighborhood::Vertex;
+            if (ui.checkbox("faces sharing a vertex", &vertex))
+            {
+                s.bilateral->neighbors = vertex ? FaceNeighborhood::Vertex : FaceNeighborhood::Edge;
+                toggled = true;
+            }
+        }
+    }
+    bool taubin = s.method == Method::Taubin;
+    if (ui.checkbox("Taubin lambda|mu", &taubin))
+    {
+        s.method = taubin ? Method::Taubin : Method::Jacobi;
+        toggled = true;
+    }
+    toggled |= ui.checkbox("keep volume", &s.keep_volume);
+    bool falloff = s.falloff.has_value();
+    if (ui.checkbox("falloff from border and pins", &falloff))
+    {
+        s.falloff = falloff ? std::optional<Falloff>(Falloff{}) : std::nullopt;
+        toggled = true;
+    }
+    if (s.falloff)
+    {
+        float radius = float(s.falloff->radius);
+        if (ImGui::SliderFloat("falloff radius (edges)", &radius, 0.0f, 100.0f, "%.1f",
+                               ImGuiSliderFlags_Logarithmic))
+        {
+            s.falloff->radius = std::clamp(Scalar(radius), Scalar(0), Scalar(100));
+            s.falloff->radius_in_edge_lengths = true;
+            dragged = true;
+        }
+        ui.track("falloff radius");
+        const char* curves[] = {"smooth", "sphere", "root", "linear", "sharp", "constant"};
+        int curve = static_cast<int>(s.falloff->curve);
+        ImGui::SetNextItemWidth(120);
+        if (ImGui::Combo("falloff curve", &curve, curves, 6))
+        {
+            s.falloff->curve = static_cast<FalloffCurve>(curve);
+            toggled = true;
+        }
+        ui.track("falloff curve");
+    }
     if ((toggled || dragged) && !(s == document.solver))
         // A slider held is one interaction: its values make one undo step.
         ui.give(SetSolverSettings{s}, dragged ? Interaction{"solver panel"} : Interaction{});

@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include <doctest/doctest.h>
+
+#include <cstring>
+
+#include "app/editor/constraint_sets.h"
+#include "core/recipe/recipe_json.h"
+#include "core/recipe/session.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+using namespace meshfair::app;
+
+namespace {
+
+//! The recipe the editor runs after importing `r`: its sets and settings, built back.
+Recipe through_the_editor(const Recipe& r, const Mesh& m)
+{
+    const ImportedRecipe imported = sets_from_recipe(r, m);
+    CHECK(constraint_problems(imported.sets, imported.settings).empty());
+    return build_recipe(imported.sets, imported.settings, m, m.positions, imported.iterations);
+}
+
+//! smooth() of the same noisy mesh with both recipes gives the same bits.
+void check_same_result(const Recipe& a, const Recipe& b, const Mesh& m)
+{
+    const Topology t = build_topology(m);
+    Mesh x = m, y = m;
+    smooth(x, t, a);
+    smooth(y, t, b);
+    CHECK(std::memcmp(x.positions.data(), y.positions.data(),
+                      x.positions.size() * sizeof(Scalar)) == 0);
+    CHECK(x.positions != m.positions);
+}
+
+} // namespace
+
+TEST_SUITE("Editor recipes")
+{
+    TEST_CASE("the presets come into the editor whole and run there as they run from files")
+    {
+        Mesh m = test::icosphere(3);
+        test::perturb(m, 0.02, 5);
+        {
+            const Recipe file = read_recipe((test::assets_dir() / "recipes/denoise.json").string());
+            const Recipe editor = through_the_editor(file, m);
+            REQUIRE(editor.normal_smoothing.has_value());
+            CHECK(editor.normal_smoothing->bilateral == file.normal_smoothing->bilateral);
+            CHECK(editor.volume.has_value());
+            check_same_result(file, editor, m);
+        }
+        {
+            const Recipe file = read_recipe((test::assets_dir() / "recipes/relax.json").string());
+            const Recipe editor = through_the_editor(file, m);
+            CHECK(editor.method == Method::Taubin);
+            CHECK(editor.taubin_mu == file.taubin_mu);
+            CHECK(editor.volume.has_value());
+            check_same_result(file, editor, m);
+        }
+        {
+            // fair-region with a region (the editor's selection) and a pin.
+            Recipe file = read_recipe((test::assets_dir() / "recipes/fair-region.json").string());
+            file.region = Region{test::all_indices(m.vertex_count() / 2), {}};
+            file.hard = HardVertices{{3}, {{0.0, 0.0, 1.3}}};
+            const Recipe editor = through_the_editor(file, m);
+            CHECK(editor.falloff == file.falloff);
+            check_same_result(file, editor, m);
+        }
+    }
+
+    TEST_CASE("settings the sets cannot run are named, not dropped")
+    {
+        SolverSettings s;
+        s.falloff = Falloff{};
+        std::vector<ConstraintSet> sets(1);
+        sets[0].kind = ConstraintKind::Anchor;
+        sets[0].vertices = {1, 2};
+        CHECK(constraint_problems(sets, s) ==
+              std::vector<std::string>{
+                  "the falloff needs a region (its border) or pins to fade from"});
+        sets[0].kind = ConstraintKind::Pin;
+        CHECK(constraint_problems(sets, s).empty());
+        s.method = Method::Taubin;
+        s.optimal_step = true;
+        CHECK(constraint_problems(sets, s) ==
+              std::vector<std::string>{"Taubin's method takes a fixed lambda and no joint mode"});
+        s.optimal_step = false;
+        s.taubin_mu = -0.3; // not below -lambda = -0.5
+        CHECK(constraint_problems(sets, s) ==
+              std::vector<std::string>{"Taubin's mu must be below -lambda"});
+    }
+}
