@@ -89,18 +89,4 @@ SurfaceDistances surface_distances(const Topology& topology, std::span<const Sca
     return out;
 }
 
-Scalar mean_neighbor_edge_length(const Topology& topology, std::span<const Scalar> x)
-{
-    Scalar sum = 0;
-    std::size_t count = 0;
-    for (Index i = 0; i < topology.vertex_count; ++i)
-        for (const Index j : topology.neighbors(i))
-            if (i < j)
-            {
-                sum += edge_length(x, i, j);
-                ++count;
-            }
-    return count == 0 ? 0 : sum / static_cast<Scalar>(count);
-}
-
 } // namespace meshfair

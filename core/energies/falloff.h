@@ -41,8 +41,4 @@ struct SurfaceDistances
 SurfaceDistances surface_distances(const Topology& topology, std::span<const Scalar> x,
                                    std::span<const Index> sources, Scalar limit);
 
-//! Mean length of the edges of the primal graph read from V(i) (Neighbors part); 0 without
-//! edges.
-Scalar mean_neighbor_edge_length(const Topology& topology, std::span<const Scalar> x);
-
 } // namespace meshfair

@@ -59,6 +59,20 @@ Scalar mean_edge_length(const Topology& topology, std::span<const Scalar> x)
     if (edges == 0)
         return 0;
     Scalar sum = 0;
+    if (!has_parts(topology.parts, TopologyParts::Edges))
+    {
+        // The same edges from V(i), each once (i < j), for topologies built without the list.
+        for (Index i = 0; i < topology.vertex_count; ++i)
+            for (const Index j : topology.neighbors(i))
+                if (i < j)
+                {
+                    const Scalar* p = &x[3 * i];
+                    const Scalar* q = &x[3 * j];
+                    sum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                                     (p[2] - q[2]) * (p[2] - q[2]));
+                }
+        return sum / edges;
+    }
     for (Index e = 0; e < edges; ++e)
     {
         const Scalar* p = &x[3 * topology.edge_vertices[2 * e]];

@@ -46,7 +46,7 @@ Vec3 face_normal(const Mesh& mesh, std::span<const Scalar> x, Index f);
 std::vector<Scalar> face_normals(const Mesh& mesh, std::span<const Scalar> x);
 
 //! Mean length of the edges of the primal graph; 0 when there are none.
-//! \pre the topology has TopologyParts::Edges.
+//! \pre the topology has TopologyParts::Edges or TopologyParts::Neighbors.
 Scalar mean_edge_length(const Topology& topology, std::span<const Scalar> x);
 
 //! Axis-aligned bounding box of the vertices; min > max when the mesh has none.

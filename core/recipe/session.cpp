@@ -332,7 +332,7 @@ void Session::build_falloff_anchors(const std::vector<char>& fixed,
                 one(s.vertices.indices[k], k);
     }
     const Scalar radius =
-        f.radius * (f.radius_in_edge_lengths ? mean_neighbor_edge_length(*topology_, x0) : 1);
+        f.radius * (f.radius_in_edge_lengths ? mean_edge_length(*topology_, x0) : 1);
     if (f.border && recipe_.region)
     {
         // From the rest's ring around the region: the fixed vertices (not pins) next to a

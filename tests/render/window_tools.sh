@@ -95,12 +95,14 @@ total=$(grep -c '^v ' "$work/loaded.obj")
     fail "the region's run moved $moved of $total vertices (only the selected part should move)"
 
 # --- 3. Shape settings clicked in the solver panel, then menus and file dialogs with typed
-# names: the exported recipe keeps the volume and runs Taubin's pairs.
+# names: the exported recipe keeps the volume, runs Taubin's pairs and fades from the border.
 settings=$(count_lines "command solver settings: ok")
 click_widget "keep volume"
 wait_line "command solver settings: ok" $((settings + 1))
 click_widget "Taubin lambda|mu"
 wait_line "command solver settings: ok" $((settings + 2))
+click_widget "falloff from border and pins" # the region's border and the pins fade
+wait_line "command solver settings: ok" $((settings + 3))
 click_widget "File"
 click_widget "File/Export recipe..."
 wait_dialog
@@ -109,8 +111,10 @@ type_text "exported-by-hand.json"
 key Return
 wait_line "command export recipe: ok"
 [ -f "$work/exported-by-hand.json" ] || fail "the recipe was not written under the typed name"
-grep -q '"volume"' "$work/exported-by-hand.json" && grep -q '"method": "taubin"' "$work/exported-by-hand.json" ||
-    fail "the recipe lacks the volume or Taubin's method clicked in the panel"
+for part in '"volume"' '"method": "taubin"' '"falloff"'; do
+    grep -q "$part" "$work/exported-by-hand.json" ||
+        fail "the recipe lacks $part, clicked in the solver panel"
+done
 # No recipe under another name (the typed name appended to the suggested one, say).
 [ "$(cd "$work" && ls -- *.json)" = "exported-by-hand.json" ] ||
     fail "recipes under other names: $(cd "$work" && ls -- *.json)"

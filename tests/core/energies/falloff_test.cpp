@@ -101,7 +101,10 @@ TEST_SUITE("Falloff")
         CHECK(near.distance[2] == 2);
         CHECK(near.distance[3] == std::numeric_limits<Scalar>::infinity());
         CHECK(near.source[3] == kInvalidIndex);
-        CHECK(mean_neighbor_edge_length(t, m.positions) == 1);
+        // The falloff's unit from V(i) alone (a solver's topology has no edge list).
+        const Topology neighbors = build_topology(m, TopologyParts::Neighbors);
+        CHECK(mean_edge_length(neighbors, m.positions) == 1);
+        CHECK(mean_edge_length(t, m.positions) == 1);
     }
 
     TEST_CASE("a moved pin raises a smooth bump of the falloff's radius, not a spike")
