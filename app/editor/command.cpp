@@ -18,9 +18,9 @@ CommandSpec spec_of(const Command& command)
                 return {"select " + std::string(command_name(c.command)), kSelection, kSelection};
             else if constexpr (std::is_same_v<T, cmd::ApplySelection>)
             {
-                const char* names[] = {
-                    "navigate",     "click select", "brush stroke", "rectangle select",
-                    "lasso select", "select",       "select"};
+                const char* names[] = {"navigate",         "click select", "brush stroke",
+                                       "rectangle select", "lasso select", "select",
+                                       "select",           "select"};
                 return {names[static_cast<int>(c.tool)], kSelection, kSelection, false, false};
             }
             else if constexpr (std::is_same_v<T, cmd::SelectSet>)
@@ -49,10 +49,20 @@ CommandSpec spec_of(const Command& command)
                 return {"normal direction", kSets, kSets, false, false};
             else if constexpr (std::is_same_v<T, cmd::MovePins>)
                 return {"move pins", kSets, kSets, false, false};
+            else if constexpr (std::is_same_v<T, cmd::PaintDab>)
+            {
+                // Relax steps the solver from the stroke's start: a run playing is paused
+                // at the first dab (dispatch keeps the stroke's step open after it).
+                if (c.mode == PaintMode::Relax)
+                    return {"smooth stroke", kSets | kPositions, kSets | kSetMembers, true, false};
+                return {"paint weights", kSets, kSets | kSetMembers, false, false};
+            }
             else if constexpr (std::is_same_v<T, cmd::SetSolverSettings>)
                 return {"solver settings", kSettings, kSettings};
             else if constexpr (std::is_same_v<T, cmd::ImportRecipe>)
                 return {"import recipe", kSets | kSettings, kSets | kSettings | kSetMembers, true};
+            else if constexpr (std::is_same_v<T, cmd::ApplyPreset>)
+                return {"preset", kSets | kSettings, kSets | kSettings | kSetMembers, true};
             else if constexpr (std::is_same_v<T, cmd::Step>)
                 // The solver bumps the positions it publishes.
                 return {"step", kPositions, 0, true};
@@ -78,6 +88,7 @@ CommandSpec spec_of(const Command& command)
                                std::is_same_v<T, cmd::SetHeatMap> ||
                                std::is_same_v<T, cmd::ScaleBrushRadius> ||
                                std::is_same_v<T, cmd::SetBrushRadius> ||
+                               std::is_same_v<T, cmd::SetPaintSettings> ||
                                std::is_same_v<T, cmd::Screenshot>)
                 return {"", 0, 0, false, false};
             else
@@ -121,6 +132,8 @@ std::string_view command_name(const Command& command)
                                             "set weight",
                                             "normal direction",
                                             "move pins",
+                                            "paint",
+                                            "paint settings",
                                             "solver settings",
                                             "play",
                                             "pause",
@@ -134,6 +147,7 @@ std::string_view command_name(const Command& command)
                                             "save",
                                             "export recipe",
                                             "import recipe",
+                                            "preset",
                                             "dialog",
                                             "screenshot",
                                             "quit",

@@ -196,6 +196,28 @@ struct MovePins
     std::string set;
     Vec3 offset{0, 0, 0};
 };
+//! \brief One dab of the Paint tool, in the world, so that a script replays a stroke
+//! bit for bit: the vertices within `radius` of `center` (at the current positions) change
+//! the weight map of `set` by strength * curve(distance / radius) (PaintMode). A set that
+//! is not there is made by Relax and Add (a region). Relax then puts the shape back to
+//! where the stroke began and runs `steps` solver steps of the whole recipe with the map
+//! as it is now: a stroke is one undo step, and the recipe exported after it (from the
+//! base shape) reproduces its shape. A stroke's dabs share one Interaction.
+struct PaintDab
+{
+    std::string set{kPaintSet};
+    PaintMode mode = PaintMode::Relax;
+    Vec3 center{0, 0, 0};
+    Scalar radius = 1;
+    Scalar strength = 0.5;
+    FalloffCurve curve = FalloffCurve::Smooth;
+    int steps = 10;
+};
+//! New settings of the Paint tool (not an undo step).
+struct SetPaintSettings
+{
+    PaintSettings paint;
+};
 
 // --- Solving.
 //! New solver settings (a slider dragged through many values is one undo step: the
@@ -257,6 +279,15 @@ struct ImportRecipe
 {
     std::string path;
 };
+//! \brief A preset recipe (assets/recipes/NAME.json, or a path) over the user's sets: its
+//! settings, and its sets of the kinds it has, replace the editor's; the user's sets of the
+//! kinds it does not have stay, and so do the user's regions and pins (what to smooth and
+//! what holds is the artist's; a preset's own regions or pins come in only where the user
+//! has none of that kind).
+struct ApplyPreset
+{
+    std::string preset;
+};
 //! The file dialogs and prompts of the interface.
 enum class Dialog
 {
@@ -304,10 +335,11 @@ using Command = std::variant<
     cmd::SetOrbit, cmd::ToggleOrbit, cmd::SetUpAxis, cmd::Toggle, cmd::SetDisplay, cmd::CreateSet,
     cmd::DeleteSet, cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet,
     cmd::RemoveFromSet, cmd::CloseHoles, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection,
-    cmd::MovePins, cmd::SetSolverSettings, cmd::Play, cmd::Pause, cmd::TogglePlay, cmd::Step,
-    cmd::ResetShape, cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
-    cmd::ExportRecipe, cmd::ImportRecipe, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,
-    cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
+    cmd::MovePins, cmd::PaintDab, cmd::SetPaintSettings, cmd::SetSolverSettings, cmd::Play,
+    cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::ResetShape, cmd::ApplyShape, cmd::AddNoise,
+    cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh, cmd::ExportRecipe, cmd::ImportRecipe,
+    cmd::ApplyPreset, cmd::ShowDialog, cmd::Screenshot, cmd::Quit, cmd::QuitDiscarding,
+    cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
 
 //! \brief Where a command comes from, for the undo step it makes: commands of one
 //! interaction (a drag of a tool, a slider held) with the same key merge into one step,

@@ -258,6 +258,7 @@ bool CommandExecutor::operator()(const cmd::SetHeatMap& c) const
 {
     st.heat_map = c.term;
     s.solver_.set_heat(c.term);
+    s.synced_.weights.reset(); // a painted map shows again when the heat map goes
     if (!c.term)
         st.display.vertex_colors = false;
     return true;
@@ -310,6 +311,17 @@ bool CommandExecutor::operator()(const cmd::ImportRecipe& c) const
     d.solver = with_pace(imported.settings, d.solver); // the recipe says nothing of the pace
     say("imported " + c.path + " (" + std::to_string(imported.iterations) +
         " iterations in the file: Step runs them)");
+    return true;
+}
+
+bool CommandExecutor::operator()(const cmd::ApplyPreset& c) const
+{
+    const std::string path = preset_path(c.preset);
+    ImportedRecipe preset = import_recipe(d, path);
+    d.sets = merge_preset(d.sets, std::move(preset.sets));
+    d.solver = with_pace(preset.settings, d.solver);
+    say("preset " + c.preset + ": its settings, with your regions and pins" +
+        (s.problems().empty() ? std::string() : " (" + s.problems().front() + ")"));
     return true;
 }
 
@@ -372,7 +384,11 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
     const bool from_gesture = from.key == kGesture.key;
     if (gesture_ != nullptr && !from_gesture && spec.waits_for_gesture)
         return false;
-    if (spec.stops_run)
+    // A command that goes on with the open step of its interaction (a stroke's next dab)
+    // keeps it; another closes it first.
+    const bool continues = open_step_ && !from.key.empty() && open_step_->interaction == from.key &&
+                           open_step_->label == spec.label;
+    if (spec.stops_run && !continues)
     {
         close_step();
         solver_.pause();
@@ -404,6 +420,9 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
         state_.message_is_error = true;
         ok = false;
     }
+    if (from_gesture && (ok || !state_.message_is_error))
+        if (const auto* dab = std::get_if<cmd::PaintDab>(&command))
+            stroke_.push_back(*dab);
     if (ok && spec.bumps != 0)
     {
         document_.versions.bump(spec.bumps);

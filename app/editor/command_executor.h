@@ -11,7 +11,8 @@ namespace meshfair::app {
 
 //! \brief Carries out each command on the session, once EditorSession::dispatch has done the
 //! undo bookkeeping: true when it did something, false (with the message) when not. The
-//! set-editing commands are in command_sets.cpp, the others in command_dispatch.cpp.
+//! set-editing commands are in command_sets.cpp, painting in command_paint.cpp, the others in
+//! command_dispatch.cpp.
 struct CommandExecutor
 {
     EditorSession& s;
@@ -80,6 +81,9 @@ struct CommandExecutor
     bool operator()(const cmd::SetSetWeight& c) const;
     bool operator()(const cmd::SetNormalDirection& c) const;
     bool operator()(const cmd::MovePins& c) const;
+    // --- Painting (command_paint.cpp).
+    bool operator()(const cmd::PaintDab& c) const;
+    bool operator()(const cmd::SetPaintSettings& c) const;
     // --- Solving.
     bool operator()(const cmd::SetSolverSettings& c) const;
     bool operator()(const cmd::Play& c) const;
@@ -95,6 +99,7 @@ struct CommandExecutor
     bool operator()(const cmd::SaveMesh& c) const;
     bool operator()(const cmd::ExportRecipe& c) const;
     bool operator()(const cmd::ImportRecipe& c) const;
+    bool operator()(const cmd::ApplyPreset& c) const;
     bool operator()(const cmd::ShowDialog& c) const;
     bool operator()(const cmd::Screenshot& c) const;
     bool operator()(const cmd::Quit&) const;

@@ -122,6 +122,8 @@ bool CommandExecutor::operator()(const cmd::AddToSet& c) const
             }
             if (!set.normals.empty())
                 set.normals.push_back(set.normals.front());
+            if (!set.weights.empty() && vertex_set)
+                set.weights.push_back(1);
         }
     if (added == 0)
         return fail("nothing selected that is not in '" + c.set + "' already");
@@ -152,6 +154,8 @@ bool CommandExecutor::operator()(const cmd::RemoveFromSet& c) const
             set.targets[kept] = set.targets[k];
         if (!set.normals.empty())
             set.normals[kept] = set.normals[k];
+        if (!set.weights.empty() && vertex_set)
+            set.weights[kept] = set.weights[k];
         list[kept++] = list[k];
     }
     if (removed == 0)
@@ -161,6 +165,8 @@ bool CommandExecutor::operator()(const cmd::RemoveFromSet& c) const
         set.targets.resize(kept);
     if (!set.normals.empty())
         set.normals.resize(kept);
+    if (!set.weights.empty() && vertex_set)
+        set.weights.resize(kept);
     say("removed " + std::to_string(removed) + (vertex_set ? " vertices" : " faces") + " from '" +
         c.set + "'" + (kept == 0 ? " (it is empty now: left out of the solve)" : ""));
     return true;

@@ -3,6 +3,7 @@
 #include "app/editor/constraint_sets.h"
 
 #include <algorithm>
+#include <tuple>
 #include <unordered_map>
 #include <utility>
 
@@ -74,24 +75,26 @@ bool any_of_kind(const std::vector<ConstraintSet>& sets, ConstraintKind kind)
     });
 }
 
-// The merged elements' weights: one mu when every set gives the same (as one weight, bit
-// for bit), else mu = 1 and one weight per element.
-void weigh(const std::vector<const ConstraintSet*>& from, const SolverSettings& settings,
-           Scalar& mu, std::vector<Scalar>& weights)
+// The merged elements' weights (each its set's weight times its value of the set's weight
+// map): one mu when all are the same (as one weight, bit for bit), else mu = 1 and one
+// weight per element.
+void weigh(const std::vector<const ConstraintSet*>& from, const std::vector<size_t>& at,
+           const SolverSettings& settings, Scalar& mu, std::vector<Scalar>& weights)
 {
     if (from.empty())
         return;
-    const Scalar first = weight_of(*from.front(), settings);
-    if (std::all_of(from.begin(), from.end(),
-                    [&](const ConstraintSet* s) { return weight_of(*s, settings) == first; }))
+    std::vector<Scalar> each(from.size());
+    for (size_t k = 0; k < from.size(); ++k)
+        each[k] = from[k]->weights.empty()
+                      ? weight_of(*from[k], settings)
+                      : weight_of(*from[k], settings) * from[k]->weights[at[k]];
+    if (std::all_of(each.begin(), each.end(), [&](Scalar w) { return w == each.front(); }))
     {
-        mu = first;
+        mu = each.front();
         return;
     }
     mu = 1;
-    weights.clear();
-    for (const ConstraintSet* s : from)
-        weights.push_back(weight_of(*s, settings));
+    weights = std::move(each);
 }
 
 std::vector<Index> sorted(std::vector<Index> v)
@@ -179,6 +182,16 @@ SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace)
     return settings;
 }
 
+bool takes_weight_map(ConstraintKind kind)
+{
+    return kind == ConstraintKind::Anchor || kind == ConstraintKind::Region;
+}
+
+Scalar region_anchor_weight(Scalar freedom)
+{
+    return (1 - freedom) / freedom;
+}
+
 bool takes_weight(ConstraintKind kind)
 {
     return kind == ConstraintKind::Anchor || kind == ConstraintKind::Centroid ||
@@ -255,6 +268,11 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
     for (const ConstraintSet& s : all_sets)
         if (s.enabled && !(s.vertices.empty() && s.faces.empty()))
             sets.push_back(s);
+    for (const ConstraintSet& s : sets)
+        if (!s.weights.empty() &&
+            (!takes_weight_map(s.kind) || s.weights.size() != s.vertices.size()))
+            problems.push_back("set " + quoted(s) + " has " + std::to_string(s.weights.size()) +
+                               " weights for " + std::to_string(s.vertices.size()) + " vertices");
     const bool normal = any_of_kind(sets, ConstraintKind::Normal);
     const bool hard_soft = any_of_kind(sets, ConstraintKind::HardNormal) ||
                            any_of_kind(sets, ConstraintKind::SoftNormal);
@@ -302,9 +320,32 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     if (settings.keep_volume)
         r.volume = KeepVolume{};
     r.falloff = settings.falloff;
+    // A region's weight map: vertices of freedom 0 stay out, those of freedom in (0, 1) are
+    // held by anchors of region_anchor_weight after the anchor sets' (which win).
+    std::vector<Index> fading;
+    std::vector<Scalar> fading_weights;
     if (any_of_kind(sets, ConstraintKind::Region))
-        r.region = Region{sorted(merged(sets, ConstraintKind::Region, true)),
+    {
+        std::vector<const ConstraintSet*> from;
+        std::vector<size_t> at;
+        std::vector<Index> vertices = merged(sets, ConstraintKind::Region, true, &from, &at);
+        size_t kept = 0;
+        for (size_t k = 0; k < vertices.size(); ++k)
+        {
+            const Scalar w = map_value(*from[k], at[k]);
+            if (w <= 0)
+                continue;
+            if (w < 1)
+            {
+                fading.push_back(vertices[k]);
+                fading_weights.push_back(region_anchor_weight(w));
+            }
+            vertices[kept++] = vertices[k];
+        }
+        vertices.resize(kept);
+        r.region = Region{sorted(std::move(vertices)),
                           sorted(merged(sets, ConstraintKind::Region, false))};
+    }
     if (any_of_kind(sets, ConstraintKind::Pin))
     {
         std::vector<const ConstraintSet*> from;
@@ -318,22 +359,51 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
                                            : from[k]->targets[at[k]]);
         r.hard = std::move(hard);
     }
-    if (any_of_kind(sets, ConstraintKind::Anchor))
+    if (any_of_kind(sets, ConstraintKind::Anchor) || !fading.empty())
     {
         std::vector<const ConstraintSet*> from;
-        SoftVertices soft{{false, merged(sets, ConstraintKind::Anchor, true, &from)}, 1, {}};
-        weigh(from, settings, soft.mu, soft.weights);
+        std::vector<size_t> at;
+        SoftVertices soft{{false, merged(sets, ConstraintKind::Anchor, true, &from, &at)}, 1, {}};
+        weigh(from, at, settings, soft.mu, soft.weights);
+        if (!fading.empty())
+        {
+            // Not where a pin or an anchor set holds the vertex already.
+            std::vector<Index> taken = soft.vertices.indices;
+            for (const ConstraintSet& p : sets)
+                if (p.kind == ConstraintKind::Pin && p.enabled)
+                    taken.insert(taken.end(), p.vertices.begin(), p.vertices.end());
+            taken = sorted(std::move(taken));
+            if (soft.weights.empty() && !soft.vertices.indices.empty())
+                soft.weights.assign(soft.vertices.indices.size(), soft.mu);
+            else if (soft.vertices.indices.empty())
+                soft.weights.clear();
+            for (size_t k = 0; k < fading.size(); ++k)
+                if (!std::binary_search(taken.begin(), taken.end(), fading[k]))
+                {
+                    soft.vertices.indices.push_back(fading[k]);
+                    soft.weights.push_back(fading_weights[k]);
+                }
+            soft.mu = 1;
+            if (!soft.weights.empty() &&
+                std::all_of(soft.weights.begin(), soft.weights.end(),
+                            [&](Scalar w) { return w == soft.weights.front(); }))
+            {
+                soft.mu = soft.weights.front();
+                soft.weights.clear();
+            }
+        }
         if (!soft.vertices.indices.empty()) // every anchor may be pinned
             r.soft = std::move(soft);
     }
     if (any_of_kind(sets, ConstraintKind::Centroid))
     {
         std::vector<const ConstraintSet*> from;
-        CentroidConstraints c{{false, merged(sets, ConstraintKind::Centroid, false, &from)},
+        std::vector<size_t> at;
+        CentroidConstraints c{{false, merged(sets, ConstraintKind::Centroid, false, &from, &at)},
                               1,
                               {},
                               settings.denominator};
-        weigh(from, settings, c.mu, c.weights);
+        weigh(from, at, settings, c.mu, c.weights);
         r.centroid = std::move(c);
     }
     const auto input_normal = [&](Index f) { return face_normal(mesh, positions, f); };
@@ -341,8 +411,9 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     {
         NormalConstraints n;
         std::vector<const ConstraintSet*> from;
-        n.faces.indices = merged(sets, ConstraintKind::Normal, false, &from);
-        weigh(from, settings, n.mu, n.weights);
+        std::vector<size_t> at;
+        n.faces.indices = merged(sets, ConstraintKind::Normal, false, &from, &at);
+        weigh(from, at, settings, n.mu, n.weights);
         n.source = settings.normal_source;
         n.normals = merged_normals(sets, ConstraintKind::Normal, input_normal);
         if (!n.normals.empty())
@@ -356,9 +427,10 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
             ns.hard.faces = merged(sets, ConstraintKind::HardNormal, false);
             ns.hard.normals = merged_normals(sets, ConstraintKind::HardNormal, input_normal);
             std::vector<const ConstraintSet*> soft_from;
-            ns.soft.faces = merged(sets, ConstraintKind::SoftNormal, false, &soft_from);
+            std::vector<size_t> soft_at;
+            ns.soft.faces = merged(sets, ConstraintKind::SoftNormal, false, &soft_from, &soft_at);
             ns.soft.mu = settings.soft_normal_mu;
-            weigh(soft_from, settings, ns.soft.mu, ns.soft.weights);
+            weigh(soft_from, soft_at, settings, ns.soft.mu, ns.soft.weights);
             ns.soft.normals = merged_normals(sets, ConstraintKind::SoftNormal, input_normal);
             ns.bilateral = settings.bilateral;
             r.normal_smoothing = std::move(ns);
@@ -378,6 +450,7 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
     for (size_t k = 0; k < a.size(); ++k)
         if (a[k].kind != b[k].kind || a[k].vertices != b[k].vertices || a[k].faces != b[k].faces ||
             a[k].normals != b[k].normals || a[k].enabled != b[k].enabled ||
+            a[k].weights != b[k].weights ||
             weight_of(a[k], a_settings) != weight_of(b[k], b_settings) ||
             (!ignoring_pin_targets && a[k].targets != b[k].targets))
             return false;
@@ -428,8 +501,49 @@ size_t close_region_holes(ConstraintSet& set, const Mesh& mesh, const Topology& 
                 set.faces.push_back(static_cast<Index>(f));
         std::sort(set.faces.begin(), set.faces.end());
     }
-    std::sort(set.vertices.begin(), set.vertices.end());
+    if (set.weights.empty())
+        std::sort(set.vertices.begin(), set.vertices.end());
+    else
+    {
+        // A weight map follows its vertices; the holes move freely (1).
+        set.weights.resize(set.vertices.size(), 1);
+        std::vector<std::pair<Index, Scalar>> pairs;
+        for (size_t k = 0; k < set.vertices.size(); ++k)
+            pairs.emplace_back(set.vertices[k], set.weights[k]);
+        std::sort(pairs.begin(), pairs.end(),
+                  [](const auto& a, const auto& b) { return a.first < b.first; });
+        for (size_t k = 0; k < pairs.size(); ++k)
+            std::tie(set.vertices[k], set.weights[k]) = pairs[k];
+    }
     return holes.size();
+}
+
+std::vector<ConstraintSet> merge_preset(const std::vector<ConstraintSet>& user,
+                                        std::vector<ConstraintSet> preset)
+{
+    const auto has = [](const std::vector<ConstraintSet>& sets, ConstraintKind kind) {
+        return std::any_of(sets.begin(), sets.end(),
+                           [&](const ConstraintSet& s) { return s.kind == kind; });
+    };
+    const auto placement = [](ConstraintKind kind) {
+        return kind == ConstraintKind::Region || kind == ConstraintKind::Pin;
+    };
+    std::vector<ConstraintSet> out;
+    for (const ConstraintSet& s : user)
+        if (placement(s.kind) || !has(preset, s.kind))
+            out.push_back(s);
+    for (ConstraintSet& s : preset)
+        if (!placement(s.kind) || !has(user, s.kind))
+        {
+            // A name of its own: "normal" may be a user's set already.
+            const std::string base = s.name;
+            for (int n = 2; std::any_of(out.begin(), out.end(),
+                                        [&](const ConstraintSet& o) { return o.name == s.name; });
+                 ++n)
+                s.name = base + " " + std::to_string(n);
+            out.push_back(std::move(s));
+        }
+    return out;
 }
 
 ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
@@ -461,7 +575,10 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
     };
     // A section with per-element weights: one set per run of equal weights, each with its
     // own mu (the sets of a recipe exported with several weights come back as they were);
-    // without weights, one set with the kind's mu.
+    // without weights, one set with the kind's mu. Vertices weighted by more runs than
+    // kMaxWeightRuns: one set with a weight map (a painted map, which would be a set per
+    // vertex).
+    constexpr size_t kMaxWeightRuns = 16;
     const auto add_weighted = [&](ConstraintKind kind, const std::vector<Index>& elements,
                                   Scalar mu, const std::vector<Scalar>& weights, Scalar& kind_mu,
                                   std::vector<Vec3> normals = {}) {
@@ -471,6 +588,17 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
             kind_mu = mu;
             ConstraintSet& set = vertices ? add(kind, elements, {}) : add(kind, {}, elements);
             set.normals = std::move(normals);
+            return;
+        }
+        // A painted map (more than a few values) comes back as one set with its map.
+        size_t runs = 1;
+        for (size_t k = 1; k < weights.size(); ++k)
+            runs += weights[k] != weights[k - 1] ? 1 : 0;
+        if (vertices && runs > kMaxWeightRuns)
+        {
+            ConstraintSet& set = add(kind, elements, {});
+            set.mu = mu;
+            set.weights = weights;
             return;
         }
         for (size_t begin = 0, end; begin < elements.size(); begin = end)

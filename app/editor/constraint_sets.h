@@ -57,6 +57,13 @@ struct ConstraintSet
     //! Anchor, centroid, normal and soft normal sets: the set's own weight mu; nullopt: the
     //! kind's weight of the solver settings.
     std::optional<Scalar> mu;
+    //! \brief A weight map (painted, or a recipe's per-vertex weights): one value per vertex
+    //! of `vertices`; empty: every vertex 1. Anchor sets: vertex k is held with mu *
+    //! weights[k] >= 0. Region sets: vertex k's freedom in [0, 1] (region_anchor_weight):
+    //! 1 moves as a region vertex does, 0 stays fixed as a vertex outside the region does,
+    //! and in between it is held toward where the run starts, so that a painted region
+    //! fades into the fixed rest without a seam.
+    std::vector<Scalar> weights;
     bool operator==(const ConstraintSet&) const = default;
 };
 
@@ -97,6 +104,18 @@ struct SolverSettings
 //! \brief `settings` with the pace of `pace`: the steps per frame, the steps per run and
 //! "until converged", which say how the editor runs a recipe and are not part of it.
 SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace);
+
+//! Whether a kind's sets can carry a weight map (anchor and region sets).
+bool takes_weight_map(ConstraintKind kind);
+//! \brief The anchor weight that holds a region vertex of freedom w in (0, 1]: (1 - w) / w,
+//! 0 at full freedom and without bound as w -> 0, where the vertex is fixed; so a map fading
+//! to 0 meets the fixed rest continuously.
+Scalar region_anchor_weight(Scalar freedom);
+//! The weight map's value of a set's k-th vertex (1 without a map).
+inline Scalar map_value(const ConstraintSet& set, size_t k)
+{
+    return set.weights.empty() ? Scalar(1) : set.weights[k];
+}
 
 //! Whether a kind's sets carry a weight mu (anchor, centroid, normal, soft normal).
 bool takes_weight(ConstraintKind kind);
@@ -151,6 +170,12 @@ struct ImportedRecipe
 };
 //! \pre check_recipe(recipe, mesh) holds.
 ImportedRecipe sets_from_recipe(const Recipe& recipe, const Mesh& mesh);
+
+//! \brief The sets after a preset (cmd::ApplyPreset): the user's regions and pins, then the
+//! user's sets of the kinds the preset has none of, then the preset's other sets; the
+//! preset's regions and pins only for a kind the user has none of.
+std::vector<ConstraintSet> merge_preset(const std::vector<ConstraintSet>& user,
+                                        std::vector<ConstraintSet> preset);
 
 //! The colour a new set of `kind` gets (each kind its hue, as its glyphs show it).
 std::array<float, 3> default_color(ConstraintKind kind);

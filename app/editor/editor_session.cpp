@@ -6,6 +6,8 @@
 #include <utility>
 
 #include "app/editor/editor_ui.h"
+#include "app/editor/script.h"
+#include "app/editor/weight_paint.h"
 #include "core/geometry/face_geometry.h"
 
 namespace meshfair::app {
@@ -95,6 +97,7 @@ void EditorSession::mouse_press(MouseButton button, Modifiers mods, double x, do
     if (button == MouseButton::Left && !mods.alt && tool != nullptr)
     {
         std::vector<Command> out;
+        stroke_.clear();
         if (tool->press(tool_context(), mods, cursor_, out))
         {
             gesture_ = tool;
@@ -137,6 +140,8 @@ void EditorSession::mouse_release(MouseButton button, double x, double y)
         {
             std::fprintf(trace_, "gesture %s: %zu undo steps\n", tool->gesture_name(),
                          history_.undo_count());
+            if (!stroke_.empty())
+                std::fprintf(trace_, "stroke %s\n", stroke_action(stroke_).c_str());
             std::fflush(trace_);
         }
         return;
@@ -251,8 +256,9 @@ void EditorSession::prepare_ui()
     {
         state_.notes = constraint_notes(document_.sets);
         state_.region_holes.clear();
+        // A painted region fades to 0 at its edge, where a vertex left out is no spike.
         for (const ConstraintSet& s : document_.sets)
-            if (s.kind == ConstraintKind::Region)
+            if (s.kind == ConstraintKind::Region && s.weights.empty())
                 if (const size_t n = region_holes(s, document_.mesh, document_.topology).size())
                 {
                     state_.region_holes.emplace_back(s.name, n);
@@ -329,6 +335,31 @@ void EditorSession::sync_renderer()
     {
         border_ = region_border(document_);
         synced_.border = v.set_members;
+    }
+    // The weight map being painted, in colour while the Paint tool is on (not over a heat
+    // map, which was asked for).
+    if (state_.tool == ToolKind::Paint && !state_.heat_map)
+    {
+        const std::string name =
+            state_.tools.paint.set.empty() ? std::string(kPaintSet) : state_.tools.paint.set;
+        const std::pair<std::uint64_t, std::string> key{v.sets, name};
+        if (synced_.weights != key)
+        {
+            const std::optional<size_t> k = set_named(name);
+            renderer_.set_vertex_colors(weight_colors(k ? document_.sets[*k] : ConstraintSet{},
+                                                      document_.mesh.vertex_count()));
+            state_.display.vertex_colors = true;
+            synced_.weights = key;
+        }
+    }
+    else if (synced_.weights)
+    {
+        synced_.weights.reset();
+        if (!state_.heat_map)
+        {
+            renderer_.set_vertex_colors({});
+            state_.display.vertex_colors = false;
+        }
     }
     const bool sets_changed = synced_.glyphs_sets != v.sets;
     // Glyphs sit on the surface: they follow the positions when there are sets.

@@ -75,6 +75,9 @@ public:
     bool in_gesture() const { return gesture_ != nullptr; }
     //! What the active tool draws over the view now, in the view's pixels.
     ToolOverlay tool_overlay() const;
+    //! \brief The dabs of the last Paint stroke made with the mouse (stroke_action replays
+    //! them); the trace prints them when the stroke ends.
+    const std::vector<cmd::PaintDab>& last_stroke() const { return stroke_; }
 
     //! The index of the set named `name`, if any.
     std::optional<size_t> set_named(const std::string& name) const;
@@ -150,6 +153,7 @@ private:
     ScreenPoint cursor_;
     bool cursor_in_view_ = true;
     std::FILE* trace_ = nullptr;
+    std::vector<cmd::PaintDab> stroke_; // the dabs of the current or last mouse stroke
 
     // What the renderer and the panels last got, by the document's versions.
     struct Synced
@@ -157,6 +161,8 @@ private:
         std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
             border, counts;
         std::optional<std::uint64_t> energy;
+        //! The weight map shown (the sets' version and the set painted), if any.
+        std::optional<std::pair<std::uint64_t, std::string>> weights;
     } synced_;
     RegionBorder border_; // of the current sets
     std::vector<float> heat_;

@@ -28,6 +28,7 @@ void side_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
                  ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
                      ImGuiWindowFlags_NoCollapse);
     select_panel(ui);
+    paint_panel(ui);
     sets_panel(ui, rename_buffer, renaming);
     solver_panel(ui);
     legend_panel(ui);

@@ -29,7 +29,8 @@ std::size_t sets_bytes(const std::vector<ConstraintSet>& sets)
     std::size_t n = 0;
     for (const ConstraintSet& s : sets)
         n += sizeof(s) + s.name.size() + sizeof(Index) * (s.vertices.size() + s.faces.size()) +
-             sizeof(Vec3) * (s.targets.size() + s.normals.size());
+             sizeof(Vec3) * (s.targets.size() + s.normals.size()) +
+             sizeof(Scalar) * s.weights.size();
     return n;
 }
 

@@ -2,7 +2,9 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/persistence.h"
 
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 
 #include "core/errors.h"
 #include "core/io/io.h"
@@ -39,6 +41,33 @@ ImportedRecipe import_recipe(const Document& document, const std::string& path)
     const Recipe internal =
         renumber_recipe(recipe, document.order.vertex_index, document.order.face_index);
     return sets_from_recipe(internal, document.mesh);
+}
+
+std::vector<std::string> preset_names()
+{
+    std::vector<std::string> names;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(MESHFAIR_RECIPES_DIR, ec))
+        if (entry.path().extension() == ".json")
+            names.push_back(entry.path().stem().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string preset_path(const std::string& preset)
+{
+    if (preset.find('/') != std::string::npos ||
+        (preset.size() > 5 && preset.substr(preset.size() - 5) == ".json"))
+        return preset;
+    const std::vector<std::string> names = preset_names();
+    if (std::find(names.begin(), names.end(), preset) == names.end())
+    {
+        std::string list;
+        for (const std::string& n : names)
+            list += (list.empty() ? "" : ", ") + n;
+        throw InvalidInputError("no preset named '" + preset + "' (the presets: " + list + ")");
+    }
+    return (std::filesystem::path(MESHFAIR_RECIPES_DIR) / (preset + ".json")).string();
 }
 
 namespace {

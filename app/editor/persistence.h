@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/editor/constraint_sets.h"
 #include "app/editor/document.h"
@@ -31,6 +32,12 @@ void export_recipe(const Document& document, const std::string& path);
 //! file's indices named in messages) and renumbered into the document's numbering.
 //! \throw InvalidInputError (RecipeError) naming the file and the key at fault.
 ImportedRecipe import_recipe(const Document& document, const std::string& path);
+//! The presets the solver panel offers: the names of assets/recipes/*.json, sorted.
+std::vector<std::string> preset_names();
+//! \brief The file of a preset: assets/recipes/NAME.json, or `preset` itself when it names
+//! a file (a path with a '/' or ending in .json).
+//! \throw InvalidInputError naming the presets there are when there is no such preset.
+std::string preset_path(const std::string& preset);
 
 //! \brief The autosave of a session and its recovery files (app/editor/recovery.h): when
 //! the document changed (its versions) and enough time went by, its edit state is written

@@ -85,7 +85,8 @@ Json set_json(const ConstraintSet& s)
             {"color", s.color},
             {"visible", s.visible},
             {"enabled", s.enabled},
-            {"mu", s.mu ? Json(*s.mu) : Json(nullptr)}};
+            {"mu", s.mu ? Json(*s.mu) : Json(nullptr)},
+            {"weights", s.weights}};
 }
 
 ConstraintSet set_of(const Json& j, Index vertices, Index faces)
@@ -115,6 +116,14 @@ ConstraintSet set_of(const Json& j, Index vertices, Index faces)
         if (!(*s.mu >= 0) || !std::isfinite(*s.mu))
             throw std::invalid_argument("a set's mu must be a number >= 0");
     }
+    s.weights = j.value("weights", std::vector<Scalar>{}); // earlier files have no maps
+    if (!s.weights.empty() && s.weights.size() != s.vertices.size())
+        throw std::invalid_argument("a weight map needs one weight per vertex");
+    for (const Scalar w : s.weights)
+        if (!(w >= 0) || !std::isfinite(w) || (s.kind == ConstraintKind::Region && w > 1))
+            throw std::invalid_argument(
+                "a weight map's values must be in [0, 1] (region) or "
+                ">= 0 (anchor)");
     return s;
 }
 

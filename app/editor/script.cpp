@@ -170,13 +170,16 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                         s->settings =
                             merged_settings(s->settings, a.keys, session.document().solver);
                     }
-                    if (!session.dispatch(command) && session.state().message_is_error)
+                    if (!session.dispatch(command, Interaction{a.interaction}) &&
+                        session.state().message_is_error)
                     {
                         if (a.writes)
                             throw WriteError(a.where + ": " + session.state().message);
                         fail(script.name, a.where, session.state().message);
                     }
                 }
+                if (!a.interaction.empty())
+                    session.end_interaction();
                 if (a.waits_for_heat)
                     session.wait_for_heat();
                 host.run_frame();

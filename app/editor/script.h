@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,8 @@ struct ScriptAction
     //! A solver action's keys: its command's settings give only these, merged into the
     //! settings of the moment when it is played.
     std::vector<std::string> keys;
+    //! Commands: one interaction, so one undo step (a stroke's dabs); empty: each its own.
+    std::string interaction;
 };
 
 struct Script
@@ -55,6 +58,11 @@ struct Script
 //! for JSON that does not parse).
 Script parse_script(const std::string& text, const std::string& name);
 Script read_script(const std::string& path);
+
+//! \brief A stroke's dabs (one set, mode, radius, strength, curve and steps) as the script
+//! action that replays them bit for bit: {"paint": {..., "dabs": [[x, y, z], ...]}} on one
+//! line; the editor's trace prints it at the end of each Paint stroke.
+std::string stroke_action(std::span<const cmd::PaintDab> dabs);
 
 //! One input event of `type` at `p` (framebuffer pixels).
 InputEvent input_event(InputEvent::Type type, ScreenPoint p, MouseButton button = MouseButton::Left,

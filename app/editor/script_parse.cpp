@@ -94,19 +94,20 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     a.where = r.where;
     if (!j.is_object())
         fail(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",          "elements",     "through",
-                                        "brush_radius",  "drag",         "click",
-                                        "scroll",        "move",         "key",
-                                        "type",          "click_widget", "frames",
-                                        "select",        "undo",         "redo",
-                                        "view",          "projection",   "screenshot",
-                                        "save_mesh",     "create_set",   "delete_set",
-                                        "show_set",      "hide_set",     "select_set",
-                                        "move_pins",     "rename_set",   "normal_direction",
-                                        "solver",        "step",         "play",
-                                        "reset",         "apply",        "export_recipe",
-                                        "import_recipe", "noise",        "heat_map",
-                                        "autosave",      "recover",      "up_axis"};
+    static const char* const kinds[] = {"tool",          "elements",       "through",
+                                        "brush_radius",  "drag",           "click",
+                                        "scroll",        "move",           "key",
+                                        "type",          "click_widget",   "frames",
+                                        "select",        "undo",           "redo",
+                                        "view",          "projection",     "screenshot",
+                                        "save_mesh",     "create_set",     "delete_set",
+                                        "show_set",      "hide_set",       "select_set",
+                                        "move_pins",     "rename_set",     "normal_direction",
+                                        "solver",        "step",           "play",
+                                        "reset",         "apply",          "export_recipe",
+                                        "import_recipe", "noise",          "heat_map",
+                                        "autosave",      "recover",        "up_axis",
+                                        "paint",         "paint_settings", "preset"};
     // Options, and the actions each belongs to.
     static const std::pair<const char*, const char*> options[] = {
         {"name", "create_set rename_set"},
@@ -201,8 +202,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         const std::optional<ToolKind> tool = tool_named(t);
         if (!tool)
             r.bad(kind, "'" + t +
-                            "' is not navigate, click, brush, rectangle, lasso, move_pins or "
-                            "aim_normals");
+                            "' is not navigate, click, brush, rectangle, lasso, move_pins, "
+                            "aim_normals or paint");
         command(SetTool{*tool});
     }
     else if (kind == "elements")
@@ -361,6 +362,78 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         if (d == Vec3{0, 0, 0})
             r.bad("direction", "must not be zero");
         command(SetNormalDirection{r.text(v, kind), d});
+    }
+    else if (kind == "preset")
+        command(ApplyPreset{r.text(v, kind)});
+    else if (kind == "paint" || kind == "paint_settings")
+    {
+        // A stroke's dabs ("paint"), or the Paint tool's settings for strokes given as input.
+        if (!v.is_object())
+            r.bad(kind, "must be an object");
+        const bool stroke = kind == "paint";
+        std::vector<std::string> keys = {"set", "mode", "strength", "curve", "steps"};
+        if (stroke)
+            keys.insert(keys.end(), {"radius", "dabs"});
+        for (const auto& item : v.items())
+            if (std::find(keys.begin(), keys.end(), item.key()) == keys.end())
+                r.bad(kind + "." + item.key(), "is not a key of '" + kind + "'");
+        PaintSettings p;
+        if (v.contains("set"))
+            p.set = r.text(v["set"], kind + ".set");
+        if (v.contains("mode"))
+        {
+            const std::optional<PaintMode> mode =
+                paint_mode_named(r.text(v["mode"], kind + ".mode"));
+            if (!mode)
+                r.bad(kind + ".mode", "must be \"relax\", \"add\", \"subtract\" or \"smooth\"");
+            p.mode = *mode;
+        }
+        if (v.contains("strength"))
+            p.strength = r.number(v["strength"], kind + ".strength", 0, 1);
+        if (v.contains("curve"))
+        {
+            const std::optional<FalloffCurve> curve =
+                falloff_curve_named(r.text(v["curve"], kind + ".curve"));
+            if (!curve)
+                r.bad(kind + ".curve",
+                      "must be \"smooth\", \"sphere\", \"root\", \"linear\", "
+                      "\"sharp\" or \"constant\"");
+            p.curve = *curve;
+        }
+        if (v.contains("steps"))
+        {
+            const Json& n = v["steps"];
+            if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 10000)
+                r.bad(kind + ".steps", "must be a count from 1 to 10000");
+            p.steps = static_cast<int>(n.get<long long>());
+        }
+        if (!stroke)
+            command(SetPaintSettings{p});
+        else
+        {
+            if (!v.contains("radius") || !v.contains("dabs") || !v["dabs"].is_array() ||
+                v["dabs"].empty())
+                r.bad(kind, "needs 'radius' and 'dabs': a list of centres [x, y, z]");
+            const Scalar radius = r.number(v["radius"], kind + ".radius", 1e-12, 1e12);
+            const std::string set = p.set.empty() ? std::string(kPaintSet) : p.set;
+            for (size_t k = 0; k < v["dabs"].size(); ++k)
+            {
+                const Json& c = v["dabs"][k];
+                const std::string key = kind + ".dabs[" + std::to_string(k) + "]";
+                if (!c.is_array() || c.size() != 3)
+                    r.bad(key, "must be [x, y, z]");
+                command(
+                    PaintDab{set,
+                             p.mode,
+                             {r.number(c[0], key, -1e12, 1e12), r.number(c[1], key, -1e12, 1e12),
+                              r.number(c[2], key, -1e12, 1e12)},
+                             radius,
+                             p.strength,
+                             p.curve,
+                             p.steps});
+            }
+            a.interaction = "stroke"; // one undo step, as the tool's stroke
+        }
     }
     else if (kind == "solver")
     {
@@ -556,6 +629,25 @@ Script parse_script(const std::string& text, const std::string& name)
         script.actions.push_back(
             parse_action((*list)[k], Reader{name, "actions[" + std::to_string(k) + "]"}));
     return script;
+}
+
+std::string stroke_action(std::span<const cmd::PaintDab> dabs)
+{
+    if (dabs.empty())
+        return {};
+    const cmd::PaintDab& first = dabs.front();
+    Json centres = Json::array();
+    for (const cmd::PaintDab& d : dabs)
+        centres.push_back({d.center[0], d.center[1], d.center[2]});
+    const Json action = {{"paint",
+                          {{"set", first.set},
+                           {"mode", std::string(paint_mode_name(first.mode))},
+                           {"radius", first.radius},
+                           {"strength", first.strength},
+                           {"curve", std::string(falloff_curve_name(first.curve))},
+                           {"steps", first.steps},
+                           {"dabs", centres}}}};
+    return action.dump();
 }
 
 Script read_script(const std::string& path)

@@ -12,7 +12,7 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<ToolKind, std::string_view>, 7> kToolNames = {{
+constexpr std::array<std::pair<ToolKind, std::string_view>, 8> kToolNames = {{
     {ToolKind::Navigate, "navigate"},
     {ToolKind::Click, "click"},
     {ToolKind::Brush, "brush"},
@@ -20,6 +20,14 @@ constexpr std::array<std::pair<ToolKind, std::string_view>, 7> kToolNames = {{
     {ToolKind::Lasso, "lasso"},
     {ToolKind::MovePins, "move_pins"},
     {ToolKind::AimNormals, "aim_normals"},
+    {ToolKind::Paint, "paint"},
+}};
+
+constexpr std::array<std::pair<PaintMode, std::string_view>, 4> kPaintModes = {{
+    {PaintMode::Relax, "relax"},
+    {PaintMode::Add, "add"},
+    {PaintMode::Subtract, "subtract"},
+    {PaintMode::Smooth, "smooth"},
 }};
 
 // Face centroids (the mean of the corners) as floats, as the renderer projects them.
@@ -53,6 +61,22 @@ std::optional<ToolKind> tool_named(std::string_view name)
     for (const auto& [t, n] : kToolNames)
         if (n == name)
             return t;
+    return std::nullopt;
+}
+
+std::string_view paint_mode_name(PaintMode mode)
+{
+    for (const auto& [m, name] : kPaintModes)
+        if (m == mode)
+            return name;
+    return {};
+}
+
+std::optional<PaintMode> paint_mode_named(std::string_view name)
+{
+    for (const auto& [m, n] : kPaintModes)
+        if (n == name)
+            return m;
     return std::nullopt;
 }
 

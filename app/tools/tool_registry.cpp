@@ -7,12 +7,13 @@
 #include "app/tools/click_tool.h"
 #include "app/tools/lasso_tool.h"
 #include "app/tools/move_pins_tool.h"
+#include "app/tools/paint_tool.h"
 #include "app/tools/rectangle_tool.h"
 #include "app/tools/selection_gesture.h"
 
 namespace meshfair::app {
 
-static_assert(static_cast<int>(ToolKind::AimNormals) + 1 == kToolKinds);
+static_assert(static_cast<int>(ToolKind::Paint) + 1 == kToolKinds);
 
 ToolRegistry::ToolRegistry()
 {
@@ -29,6 +30,7 @@ ToolRegistry::ToolRegistry()
         std::make_unique<SelectionGesture>(ToolKind::Lasso, std::make_unique<LassoTool>());
     slot(ToolKind::MovePins) = std::make_unique<MovePinsTool>();
     slot(ToolKind::AimNormals) = std::make_unique<AimNormalsTool>();
+    slot(ToolKind::Paint) = std::make_unique<PaintTool>();
 }
 
 Grabbed nearest_handle(std::span<const GrabHandle> handles, const Camera& camera,

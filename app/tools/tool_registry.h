@@ -9,10 +9,10 @@
 
 namespace meshfair::app {
 
-inline constexpr int kToolKinds = 7;
+inline constexpr int kToolKinds = 8;
 
 //! \brief Every tool of the left mouse button, one per ToolKind but Navigate (which only
-//! orbits): the selection tools, MovePins and AimNormals.
+//! orbits): the selection tools, MovePins, AimNormals and Paint.
 class ToolRegistry
 {
 public:

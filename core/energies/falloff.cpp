@@ -12,6 +12,11 @@ namespace meshfair {
 
 namespace {
 
+constexpr std::pair<std::string_view, FalloffCurve> kCurves[] = {
+    {"smooth", FalloffCurve::Smooth}, {"sphere", FalloffCurve::Sphere},
+    {"root", FalloffCurve::Root},     {"linear", FalloffCurve::Linear},
+    {"sharp", FalloffCurve::Sharp},   {"constant", FalloffCurve::Constant}};
+
 Scalar edge_length(std::span<const Scalar> x, Index i, Index j)
 {
     Scalar sum = 0;
@@ -24,6 +29,22 @@ Scalar edge_length(std::span<const Scalar> x, Index i, Index j)
 }
 
 } // namespace
+
+std::string_view falloff_curve_name(FalloffCurve curve)
+{
+    for (const auto& [name, c] : kCurves)
+        if (c == curve)
+            return name;
+    return "smooth";
+}
+
+std::optional<FalloffCurve> falloff_curve_named(std::string_view name)
+{
+    for (const auto& [n, c] : kCurves)
+        if (n == name)
+            return c;
+    return std::nullopt;
+}
 
 Scalar falloff_weight(FalloffCurve curve, Scalar d, Scalar radius)
 {

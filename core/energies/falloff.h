@@ -2,7 +2,9 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <optional>
 #include <span>
+#include <string_view>
 #include <vector>
 
 #include "core/topology/topology.h"
@@ -20,6 +22,10 @@ enum class FalloffCurve
     Sharp,   //!< (1 - t)^2
     Constant //!< 1
 };
+
+//! "smooth", "sphere", "root", "linear", "sharp", "constant" (recipes, the editor, scripts).
+std::string_view falloff_curve_name(FalloffCurve curve);
+std::optional<FalloffCurve> falloff_curve_named(std::string_view name);
 
 //! \brief A falloff's weight at distance d for a radius r > 0: curve(d / r) for d < r, 0
 //! from r on (the constant curve too). r = 0: 1 at d = 0 (the sources), else 0.

@@ -418,11 +418,6 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
     return merge_sets(sets, "normal", &NormalConstraints::faces, &NormalConstraints::normals);
 }
 
-constexpr std::pair<const char*, FalloffCurve> kFalloffCurves[] = {
-    {"smooth", FalloffCurve::Smooth}, {"sphere", FalloffCurve::Sphere},
-    {"root", FalloffCurve::Root},     {"linear", FalloffCurve::Linear},
-    {"sharp", FalloffCurve::Sharp},   {"constant", FalloffCurve::Constant}};
-
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
@@ -741,14 +736,12 @@ Falloff parse_falloff(const Json& s, const std::string& key)
     }
     if (s.contains("curve"))
     {
-        bool known = false;
-        for (const auto& [name, curve] : kFalloffCurves)
-            if (s["curve"] == name)
-            {
-                f.curve = curve;
-                known = true;
-            }
-        if (!known)
+        const std::optional<FalloffCurve> curve =
+            s["curve"].is_string() ? falloff_curve_named(s["curve"].get<std::string>())
+                                   : std::nullopt;
+        if (curve)
+            f.curve = *curve;
+        else
             throw RecipeError(child(key, "curve"),
                               "must be \"smooth\", \"sphere\", \"root\", "
                               "\"linear\", \"sharp\" or \"constant\"");
@@ -784,10 +777,7 @@ Json bilateral_json(const BilateralWeights& b)
 
 Json falloff_json(const Falloff& f)
 {
-    const char* curve = "smooth";
-    for (const auto& [name, c] : kFalloffCurves)
-        if (c == f.curve)
-            curve = name;
+    const std::string curve(falloff_curve_name(f.curve));
     Json around = Json::array();
     if (f.border)
         around.push_back("border");

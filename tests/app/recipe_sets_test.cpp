@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "app/editor/constraint_sets.h"
@@ -89,5 +90,49 @@ TEST_SUITE("Editor recipes")
         s.taubin_mu = -0.3; // not below -lambda = -0.5
         CHECK(constraint_problems(sets, s) ==
               std::vector<std::string>{"Taubin's mu must be below -lambda"});
+    }
+
+    TEST_CASE("a preset keeps the artist's regions, pins and the kinds it does not have")
+    {
+        Mesh m = test::icosphere(2);
+        const auto set = [](std::string name, ConstraintKind kind, std::vector<Index> v) {
+            ConstraintSet s;
+            s.name = std::move(name);
+            s.kind = kind;
+            s.vertices = std::move(v);
+            return s;
+        };
+        const std::vector<ConstraintSet> user = {
+            set("patch", ConstraintKind::Region, {1, 2, 3, 4}),
+            set("pins", ConstraintKind::Pin, {5}),
+            set("normal", ConstraintKind::Anchor, {6, 7}), // a user's name the preset uses too
+        };
+        const Recipe denoise = read_recipe((test::assets_dir() / "recipes/denoise.json").string());
+        ImportedRecipe preset = sets_from_recipe(denoise, m);
+        const std::vector<ConstraintSet> merged = merge_preset(user, preset.sets);
+        // The user's three, then the preset's centroid and normal sets (no anchors in it).
+        REQUIRE(merged.size() == 5);
+        CHECK(merged[0] == user[0]);
+        CHECK(merged[1] == user[1]);
+        CHECK(merged[2] == user[2]);
+        CHECK(merged[3].kind == ConstraintKind::Centroid);
+        CHECK(merged[4].kind == ConstraintKind::Normal);
+        CHECK(merged[4].name == "normal 2");
+        // The preset's own anchors replace the user's; its regions do not.
+        std::vector<ConstraintSet> with_anchor = preset.sets;
+        with_anchor.push_back(set("anchor", ConstraintKind::Anchor, {9}));
+        with_anchor.push_back(set("region", ConstraintKind::Region, {9, 10}));
+        const std::vector<ConstraintSet> replaced = merge_preset(user, with_anchor);
+        CHECK(std::count_if(replaced.begin(), replaced.end(), [](const ConstraintSet& s) {
+                  return s.kind == ConstraintKind::Anchor && s.vertices == std::vector<Index>{9};
+              }) == 1);
+        CHECK(std::count_if(replaced.begin(), replaced.end(), [](const ConstraintSet& s) {
+                  return s.kind == ConstraintKind::Region;
+              }) == 1);
+        CHECK(std::none_of(replaced.begin(), replaced.end(), [](const ConstraintSet& s) {
+            return s.vertices == std::vector<Index>{6, 7};
+        }));
+        // With no region of the user's, the preset's comes in.
+        CHECK(merge_preset({}, with_anchor).size() == with_anchor.size());
     }
 }

@@ -41,14 +41,20 @@ Document edited(const fs::path& dir)
     d.selected_vertices[3] = 1;
     d.selected_faces[2] = 1;
     ConstraintSet pins{"pins", ConstraintKind::Pin, {1, 5}, {},   {{0, 0, 1}, {1, 1, 1}},
-                       {},     {1, 0, 0},           true,   true, std::nullopt};
+                       {},     {1, 0, 0},           true,   true, std::nullopt,
+                       {}};
     // A set out of the solve with a weight of its own: both kept.
     ConstraintSet normals{"up",      ConstraintKind::Normal,
                           {},        {0, 4},
                           {},        {{0, 1, 0}, {0, 1, 0}},
                           {0, 0, 1}, false,
-                          false,     2.5};
-    d.sets = {pins, normals};
+                          false,     2.5,
+                          {}};
+    // A painted region: its weight map comes back bit for bit.
+    ConstraintSet painted{
+        "brush", ConstraintKind::Region, {2, 3, 9},      {}, {}, {}, {0, 1, 0}, true,
+        true,    std::nullopt,           {0.125, 1, 0.1}};
+    d.sets = {pins, normals, painted};
     d.solver.lambda = 0.25;
     d.solver.joint = true;
     // The settings of denoising, Taubin's method, the volume and the falloff come back too.

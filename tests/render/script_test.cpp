@@ -234,7 +234,19 @@ TEST_SUITE("Scripted sessions")
         };
         CHECK(message(R"({"actions": [{"tool": "brush"}, {"tool": "spray"}]})") ==
               "'s.json': actions[1].tool: 'spray' is not navigate, click, brush, rectangle, "
-              "lasso, move_pins or aim_normals");
+              "lasso, move_pins, aim_normals or paint");
+        CHECK(message(R"([{"paint": {"radius": 0.1, "dabs": [[0, 0]]}}])") ==
+              "'s.json': actions[0].paint.dabs[0]: must be [x, y, z]");
+        CHECK(message(R"([{"paint": {"radius": 0.1, "mode": "spray", "dabs": [[0, 0, 0]]}}])") ==
+              "'s.json': actions[0].paint.mode: must be \"relax\", \"add\", \"subtract\" or "
+              "\"smooth\"");
+        CHECK(message(R"([{"paint": {"dabs": [[0, 0, 0]]}}])") ==
+              "'s.json': actions[0].paint: needs 'radius' and 'dabs': a list of centres [x, y, z]");
+        CHECK(message(R"([{"paint_settings": {"strength": 2}}])") ==
+              "'s.json': actions[0].paint_settings.strength: must be a number in [0.000000, "
+              "1.000000]");
+        CHECK(message(R"([{"paint_settings": {"size": 2}}])") ==
+              "'s.json': actions[0].paint_settings.size: is not a key of 'paint_settings'");
         CHECK(message("[{\"drag\": [[1, 2]]}]") ==
               "'s.json': actions[0].drag: must be a list of at least 2 points [x, y]");
         CHECK(message("[{\"click\": [1, 2], \"undo\": 1}]") ==

@@ -16,6 +16,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/editor/editor_session.h"
+#include "app/editor/script.h"
 #include "app/render/gl_renderer.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
@@ -483,5 +484,168 @@ TEST_SUITE("Live solving")
             REQUIRE(s.dispatch(cmd::Redo{}));
             CHECK(same(state(), states[k]));
         }
+    }
+}
+
+TEST_SUITE("Smoothing brush")
+{
+    // A stroke of the Paint tool across the bunny's flank, as the mouse gives it.
+    void stroke(EditorSession & s, const PaintSettings& paint)
+    {
+        s.dispatch(cmd::SetTool{ToolKind::Paint});
+        REQUIRE(s.dispatch(cmd::SetPaintSettings{paint}));
+        s.mouse_press(MouseButton::Left, {}, 170, 150);
+        for (int k = 1; k <= 8; ++k)
+            s.mouse_move(170 + 8 * k, 150 + 3 * k);
+        s.mouse_release(MouseButton::Left, 234, 174);
+        s.update();
+    }
+
+    TEST_CASE(
+        "a stroke is one undo step, moves only what it covers, and meshfair-cli "
+        "reproduces it from the exported recipe")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        s.update();
+        const std::vector<Scalar> before = s.document().mesh.positions;
+        PaintSettings paint;
+        paint.strength = 0.6;
+        paint.steps = 12;
+        stroke(s, paint);
+        const Document& d = s.document();
+        REQUIRE(s.last_stroke().size() > 4);
+        CHECK(s.history().undo_count() == 1);
+        CHECK(s.history().undo_label() == "smooth stroke");
+        REQUIRE(d.sets.size() == 1);
+        const ConstraintSet& brush = d.sets[0];
+        CHECK(brush.name == "brush");
+        CHECK(brush.kind == ConstraintKind::Region);
+        REQUIRE(brush.weights.size() == brush.vertices.size());
+        CHECK(std::all_of(brush.weights.begin(), brush.weights.end(),
+                          [](Scalar w) { return w > 0 && w <= 1; }));
+        CHECK(d.steps_from_base == 12);
+        CHECK(d.reproducible);
+        // Vertices the stroke did not reach keep their bits; those it freed moved.
+        std::vector<char> reached(before.size() / 3, 0);
+        for (const Index v : brush.vertices)
+            reached[static_cast<size_t>(v)] = 1;
+        size_t moved = 0, kept = 0;
+        for (size_t i = 0; i < reached.size(); ++i)
+        {
+            const bool same = std::equal(before.begin() + 3 * i, before.begin() + 3 * i + 3,
+                                         d.mesh.positions.begin() + 3 * i);
+            if (!reached[i])
+                kept += same ? 1 : 0;
+            else
+                moved += same ? 0 : 1;
+        }
+        CHECK(kept == reached.size() - brush.vertices.size());
+        CHECK(moved > brush.vertices.size() / 2);
+        // The stroke's region with its weight map, exported, runs the same bits.
+        CHECK(cli_reproduces(s, b.path, dir));
+        const Recipe r = read_recipe((dir / "recipe.json").string());
+        REQUIRE(r.soft);
+        CHECK_FALSE(r.soft->weights.empty());
+
+        // Undo: the shape and the sets as they were.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().mesh.positions == before);
+        CHECK(s.document().sets.empty());
+    }
+
+    TEST_CASE(
+        "a stroke's recorded dabs, played as a script by the editor, give its shape "
+        "bit for bit")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        s.update();
+        PaintSettings paint;
+        paint.strength = 0.4;
+        paint.curve = FalloffCurve::Sphere;
+        paint.steps = 7;
+        stroke(s, paint);
+        // Two strokes: the second starts from the first's shape.
+        paint.strength = 0.9;
+        stroke(s, paint);
+        CHECK(s.history().undo_count() == 2);
+        CHECK_FALSE(s.document().reproducible); // two runs: Apply first for one recipe
+        const std::string action = stroke_action(s.last_stroke());
+        REQUIRE(action.find("\"paint\"") != std::string::npos);
+
+        // The first stroke's dabs are the same as the second's path: replay both.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        std::vector<cmd::PaintDab> first;
+        paint.strength = 0.4;
+        stroke(s, paint);
+        first = s.last_stroke();
+        paint.strength = 0.9;
+        stroke(s, paint);
+        const fs::path script = dir / "replay.json", out = dir / "replayed.obj";
+        test::write_bytes(script, "{\"actions\": [" + stroke_action(first) + ", " + action +
+                                      ", {\"save_mesh\": " + nlohmann::json(out.string()).dump() +
+                                      "}]}");
+        const test::CommandRun run = test::run_command(
+            "env -u DISPLAY GALLIUM_DRIVER=llvmpipe " + test::shell_quote(MESHFAIR_EDITOR) +
+            " --offscreen " + test::shell_quote(b.path.string()) + " --script " +
+            test::shell_quote(script.string()) + " --screenshot " +
+            test::shell_quote((dir / "replayed.png").string()));
+        REQUIRE_MESSAGE(run.code == 0, run.err);
+        CHECK(io::read_mesh(out.string()).positions == file_order_mesh(s.document()).positions);
+    }
+
+    TEST_CASE("painting an anchor set's weights with the mouse is one undo step a stroke")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+        const size_t steps = s.history().undo_count();
+        PaintSettings paint;
+        paint.mode = PaintMode::Subtract;
+        paint.strength = 0.5;
+        paint.set = "anchors";
+        stroke(s, paint);
+        CHECK(s.history().undo_count() == steps + 1);
+        CHECK(s.history().undo_label() == "paint weights");
+        CHECK(s.document().mesh.positions == s.document().base_positions); // nothing ran
+        const ConstraintSet& anchors = s.document().sets[0];
+        REQUIRE(anchors.weights.size() == anchors.vertices.size());
+        const auto lowered = std::count_if(anchors.weights.begin(), anchors.weights.end(),
+                                           [](Scalar w) { return w < 1; });
+        CHECK(lowered > 0);
+        CHECK(static_cast<size_t>(lowered) < anchors.vertices.size());
+        // However often the dabs overlap, a stroke lowers a weight by its strength at most.
+        CHECK(std::all_of(anchors.weights.begin(), anchors.weights.end(),
+                          [](Scalar w) { return w >= 0.5 && w <= 1; }));
+        CHECK(*std::min_element(anchors.weights.begin(), anchors.weights.end()) < 0.55);
+        // The recipe holds each anchor with the kind's weight times its map.
+        SolverSettings settings = s.document().solver;
+        settings.anchor_mu = 3;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{settings}));
+        const Recipe r = build_recipe(s.document().sets, s.document().solver, s.document().mesh,
+                                      s.document().base_positions, 1);
+        REQUIRE(r.soft);
+        REQUIRE(r.soft->weights.size() == anchors.vertices.size());
+        for (size_t k = 0; k < anchors.vertices.size(); ++k)
+            CHECK(r.soft->weights[k] == 3 * anchors.weights[k]);
+        // Smoothing the map, then undoing it, returns the painted map exactly.
+        const std::vector<Scalar> painted = s.document().sets[0].weights;
+        paint.mode = PaintMode::Smooth;
+        stroke(s, paint);
+        CHECK(s.document().sets[0].weights != painted);
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().sets[0].weights == painted);
+        // Subtract on a set that is not there is refused, naming it.
+        paint.set = "nothing";
+        paint.mode = PaintMode::Subtract;
+        CHECK_FALSE(s.dispatch(cmd::PaintDab{
+            "nothing", PaintMode::Subtract, {0, 0, 0}, 0.1, 0.5, FalloffCurve::Smooth, 1}));
+        CHECK(s.state().message == "no set named 'nothing' to paint");
     }
 }

@@ -23,6 +23,12 @@ void PanelContext::track(const std::string& label) const
         return; // scrolled out of its window: not where a click can reach it
     const ImGuiIO& io = ImGui::GetIO();
     const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    // Half cut off by the window's edge: a click at its centre would miss it.
+    const ImVec2 lo = ImGui::GetWindowDrawList()->GetClipRectMin();
+    const ImVec2 hi = ImGui::GetWindowDrawList()->GetClipRectMax();
+    const float cx = (a.x + b.x) / 2, cy = (a.y + b.y) / 2;
+    if (cx < lo.x || cx >= hi.x || cy < lo.y || cy >= hi.y)
+        return;
     const double sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0;
     const double sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0;
     widgets[label] = {a.x * sx, a.y * sy, b.x * sx, b.y * sy};

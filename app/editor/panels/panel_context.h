@@ -38,6 +38,8 @@ void select_panel(const PanelContext& ui);
 //! The rename field's text and the set being renamed live in the EditorUi.
 void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string& renaming);
 void solver_panel(const PanelContext& ui);
+//! The Paint tool's mode, strength, curve, steps and the set it paints.
+void paint_panel(const PanelContext& ui);
 void energy_window(const PanelContext& ui);
 void legend_panel(const PanelContext& ui);
 void mesh_panel(const PanelContext& ui);

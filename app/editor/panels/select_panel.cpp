@@ -26,10 +26,14 @@ void select_panel(const PanelContext& ui)
         return;
     const EditorState& state = ui.state;
     static constexpr std::pair<ToolKind, const char*> tools[] = {
-        {ToolKind::Navigate, "navigate (N)"},     {ToolKind::Click, "click (K)"},
-        {ToolKind::Brush, "brush (C)"},           {ToolKind::Rectangle, "rectangle (R)"},
-        {ToolKind::Lasso, "lasso (L)"},           {ToolKind::MovePins, "move pins (M)"},
-        {ToolKind::AimNormals, "aim normals (D)"}};
+        {ToolKind::Navigate, "navigate (N)"},
+        {ToolKind::Click, "click (K)"},
+        {ToolKind::Brush, "brush (C)"},
+        {ToolKind::Rectangle, "rectangle (R)"},
+        {ToolKind::Lasso, "lasso (L)"},
+        {ToolKind::MovePins, "move pins (M)"},
+        {ToolKind::AimNormals, "aim normals (D)"},
+        {ToolKind::Paint, "paint (O)"}};
     for (size_t k = 0; k < std::size(tools); ++k)
     {
         if (k % 2 == 1)

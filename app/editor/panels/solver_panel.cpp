@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
+#include "app/editor/persistence.h"
 
 namespace meshfair::app {
 
@@ -32,6 +35,20 @@ void solver_panel(const PanelContext& ui)
         return;
     const Document& document = ui.document;
     const EditorState& state = ui.state;
+    // The presets: each sets the recipe's settings over the artist's regions and pins.
+    static const std::vector<std::string> presets = preset_names();
+    ImGui::SetNextItemWidth(160);
+    if (ImGui::BeginCombo("preset", "choose...", ImGuiComboFlags_None))
+    {
+        for (const std::string& name : presets)
+        {
+            if (ImGui::Selectable(name.c_str(), false))
+                ui.give(ApplyPreset{name});
+            ui.track("preset/" + name);
+        }
+        ImGui::EndCombo();
+    }
+    ui.track("preset");
     SolverSettings s = document.solver;
     bool toggled = false, dragged = false;
     toggled |= ui.checkbox("optimal step (line search, safe)", &s.optimal_step, "optimal step");

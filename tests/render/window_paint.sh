@@ -1,0 +1,106 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT
+# The Paint tool and the preset menu in a real window under Xvfb, driven by synthetic input
+# (xdotool) as a person drives them:
+#  1. O, then a stroke over the bunny's flank: one undo step; the brush's weight map shows
+#     in colour (green, weight 1/2 at the default strength, under the stroke, over blue, in a
+#     screenshot taken from outside the editor);
+#  2. the recipe exported through the File menu reproduces the saved shape through
+#     meshfair-cli, and the stroke the trace prints, played as a script offscreen, too;
+#  3. "subtract weight" clicked in the Paint panel, a stroke, Ctrl+Z: one undo step each;
+#  4. the denoise preset chosen in the solver panel's menu keeps the brush's region, and
+#     the recipe exported then has its bilateral weights and the volume.
+#   window_paint.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
+set -euo pipefail
+if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
+    export MESHFAIR_IN_XVFB=1
+    exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
+fi
+meshfair=$1 cli=$2 bunny=$3 work=$4
+name=paint
+. "$(dirname "$0")/window_support.sh"
+fresh_work_dir "$work"
+"$cli" noise "$bunny" -o "$work/noisy.obj" --sigma 0.3 --seed 4 >/dev/null
+cp "$work/noisy.obj" "$work/input.obj"
+start_editor "$meshfair" "$work/noisy.obj" "$work/editor.log" "$work/widgets.tsv"
+
+# The vertex lines of two OBJ files are the same.
+same_vertices() { cmp -s <(grep '^v ' "$1") <(grep '^v ' "$2"); }
+
+# --- 1. A stroke of the smoothing brush over the flank, in the front view.
+key 1
+key Home
+key o
+drag 330 390 470 410 10
+wait_line "gesture paint"
+wait_line "^stroke {"
+[ "$(count_lines 'command .*: failed')" = 0 ] || fail "a command failed: $(grep 'failed' "$log" | head -3)"
+sleep 0.5
+xwd -root -silent | convert xwd:- "$work/painted.png"
+# Green (weight 1/2) under the stroke, shaded: pixels far more green than red or blue; the
+# rest of the bunny blue (weight 0).
+count() {
+    convert "$work/painted.png" -crop 640x420+0+40 +repage -fx "$1" \
+        -format '%[fx:round(mean * w * h)]' info:
+}
+green=$(count 'g > 0.5 && r < 0.4 && b < 0.4')
+blue=$(count 'b > 0.5 && r < 0.2 && g < 0.2')
+[ "$green" -gt 300 ] && [ "$blue" -gt 20000 ] ||
+    fail "the weight map is not shown: $green green pixels under the stroke, $blue blue"
+
+# --- 2. The exported recipe and the printed stroke reproduce the shape.
+click_widget "File"
+click_widget "File/Export recipe..."
+wait_dialog
+key ctrl+a
+type_text "stroke.json"
+key Return
+wait_line "command export recipe: ok"
+grep -q "reproduces the shape" "$log" || true
+key ctrl+shift+s
+wait_dialog
+key ctrl+a
+type_text "stroked.obj"
+key Return
+wait_line "command save: ok"
+"$cli" smooth "$work/input.obj" -o "$work/cli.obj" --recipe "$work/stroke.json" --quiet
+same_vertices "$work/cli.obj" "$work/stroked.obj" ||
+    fail "meshfair-cli with the exported recipe does not give the stroke's shape"
+same_vertices "$work/input.obj" "$work/stroked.obj" && fail "the stroke moved nothing"
+stroke=$(grep '^stroke ' "$log" | tail -1 | cut -d' ' -f2-)
+echo "{\"actions\": [$stroke, {\"save_mesh\": \"$work/replayed.obj\"}]}" >"$work/replay.json"
+env -u DISPLAY "$meshfair" --offscreen "$work/input.obj" --script "$work/replay.json" \
+    --screenshot "$work/replayed.png" >/dev/null
+same_vertices "$work/replayed.obj" "$work/stroked.obj" ||
+    fail "the printed stroke, played as a script, does not give the stroke's shape"
+
+# --- 3. Weights subtracted with a stroke, then undone.
+click_widget "subtract weight"
+wait_line "command paint settings: ok"
+steps=$(count_lines '^gesture paint')
+drag 360 395 420 400 6
+wait_line "^gesture paint" $((steps + 1))
+grep '^gesture paint' "$log" | tail -1 | grep -q "undo steps" || fail "no undo step for the stroke"
+key ctrl+z
+wait_line "command undo: ok"
+
+# --- 4. The denoise preset over the brush's region.
+click_widget "preset"
+click_widget "preset/denoise"
+wait_line "command preset: ok"
+click_widget "File"
+click_widget "File/Export recipe..."
+wait_dialog
+key ctrl+a
+type_text "denoise-here.json"
+key Return
+wait_line "command export recipe: ok" 2
+for part in '"bilateral"' '"volume"' '"region"'; do
+    grep -q "$part" "$work/denoise-here.json" ||
+        fail "the recipe after the denoise preset lacks $part"
+done
+
+# The shape was saved, and sets are not the mesh file's: Ctrl+Q quits without asking.
+key ctrl+q
+wait_exit "$pid" "$log" "$name" "Ctrl+Q after saving"
+echo "ok: a smoothing stroke ($green green pixels of weight 1/2, $blue blue of 0), reproduced by meshfair-cli and by its script, weights subtracted and undone, the denoise preset over the region"
