@@ -206,6 +206,35 @@ int main(int argc, char** argv)
         "of a 16.7 ms frame\n",
         frame, 100 * frame / 16.7);
 
+    // --- The smoothing brush: a stroke of the Paint tool as the mouse gives it. The press
+    // renders the ID buffer once (the visible vertices); each dab puts the shape back where
+    // the stroke began and runs the stroke's steps of the whole recipe with the painted
+    // region (the solver restarted for the new map).
+    {
+        session.dispatch(cmd::SetTool{ToolKind::Paint});
+        session.dispatch(cmd::SetBrushRadius{40});
+        Series press{"smoothing brush: the press (visible vertices, first dab)", {}};
+        Series dab{"smoothing brush: a mouse move with one dab (10 steps)", {}};
+        for (int rep = 0; rep < reps; ++rep)
+        {
+            session.camera().orbit(OrbitStyle::Turntable, 0, 0, 2, 0, width, height);
+            press.ms.push_back(
+                timed([&] { session.mouse_press(MouseButton::Left, {}, 0.45 * width, y); }));
+            for (int e = 1; e <= 4; ++e)
+            {
+                const std::size_t before = session.last_stroke().size();
+                const double ms = timed([&] { session.mouse_move((0.45 + 0.01 * e) * width, y); });
+                if (session.last_stroke().size() == before + 1)
+                    dab.ms.push_back(ms);
+            }
+            session.mouse_release(MouseButton::Left, 0.49 * width, y);
+            session.dispatch(cmd::Undo{});
+        }
+        std::printf("\n| part | samples | median ms | max ms |\n|---|---|---|---|\n");
+        print(press);
+        print(dab);
+    }
+
     // --- Live solving: a frame of one step, as the solver's thread and the interface run
     // it, each part timed apart, for plain smoothing and for the combined recipe. The
     // parts are those of LiveSolver::run_steps (step, energy for the plot, the positions

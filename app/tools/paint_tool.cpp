@@ -14,43 +14,70 @@ bool PaintTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
     paint_ = context.settings.paint;
     if (paint_.set.empty())
         paint_.set = std::string(kPaintSet);
-    radius_px_ = context.settings.brush_radius_px;
-    if (view_.renderer == nullptr || view_.camera == nullptr)
+    radius_px_ = std::max(context.settings.brush_radius_px, 1.0);
+    if (view_.mesh == nullptr || view_.camera == nullptr)
         return false;
-    const PickResult hit =
-        view_.renderer->pick(*view_.camera, view_.view, static_cast<int>(std::floor(at.x)),
-                             static_cast<int>(std::floor(at.y)));
-    if (!hit.hit)
+    // The visible vertices in the view and where they project, kept for the stroke.
+    ToolSettings vertices = context.settings;
+    vertices.elements = ElementKind::Vertices;
+    vertices.through = false;
+    const ScreenElements elements = screen_elements(view_, vertices);
+    visible_.clear();
+    projected_.clear();
+    for (size_t k = 0; k < elements.points.size(); ++k)
+    {
+        const ScreenPoint& p = elements.points[k];
+        if ((elements.visible.empty() || elements.visible[k]) && p.depth >= 0 && p.depth <= 1 &&
+            p.x >= 0 && p.y >= 0 && p.x < view_.view.width && p.y < view_.view.height)
+        {
+            visible_.push_back(static_cast<Index>(k));
+            projected_.push_back(p);
+        }
+    }
+    const Index v = nearest(at);
+    if (v == kInvalidIndex)
         return false;
-    // The screen radius at the depth of the surface under the cursor, in the world.
+    // The screen radius at that vertex's depth, in the world.
+    const ScreenPoint& p = projected_[static_cast<size_t>(v)];
     const Camera& camera = *view_.camera;
     const int w = view_.view.width, h = view_.view.height;
-    const glm::dvec3 window = camera.project(hit.point, w, h);
-    const glm::dvec3 edge = camera.unproject({window.x + radius_px_, window.y, window.z}, w, h);
-    radius_ = glm::length(edge - hit.point);
+    radius_ = glm::length(camera.unproject({p.x + radius_px_, p.y, p.depth}, w, h) -
+                          camera.unproject({p.x, p.y, p.depth}, w, h));
     if (!(radius_ > 0) || !std::isfinite(radius_))
         return false;
-    out.push_back(cmd::PaintDab{paint_.set,
-                                paint_.mode,
-                                {hit.point.x, hit.point.y, hit.point.z},
-                                radius_,
-                                paint_.strength,
-                                paint_.curve,
-                                paint_.steps});
+    dab(at, out);
     last_ = at;
     return true;
 }
 
+Index PaintTool::nearest(ScreenPoint at) const
+{
+    Index best = kInvalidIndex;
+    double best_d2 = radius_px_ * radius_px_;
+    for (size_t k = 0; k < projected_.size(); ++k)
+    {
+        const double dx = projected_[k].x - at.x, dy = projected_[k].y - at.y;
+        const double d2 = dx * dx + dy * dy;
+        if (d2 <= best_d2)
+        {
+            best_d2 = d2;
+            best = static_cast<Index>(k);
+        }
+    }
+    return best;
+}
+
 void PaintTool::dab(ScreenPoint at, std::vector<Command>& out)
 {
-    const PickResult hit =
-        view_.renderer->pick(*view_.camera, view_.view, static_cast<int>(std::floor(at.x)),
-                             static_cast<int>(std::floor(at.y)));
-    if (!hit.hit)
+    const Index k = nearest(at);
+    if (k == kInvalidIndex)
         return;
+    // Where the vertex is now (the strokes's dabs move it), in the world.
+    const size_t v = 3 * static_cast<size_t>(visible_[static_cast<size_t>(k)]);
+    const std::vector<Scalar>& x = view_.mesh->positions;
     out.push_back(cmd::PaintDab{paint_.set,
                                 paint_.mode,
-                                {hit.point.x, hit.point.y, hit.point.z},
+                                {x[v], x[v + 1], x[v + 2]},
                                 radius_,
                                 paint_.strength,
                                 paint_.curve,

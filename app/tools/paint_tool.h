@@ -9,10 +9,13 @@ namespace meshfair::app {
 //! \brief The O tool, a sculpt-style brush: a stroke over the surface gives PaintDab
 //! commands (the smoothing brush, or painting a set's weight map, as PaintSettings say).
 //!
-//! Each dab is where the ID buffer shows the surface under the cursor, with the screen
-//! radius turned into the world at that depth, so that the commands are in the world and a
-//! script replays them without the view. Dabs are a quarter of the radius apart along the
-//! cursor's path (a fast stroke leaves no gaps); a press off the surface navigates.
+//! Each dab is centred on the visible vertex nearest to the cursor (within the radius), with
+//! the screen radius turned into the world at the depth of the first, so that the commands
+//! are in the world and a script replays them without the view. What is visible comes from
+//! the ID buffer rendered once, at the press (as the selection brush does): a dab then costs
+//! a scan of the visible vertices' screen points, not a render of the mesh. Dabs are a
+//! quarter of the radius apart along the cursor's path (a fast stroke leaves no gaps); a
+//! press where no visible vertex is within the radius navigates.
 class PaintTool final : public InteractiveTool
 {
 public:
@@ -25,10 +28,14 @@ public:
     const char* gesture_name() const override { return "paint"; }
 
 private:
-    //! A dab at `at` when the surface is there.
+    //! The visible vertex nearest to `at` within the radius (kInvalidIndex: none).
+    Index nearest(ScreenPoint at) const;
+    //! A dab at `at` when a visible vertex is there.
     void dab(ScreenPoint at, std::vector<Command>& out);
 
     ToolView view_;
+    std::vector<Index> visible_;         // the vertices the view showed at the press
+    std::vector<ScreenPoint> projected_; // where each of them projected
     PaintSettings paint_;
     double radius_px_ = 24;
     double radius_ = 0; // in the world, fixed for the stroke at its first dab

@@ -9,7 +9,9 @@
 #     meshfair-cli, and the stroke the trace prints, played as a script offscreen, too;
 #  3. "subtract weight" clicked in the Paint panel, a stroke, Ctrl+Z: one undo step each;
 #  4. the denoise preset chosen in the solver panel's menu keeps the brush's region, and
-#     the recipe exported then has its bilateral weights and the volume.
+#     the recipe exported then has its bilateral weights and the volume; the creases'
+#     checkbox and sigma_r slider, the falloff's checkbox, radius slider and curve menu
+#     clicked, each a solver-settings command, all in the next exported recipe.
 #   window_paint.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
@@ -101,6 +103,41 @@ for part in '"bilateral"' '"volume"' '"region"'; do
 done
 
 # The shape was saved, and sets are not the mesh file's: Ctrl+Q quits without asking.
+# The bilateral weights off and on again, sigma_r dragged, a falloff with another radius
+# and the linear curve: each click a solver-settings command.
+settings=$(count_lines "command solver settings: ok")
+click_widget "keep creases (bilateral)"
+wait_line "command solver settings: ok" $((settings + 1))
+click_widget "keep creases (bilateral)"
+wait_line "command solver settings: ok" $((settings + 2))
+read -r sx sy < <(widget_at "crease sigma_r")
+drag "$sx" "$sy" $((sx - 60)) "$sy" 4 # the slider toward smaller values
+wait_line "command solver settings: ok" $((settings + 3))
+click_widget "falloff from border and pins"
+wait_line "command solver settings: ok" $((settings + 4))
+read -r rx ry < <(widget_at "falloff radius")
+drag "$rx" "$ry" $((rx + 40)) "$ry" 4
+wait_line "command solver settings: ok" $((settings + 5))
+click_widget "falloff curve"
+click_widget "falloff curve/linear"
+wait_line "command solver settings: ok" $((settings + 6))
+click_widget "File"
+click_widget "File/Export recipe..."
+wait_dialog
+key ctrl+a
+type_text "tuned.json"
+key Return
+wait_line "command export recipe: ok" 3
+python3 - "$work/tuned.json" <<'PY' || fail "the clicked settings are not in the exported recipe"
+import json, sys
+r = json.load(open(sys.argv[1]))
+b = r["normal_smoothing"]["bilateral"]
+f = r["falloff"]
+assert b["neighbors"] == "vertex", b  # the preset's, back after off and on
+assert abs(b["sigma_r"] - 0.3) > 0.01, b  # dragged from the preset's 0.3
+assert f["curve"] == "linear" and f["radius"] != 8, f  # dragged from 8, then linear
+PY
+
 key ctrl+q
 wait_exit "$pid" "$log" "$name" "Ctrl+Q after saving"
 echo "ok: a smoothing stroke ($green green pixels of weight 1/2, $blue blue of 0), reproduced by meshfair-cli and by its script, weights subtracted and undone, the denoise preset over the region"

@@ -46,13 +46,21 @@ void paint_panel(const PanelContext& ui)
         changed = true;
     }
     ui.track("strength");
-    const char* curves[] = {"smooth", "sphere", "root", "linear", "sharp", "constant"};
-    int curve = static_cast<int>(p.curve);
     ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("brush curve", &curve, curves, 6))
+    if (ImGui::BeginCombo("brush curve", std::string(falloff_curve_name(p.curve)).c_str()))
     {
-        p.curve = static_cast<FalloffCurve>(curve);
-        changed = true;
+        for (int c = 0; c < 6; ++c)
+        {
+            const auto curve = static_cast<FalloffCurve>(c);
+            const std::string name(falloff_curve_name(curve));
+            if (ImGui::Selectable(name.c_str(), curve == p.curve))
+            {
+                p.curve = curve;
+                changed = true;
+            }
+            ui.track("brush curve/" + name);
+        }
+        ImGui::EndCombo();
     }
     ui.track("brush curve");
     if (p.mode == PaintMode::Relax)

@@ -110,11 +110,15 @@ void solver_panel(const PanelContext& ui)
     if (s.normal_source == NormalSource::Smoothed || s.joint)
     {
         // Normals kept apart across creases (bilateral weights, docs/recipe.md).
+        // Turned off then on again, the weights come back as they were (a preset's too).
+        static BilateralWeights last_bilateral;
+        if (s.bilateral)
+            last_bilateral = *s.bilateral;
         bool bilateral = s.bilateral.has_value();
         if (ui.checkbox("keep creases (bilateral)", &bilateral))
         {
             s.bilateral =
-                bilateral ? std::optional<BilateralWeights>(BilateralWeights{}) : std::nullopt;
+                bilateral ? std::optional<BilateralWeights>(last_bilateral) : std::nullopt;
             toggled = true;
         }
         if (s.bilateral)
@@ -141,10 +145,13 @@ void solver_panel(const PanelContext& ui)
         toggled = true;
     }
     toggled |= ui.checkbox("keep volume", &s.keep_volume);
+    static Falloff last_falloff; // likewise
+    if (s.falloff)
+        last_falloff = *s.falloff;
     bool falloff = s.falloff.has_value();
     if (ui.checkbox("falloff from border and pins", &falloff))
     {
-        s.falloff = falloff ? std::optional<Falloff>(Falloff{}) : std::nullopt;
+        s.falloff = falloff ? std::optional<Falloff>(last_falloff) : std::nullopt;
         toggled = true;
     }
     if (s.falloff)
@@ -158,13 +165,22 @@ void solver_panel(const PanelContext& ui)
             dragged = true;
         }
         ui.track("falloff radius");
-        const char* curves[] = {"smooth", "sphere", "root", "linear", "sharp", "constant"};
-        int curve = static_cast<int>(s.falloff->curve);
         ImGui::SetNextItemWidth(120);
-        if (ImGui::Combo("falloff curve", &curve, curves, 6))
+        if (ImGui::BeginCombo("falloff curve",
+                              std::string(falloff_curve_name(s.falloff->curve)).c_str()))
         {
-            s.falloff->curve = static_cast<FalloffCurve>(curve);
-            toggled = true;
+            for (int c = 0; c < 6; ++c)
+            {
+                const auto curve = static_cast<FalloffCurve>(c);
+                const std::string name(falloff_curve_name(curve));
+                if (ImGui::Selectable(name.c_str(), curve == s.falloff->curve))
+                {
+                    s.falloff->curve = curve;
+                    toggled = true;
+                }
+                ui.track("falloff curve/" + name);
+            }
+            ImGui::EndCombo();
         }
         ui.track("falloff curve");
     }
