@@ -54,6 +54,9 @@ bool CommandExecutor::operator()(const cmd::PaintDab& c) const
                     "' has no weight map: paint a region of vertices or an anchor set");
     if (c.mode == PaintMode::Relax && set.kind != ConstraintKind::Region)
         return fail("the smoothing brush paints a region set, and '" + c.set + "' is not one");
+    // A region out of the solve would leave the run without it: the whole mesh would move.
+    if (c.mode == PaintMode::Relax && !set.enabled)
+        return fail("set '" + c.set + "' is out of the solve: take it in to smooth with it");
     // The set as the stroke found it (the open step keeps the sets from before its first dab).
     static const ConstraintSet kNone; // a set the stroke made: no weight before it
     const ConstraintSet* start = &kNone;

@@ -549,6 +549,16 @@ TEST_SUITE("Smoothing brush")
         REQUIRE(r.soft);
         CHECK_FALSE(r.soft->weights.empty());
 
+        // A brush region taken out of the solve is not painted with: the run would move
+        // the whole mesh.
+        REQUIRE(s.dispatch(cmd::EnableSet{"brush", false}));
+        const std::vector<Scalar> stroked = s.document().mesh.positions;
+        CHECK_FALSE(s.dispatch(cmd::PaintDab{"brush", PaintMode::Relax, Vec3{0, 0, 0}, 0.1, 0.5,
+                                             FalloffCurve::Smooth, 3}));
+        CHECK(s.state().message == "set 'brush' is out of the solve: take it in to smooth with it");
+        CHECK(s.document().mesh.positions == stroked);
+        REQUIRE(s.dispatch(cmd::Undo{})); // the set taken out
+
         // Undo: the shape and the sets as they were.
         REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().mesh.positions == before);
