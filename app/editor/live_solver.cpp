@@ -29,18 +29,14 @@ LiveSolver::~LiveSolver()
     thread_.join();
 }
 
-void LiveSolver::restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
-                         std::vector<Scalar> start, std::vector<Index> vertex_face_offsets,
-                         std::vector<Index> vertex_faces)
+void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
+                         std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces)
 {
     {
         std::lock_guard lock(mutex_);
-        restart_ = Restart{base,
-                           order,
-                           recipe,
-                           std::move(vertex_face_offsets),
-                           std::move(vertex_faces),
-                           std::move(start)};
+        restart_ = Restart{std::move(base),         std::move(order),
+                           std::move(recipe),       std::move(vertex_face_offsets),
+                           std::move(vertex_faces), std::move(start)};
         ++generation_;
         status_.playing = false;
         status_.ready = false;

@@ -67,10 +67,10 @@ public:
     //! numbering.
     //! Returns at once: the precomputation happens on the worker. Stops playing.
     //! `vertex_face_offsets` and `vertex_faces` (the draw data's faces around each vertex)
-    //! let the solver's thread compute the display geometry of each frame.
-    void restart(const Mesh& base, const LocalityOrder& order, const Recipe& recipe,
-                 std::vector<Scalar> start, std::vector<Index> vertex_face_offsets,
-                 std::vector<Index> vertex_faces);
+    //! let the solver's thread compute the display geometry of each frame. Taken by value
+    //! and moved on: a restart per dab of the smoothing brush copies the mesh once, not twice.
+    void restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
+                 std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
 
