@@ -601,7 +601,7 @@ std::string QualityRun::noise_table(const std::string& noise, std::vector<std::s
             else if (!it->second->note.empty())
             {
                 s << " refused |";
-                notes.push_back(key.first + " " + noise + " " + m + ": " + it->second->note);
+                notes.push_back(m + ": " + it->second->note);
             }
             else
                 s << " " << format("%.2f", it->second->theta_deg) << " / "
@@ -690,8 +690,27 @@ std::string QualityRun::markdown() const
             noises.push_back(r.noise);
     for (const std::string& noise : noises)
         s << noise_table(noise, notes);
+    // Each refusal once, with the number of cases it stands for (a region-only recipe is
+    // refused on every whole mesh for the same reason).
+    std::vector<std::pair<std::string, int>> refusals;
     for (const std::string& n : notes)
-        s << "\n- " << n;
+    {
+        const auto same = std::find_if(refusals.begin(), refusals.end(),
+                                       [&](const auto& r) { return r.first == n; });
+        if (same == refusals.end())
+            refusals.emplace_back(n, 1);
+        else
+            ++same->second;
+    }
+    for (const auto& [note, cases] : refusals)
+    {
+        const size_t colon = note.find(": ");
+        std::string why = note.substr(colon + 2);
+        if (why.rfind("refused: ", 0) == 0)
+            why = why.substr(9);
+        s << "\n- " << note.substr(0, colon) << ", refused in " << cases << " case"
+          << (cases == 1 ? "" : "s") << ": " << why;
+    }
     s << (notes.empty() ? "" : "\n") << time_table() << seam_table() << "\n" << goals();
     return s.str();
 }
