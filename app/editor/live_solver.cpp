@@ -347,8 +347,21 @@ void LiveSolver::worker()
                             if (!r.start.empty())
                                 r.start[i] = place;
                         }
-                run =
-                    std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe);
+                // The same mesh and the same parts: the topology of the run before is this
+                // run's (a dab of the smoothing brush changes weights, not connectivity).
+                if (run_ && run_->topology().parts == required_topology(r.recipe) &&
+                    run_->topology().vertex_count == r.base.vertex_count() &&
+                    run_->mesh().face_offsets == r.base.face_offsets &&
+                    run_->mesh().face_vertices == r.base.face_vertices)
+                {
+                    Topology topology = std::move(*run_).take_topology();
+                    run_.reset(); // it has no topology left
+                    run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
+                                                        r.recipe, std::move(topology));
+                }
+                else
+                    run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
+                                                        r.recipe);
                 if (!r.start.empty())
                     run->session().set_positions(r.start);
                 energy = run->energy();

@@ -4,6 +4,8 @@
 
 #include <utility>
 
+#include "core/errors.h"
+
 namespace meshfair {
 
 namespace {
@@ -35,6 +37,35 @@ LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe
 {
     session_.apply_hard_targets(mesh_.positions);
     session_.adopt_positions(std::move(mesh_.positions));
+}
+
+namespace {
+
+// The checks a reused topology can pass cheaply: its counts and parts.
+Topology checked(Topology topology, const Mesh& mesh, const Recipe& recipe)
+{
+    if (topology.vertex_count != mesh.vertex_count() || topology.face_count != mesh.face_count() ||
+        topology.parts != required_topology(recipe))
+        throw SolverError("LocalityRun: the topology given is not the mesh's for this recipe");
+    return topology;
+}
+
+} // namespace
+
+LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
+                         Topology topology)
+    : order_(std::move(order)),
+      mesh_(std::move(renumbered_mesh)),
+      topology_(checked(std::move(topology), mesh_, renumbered_recipe)),
+      session_(mesh_, topology_, renumbered_recipe)
+{
+    session_.apply_hard_targets(mesh_.positions);
+    session_.adopt_positions(std::move(mesh_.positions));
+}
+
+Topology LocalityRun::take_topology() &&
+{
+    return std::move(topology_);
 }
 
 LocalityRun::Released LocalityRun::release() &&

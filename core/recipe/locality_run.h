@@ -32,6 +32,14 @@ public:
     //! inputs as the first constructor's, so the same bits.
     //! \pre check_recipe(recipe, mesh) holds.
     LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe);
+    //! \brief The same, with the topology already built: what a run restarted for a new
+    //! recipe of the same mesh (the editor's, at each dab of the smoothing brush) takes from
+    //! the run before it (take_topology) instead of building it again. The same bits as the
+    //! constructor above.
+    //! \pre topology is build_topology(renumbered_mesh, required_topology(renumbered_recipe)).
+    //! \throw SolverError when its counts or parts are not those (what can be checked cheaply).
+    LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
+                Topology topology);
 
     //! One step on the kept positions.
     StepInfo step() { return session_.step(); }
@@ -52,6 +60,8 @@ public:
         LocalityOrder order;
     };
     Released release() &&;
+    //! Ends the run, keeping its topology for the next run of the same mesh.
+    Topology take_topology() &&;
 
 private:
     LocalityOrder order_;

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/errors.h"
+#include "core/recipe/locality_run.h"
 #include "core/recipe/recipe.h"
 #include "core/recipe/session.h"
 #include "core/topology/vertex_order.h"
@@ -147,5 +149,44 @@ TEST_SUITE("Session")
             CHECK(relative_difference(file, m.positions) > 1e-4); // something moved
             CHECK(relative_difference(local, file) < 1e-12);
         }
+    }
+
+    TEST_CASE("a run restarted on the topology of the run before gives the same bits")
+    {
+        // What the editor does at each dab of the smoothing brush: a new recipe (other
+        // weights) on the same mesh, its topology taken from the run before.
+        Mesh m = test::icosphere(3);
+        test::perturb(m, 0.03, 11);
+        const LocalityOrder order = locality_order(m);
+        const Mesh work = reorder_mesh(m, order);
+        Recipe first;
+        first.iterations = 5;
+        first.region = Region{test::all_indices(work.vertex_count() / 2), {}};
+        Recipe second = first;
+        second.soft = SoftVertices{};
+        second.soft->vertices.indices = {0, 1, 2, 3};
+        second.soft->weights = {3.0, 1.0, 0.5, 0.25};
+        REQUIRE(required_topology(first) == required_topology(second));
+
+        LocalityRun before(work, order, first);
+        before.step();
+        LocalityRun reused(work, order, second, std::move(before).take_topology());
+        LocalityRun fresh(work, order, second);
+        for (int k = 0; k < 5; ++k)
+        {
+            reused.step();
+            fresh.step();
+        }
+        CHECK(std::equal(reused.session().positions().begin(), reused.session().positions().end(),
+                         fresh.session().positions().begin(), fresh.session().positions().end()));
+        CHECK(fresh.session().positions()[0] != work.positions[0]); // something moved
+
+        // A topology of other parts (or another mesh) is refused, not used.
+        Recipe normals = second;
+        normals.normal = NormalConstraints{};
+        normals.normal->faces.all = true;
+        CHECK_THROWS_AS(
+            LocalityRun(work, order, normals, build_topology(work, required_topology(second))),
+            SolverError);
     }
 }
