@@ -365,11 +365,16 @@ void LiveSolver::worker()
                 if (!r.start.empty())
                     run->session().set_positions(r.start);
                 energy = run->energy();
-                published.assign(run->session().positions().begin(),
-                                 run->session().positions().end());
                 vertex_face_offsets_ = std::move(r.vertex_face_offsets);
                 vertex_faces_ = std::move(r.vertex_faces);
-                compute_display(published, run->mesh());
+                // Published only when a pin moved: the interface shows the start otherwise,
+                // and the next steps publish their own (a brush dab steps at once).
+                if (moved)
+                {
+                    published.assign(run->session().positions().begin(),
+                                     run->session().positions().end());
+                    compute_display(published, run->mesh());
+                }
             }
             catch (const std::exception& e)
             {
@@ -396,8 +401,11 @@ void LiveSolver::worker()
                     heat_dirty_ = heat_term_.has_value();
                     energies_ = {{0, energy}};
                     ++status_.energy_version;
-                    published_ = std::move(published);
-                    std::swap(display_back_, display_published_);
+                    if (moved)
+                    {
+                        published_ = std::move(published);
+                        std::swap(display_back_, display_published_);
+                    }
                     fresh_ = moved;
                 }
             }
