@@ -431,7 +431,9 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
     }
     if (from.key.empty())
         close_step();
-    if (trace_ != nullptr && !from_gesture)
+    // A gesture's own commands are many (a dab, a move per mouse event): the trace shows
+    // the gesture's end instead, and those of its commands that fail.
+    if (trace_ != nullptr && (!from_gesture || (!ok && state_.message_is_error)))
     {
         std::fprintf(trace_, "command %s: %s%s\n", std::string(command_name(command)).c_str(),
                      ok                        ? "ok"

@@ -73,7 +73,8 @@ RegionBorder region_border(const Document& d)
     return border;
 }
 
-std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder& border)
+std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder& border,
+                                          std::string_view hidden)
 {
     std::vector<GlyphGroup> groups;
     const Mesh& mesh = d.mesh;
@@ -81,7 +82,7 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
     const ConstraintSet* region_shown = nullptr; // the first region shown gives the ring its colour
     for (const ConstraintSet& s : d.sets)
     {
-        if (!s.visible)
+        if (!s.visible || (!hidden.empty() && s.name == hidden && s.kind != ConstraintKind::Region))
             continue;
         GlyphGroup g;
         g.color = s.color;

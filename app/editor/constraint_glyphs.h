@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <string_view>
 #include <vector>
 
 #include "app/editor/document.h"
@@ -30,6 +31,9 @@ struct RegionBorder
 };
 RegionBorder region_border(const Document& document);
 
-std::vector<GlyphGroup> constraint_glyphs(const Document& document, const RegionBorder& border);
+//! `hidden`: a set whose glyphs are left out (the set whose weight map the Paint tool shows
+//! in colour: its dots would cover the colours).
+std::vector<GlyphGroup> constraint_glyphs(const Document& document, const RegionBorder& border,
+                                          std::string_view hidden = {});
 
 } // namespace meshfair::app

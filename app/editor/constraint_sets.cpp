@@ -75,26 +75,38 @@ bool any_of_kind(const std::vector<ConstraintSet>& sets, ConstraintKind kind)
     });
 }
 
-// The merged elements' weights (each its set's weight times its value of the set's weight
-// map): one mu when all are the same (as one weight, bit for bit), else mu = 1 and one
-// weight per element.
-void weigh(const std::vector<const ConstraintSet*>& from, const std::vector<size_t>& at,
-           const SolverSettings& settings, Scalar& mu, std::vector<Scalar>& weights)
+// Each merged element's weight: its set's weight times its value of the set's weight map.
+std::vector<Scalar> element_weights(const std::vector<const ConstraintSet*>& from,
+                                    const std::vector<size_t>& at, const SolverSettings& settings)
 {
-    if (from.empty())
-        return;
     std::vector<Scalar> each(from.size());
     for (size_t k = 0; k < from.size(); ++k)
         each[k] = from[k]->weights.empty()
                       ? weight_of(*from[k], settings)
                       : weight_of(*from[k], settings) * from[k]->weights[at[k]];
+    return each;
+}
+
+// A section's weights from its elements': one mu when all are the same (as one weight, bit
+// for bit), else mu = 1 and one weight per element.
+void collapse(std::vector<Scalar> each, Scalar& mu, std::vector<Scalar>& weights)
+{
+    if (each.empty())
+        return;
     if (std::all_of(each.begin(), each.end(), [&](Scalar w) { return w == each.front(); }))
     {
         mu = each.front();
+        weights.clear();
         return;
     }
     mu = 1;
     weights = std::move(each);
+}
+
+void weigh(const std::vector<const ConstraintSet*>& from, const std::vector<size_t>& at,
+           const SolverSettings& settings, Scalar& mu, std::vector<Scalar>& weights)
+{
+    collapse(element_weights(from, at, settings), mu, weights);
 }
 
 std::vector<Index> sorted(std::vector<Index> v)
@@ -364,7 +376,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         std::vector<const ConstraintSet*> from;
         std::vector<size_t> at;
         SoftVertices soft{{false, merged(sets, ConstraintKind::Anchor, true, &from, &at)}, 1, {}};
-        weigh(from, at, settings, soft.mu, soft.weights);
+        std::vector<Scalar> each = element_weights(from, at, settings);
         if (!fading.empty())
         {
             // Not where a pin or an anchor set holds the vertex already.
@@ -373,25 +385,14 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
                 if (p.kind == ConstraintKind::Pin && p.enabled)
                     taken.insert(taken.end(), p.vertices.begin(), p.vertices.end());
             taken = sorted(std::move(taken));
-            if (soft.weights.empty() && !soft.vertices.indices.empty())
-                soft.weights.assign(soft.vertices.indices.size(), soft.mu);
-            else if (soft.vertices.indices.empty())
-                soft.weights.clear();
             for (size_t k = 0; k < fading.size(); ++k)
                 if (!std::binary_search(taken.begin(), taken.end(), fading[k]))
                 {
                     soft.vertices.indices.push_back(fading[k]);
-                    soft.weights.push_back(fading_weights[k]);
+                    each.push_back(fading_weights[k]);
                 }
-            soft.mu = 1;
-            if (!soft.weights.empty() &&
-                std::all_of(soft.weights.begin(), soft.weights.end(),
-                            [&](Scalar w) { return w == soft.weights.front(); }))
-            {
-                soft.mu = soft.weights.front();
-                soft.weights.clear();
-            }
         }
+        collapse(std::move(each), soft.mu, soft.weights);
         if (!soft.vertices.indices.empty()) // every anchor may be pinned
             r.soft = std::move(soft);
     }

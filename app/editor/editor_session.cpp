@@ -337,11 +337,14 @@ void EditorSession::sync_renderer()
         synced_.border = v.set_members;
     }
     // The weight map being painted, in colour while the Paint tool is on (not over a heat
-    // map, which was asked for).
-    if (state_.tool == ToolKind::Paint && !state_.heat_map)
+    // map, which was asked for); that set's dots are then left out of the glyphs.
+    const bool painting = state_.tool == ToolKind::Paint && !state_.heat_map;
+    const std::string painted = !painting                        ? std::string()
+                                : state_.tools.paint.set.empty() ? std::string(kPaintSet)
+                                                                 : state_.tools.paint.set;
+    if (painting)
     {
-        const std::string name =
-            state_.tools.paint.set.empty() ? std::string(kPaintSet) : state_.tools.paint.set;
+        const std::string& name = painted;
         const std::pair<std::uint64_t, std::string> key{v.sets, name};
         if (synced_.weights != key)
         {
@@ -363,9 +366,11 @@ void EditorSession::sync_renderer()
     }
     const bool sets_changed = synced_.glyphs_sets != v.sets;
     // Glyphs sit on the surface: they follow the positions when there are sets.
-    if (sets_changed || (synced_.glyphs_positions != v.positions && !document_.sets.empty()))
+    if (sets_changed || synced_.glyphs_hidden != painted ||
+        (synced_.glyphs_positions != v.positions && !document_.sets.empty()))
     {
-        renderer_.set_glyphs(constraint_glyphs(document_, border_));
+        renderer_.set_glyphs(constraint_glyphs(document_, border_, painted));
+        synced_.glyphs_hidden = painted;
         synced_.glyphs_sets = v.sets;
         synced_.glyphs_positions = v.positions;
     }

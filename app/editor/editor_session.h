@@ -163,6 +163,7 @@ private:
         std::optional<std::uint64_t> energy;
         //! The weight map shown (the sets' version and the set painted), if any.
         std::optional<std::pair<std::uint64_t, std::string>> weights;
+        std::string glyphs_hidden; //!< the set left out of the glyphs (its map is shown)
     } synced_;
     RegionBorder border_; // of the current sets
     std::vector<float> heat_;

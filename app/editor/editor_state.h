@@ -23,6 +23,16 @@ struct HistoryStatus
     std::size_t bytes = 0, limit = 0, dropped = 0;
 };
 
+//! \brief What the panels remember between frames of a session: the tool of the last frame
+//! (the Paint panel opens when its tool is chosen), and the bilateral weights and the
+//! falloff last set (turned off and on again, they come back as they were).
+struct PanelMemory
+{
+    ToolKind tool = ToolKind::Navigate;
+    BilateralWeights bilateral;
+    Falloff falloff;
+};
+
 //! The interaction state the editor owns (the document holds the data).
 struct EditorState
 {
@@ -47,6 +57,7 @@ struct EditorState
     float noise_sigma = 0.3f; //!< the noise tool's sigma, in mean edge lengths
     int noise_seed = 1;
     DisplayOptions display;
+    PanelMemory panels;
     OrbitStyle orbit = OrbitStyle::Turntable;
     bool show_help = false;
     bool show_side_panel = true;

@@ -8,6 +8,10 @@
 #  2. the recipe exported through the File menu reproduces the saved shape through
 #     meshfair-cli, and the stroke the trace prints, played as a script offscreen, too;
 #  3. "subtract weight" clicked in the Paint panel, a stroke, Ctrl+Z: one undo step each;
+#     an anchor set made with the selection brush, picked from the "paint set" menu, its
+#     map lowered with a curve from the menu and a dragged strength (red at weight 1 in a
+#     screenshot), smoothed, then the smoothing brush with more stroke steps: each setting
+#     in the printed stroke;
 #  4. the denoise preset chosen in the solver panel's menu keeps the brush's region, and
 #     the recipe exported then has its bilateral weights and the volume; the creases'
 #     checkbox and sigma_r slider, the falloff's checkbox, radius slider and curve menu
@@ -42,7 +46,7 @@ xwd -root -silent | convert xwd:- "$work/painted.png"
 # Green (weight 1/2) under the stroke, shaded: pixels far more green than red or blue; the
 # rest of the bunny blue (weight 0).
 count() {
-    convert "$work/painted.png" -crop 640x420+0+40 +repage -fx "$1" \
+    convert "${2:-$work/painted.png}" -crop 640x420+0+40 +repage -fx "$1" \
         -format '%[fx:round(mean * w * h)]' info:
 }
 green=$(count 'g > 0.5 && r < 0.4 && b < 0.4')
@@ -58,7 +62,6 @@ key ctrl+a
 type_text "stroke.json"
 key Return
 wait_line "command export recipe: ok"
-grep -q "reproduces the shape" "$log" || true
 key ctrl+shift+s
 wait_dialog
 key ctrl+a
@@ -76,15 +79,77 @@ env -u DISPLAY "$meshfair" --offscreen "$work/input.obj" --script "$work/replay.
 same_vertices "$work/replayed.obj" "$work/stroked.obj" ||
     fail "the printed stroke, played as a script, does not give the stroke's shape"
 
-# --- 3. Weights subtracted with a stroke, then undone.
+# --- 3. Weights subtracted with a stroke (one undo step more), then undone.
+undo_steps() { grep '^gesture paint' "$log" | tail -1 | sed 's/.*: \([0-9]*\) undo steps/\1/'; }
+last_stroke() { grep '^stroke ' "$log" | tail -1; }
 click_widget "subtract weight"
 wait_line "command paint settings: ok"
-steps=$(count_lines '^gesture paint')
+strokes=$(count_lines '^gesture paint')
+before=$(undo_steps)
 drag 360 395 420 400 6
-wait_line "^gesture paint" $((steps + 1))
-grep '^gesture paint' "$log" | tail -1 | grep -q "undo steps" || fail "no undo step for the stroke"
+wait_line "^gesture paint" $((strokes + 1))
+[ "$(undo_steps)" = $((before + 1)) ] ||
+    fail "the subtract stroke made $(($(undo_steps) - before)) undo steps, not 1"
 key ctrl+z
 wait_line "command undo: ok"
+
+# An anchor set's map: picked from the "paint set" menu, lowered with the sphere curve at
+# a dragged strength, then smoothed; in colour red at 1, lower under the stroke.
+set_paint() { # set_paint ACTION...: an action on the Paint panel, and its settings command
+    local n
+    n=$(count_lines "command paint settings: ok")
+    "$@"
+    wait_line "command paint settings: ok" $((n + 1))
+    sleep 0.3 # the panel laid out again
+}
+drag_widget() { # drag_widget LABEL DX: a slider dragged from its centre
+    local x y
+    read -r x y < <(widget_at "$1")
+    drag "$x" "$y" $((x + $2)) "$y" 4
+}
+key c
+drag 300 370 480 420 6
+key shift+a
+wait_line "command create set: ok"
+key alt+a # the selection's tint off the screenshot
+key o
+click_widget "paint set"
+set_paint click_widget "paint set/anchor 1"
+click_widget "brush curve"
+set_paint click_widget "brush curve/sphere"
+set_paint drag_widget "strength" 60
+drag 360 395 420 400 6
+wait_line "^gesture paint" $((strokes + 2))
+python3 - "$(last_stroke | cut -d' ' -f2-)" <<'PY' || fail "the anchor stroke is not as clicked: $(last_stroke)"
+import json, sys
+p = json.loads(sys.argv[1])["paint"]
+assert p["set"] == "anchor 1" and p["mode"] == "subtract" and p["curve"] == "sphere", p
+assert p["strength"] > 0.5, p  # dragged right from 0.5
+PY
+sleep 0.5
+xwd -root -silent | convert xwd:- "$work/anchors.png"
+red=$(count 'r > 0.5 && g < 0.35 && b < 0.35' "$work/anchors.png")
+[ "$red" -gt 300 ] || fail "the anchor set's map (weight 1) shows no red: $red pixels"
+set_paint click_widget "smooth weights"
+drag 360 395 420 400 6
+wait_line "^gesture paint" $((strokes + 3))
+last_stroke | grep -q '"mode":"smooth"' || fail "no smoothing stroke: $(last_stroke)"
+# Back to the smoothing brush on the brush's region, with more steps a stroke.
+set_paint click_widget "smooth brush"
+click_widget "paint set"
+sleep 0.3 # the menu open: its items' places are this frame's, not those of the last time
+set_paint click_widget "paint set/brush"
+set_paint drag_widget "stroke steps" 40
+before=$(undo_steps)
+drag 360 395 420 400 6
+wait_line "^gesture paint" $((strokes + 4))
+[ "$(undo_steps)" = $((before + 1)) ] || fail "the smoothing stroke made no undo step"
+python3 - "$(last_stroke | cut -d' ' -f2-)" <<'PY' || fail "the last stroke is not as clicked: $(last_stroke)"
+import json, sys
+p = json.loads(sys.argv[1])["paint"]
+assert p["set"] == "brush" and p["mode"] == "relax" and p["steps"] != 10, p
+PY
+[ "$(count_lines 'command .*: failed')" = 0 ] || fail "a command failed: $(grep 'failed' "$log" | head -3)"
 
 # --- 4. The denoise preset over the brush's region.
 click_widget "preset"
@@ -138,6 +203,8 @@ assert abs(b["sigma_r"] - 0.3) > 0.01, b  # dragged from the preset's 0.3
 assert f["curve"] == "linear" and f["radius"] != 8, f  # dragged from 8, then linear
 PY
 
+# The last smoothing stroke is not saved: Ctrl+Q asks.
 key ctrl+q
-wait_exit "$pid" "$log" "$name" "Ctrl+Q after saving"
-echo "ok: a smoothing stroke ($green green pixels of weight 1/2, $blue blue of 0), reproduced by meshfair-cli and by its script, weights subtracted and undone, the denoise preset over the region"
+click_widget "Discard and quit"
+wait_exit "$pid" "$log" "$name" "Discard and quit"
+echo "ok: a smoothing stroke ($green green pixels of weight 1/2, $blue blue of 0), reproduced by meshfair-cli and by its script; weights subtracted and undone; an anchor set's map painted and smoothed from the panel's menus and sliders ($red red pixels of weight 1); the denoise preset over the region"

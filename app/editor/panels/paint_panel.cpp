@@ -16,7 +16,7 @@ void paint_panel(const PanelContext& ui)
     const EditorState& state = ui.state;
     // Opened when the Paint tool is chosen, so its settings are by the stroke (the user
     // may close it again).
-    static ToolKind last_tool = ToolKind::Navigate;
+    ToolKind& last_tool = ui.state.panels.tool;
     if (state.tool == ToolKind::Paint && last_tool != ToolKind::Paint)
         ImGui::SetNextItemOpen(true);
     last_tool = state.tool;
@@ -46,23 +46,7 @@ void paint_panel(const PanelContext& ui)
         changed = true;
     }
     ui.track("strength");
-    ImGui::SetNextItemWidth(120);
-    if (ImGui::BeginCombo("brush curve", std::string(falloff_curve_name(p.curve)).c_str()))
-    {
-        for (int c = 0; c < 6; ++c)
-        {
-            const auto curve = static_cast<FalloffCurve>(c);
-            const std::string name(falloff_curve_name(curve));
-            if (ImGui::Selectable(name.c_str(), curve == p.curve))
-            {
-                p.curve = curve;
-                changed = true;
-            }
-            ui.track("brush curve/" + name);
-        }
-        ImGui::EndCombo();
-    }
-    ui.track("brush curve");
+    changed |= ui.curve_combo("brush curve", p.curve);
     if (p.mode == PaintMode::Relax)
     {
         int steps = p.steps;

@@ -62,6 +62,29 @@ bool PanelContext::radio(const char* label, bool active, const std::string& key)
     return pressed;
 }
 
+bool PanelContext::curve_combo(const char* label, FalloffCurve& curve) const
+{
+    bool chosen = false;
+    ImGui::SetNextItemWidth(120);
+    if (ImGui::BeginCombo(label, std::string(falloff_curve_name(curve)).c_str()))
+    {
+        for (int c = 0; c < 6; ++c)
+        {
+            const auto item = static_cast<FalloffCurve>(c);
+            const std::string name(falloff_curve_name(item));
+            if (ImGui::Selectable(name.c_str(), item == curve))
+            {
+                curve = item;
+                chosen = true;
+            }
+            track(std::string(label) + "/" + name);
+        }
+        ImGui::EndCombo();
+    }
+    track(label);
+    return chosen;
+}
+
 const char* view_name(StandardView v)
 {
     switch (v)

@@ -30,6 +30,9 @@ struct PanelContext
     bool small_button(const char* label, const std::string& key = {}) const;
     bool checkbox(const char* label, bool* value, const std::string& key = {}) const;
     bool radio(const char* label, bool active, const std::string& key = {}) const;
+    //! \brief A menu of the falloff curves under `label`, each item tracked as
+    //! "label/name" (the brush's curve, the falloff's); true when one was chosen.
+    bool curve_combo(const char* label, FalloffCurve& curve) const;
 };
 
 // The sections of the interface, one file each in app/editor/panels/.

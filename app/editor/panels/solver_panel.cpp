@@ -111,7 +111,7 @@ void solver_panel(const PanelContext& ui)
     {
         // Normals kept apart across creases (bilateral weights, docs/recipe.md).
         // Turned off then on again, the weights come back as they were (a preset's too).
-        static BilateralWeights last_bilateral;
+        BilateralWeights& last_bilateral = ui.state.panels.bilateral;
         if (s.bilateral)
             last_bilateral = *s.bilateral;
         bool bilateral = s.bilateral.has_value();
@@ -145,7 +145,7 @@ void solver_panel(const PanelContext& ui)
         toggled = true;
     }
     toggled |= ui.checkbox("keep volume", &s.keep_volume);
-    static Falloff last_falloff; // likewise
+    Falloff& last_falloff = ui.state.panels.falloff; // likewise
     if (s.falloff)
         last_falloff = *s.falloff;
     bool falloff = s.falloff.has_value();
@@ -165,24 +165,7 @@ void solver_panel(const PanelContext& ui)
             dragged = true;
         }
         ui.track("falloff radius");
-        ImGui::SetNextItemWidth(120);
-        if (ImGui::BeginCombo("falloff curve",
-                              std::string(falloff_curve_name(s.falloff->curve)).c_str()))
-        {
-            for (int c = 0; c < 6; ++c)
-            {
-                const auto curve = static_cast<FalloffCurve>(c);
-                const std::string name(falloff_curve_name(curve));
-                if (ImGui::Selectable(name.c_str(), curve == s.falloff->curve))
-                {
-                    s.falloff->curve = curve;
-                    toggled = true;
-                }
-                ui.track("falloff curve/" + name);
-            }
-            ImGui::EndCombo();
-        }
-        ui.track("falloff curve");
+        toggled |= ui.curve_combo("falloff curve", s.falloff->curve);
     }
     if ((toggled || dragged) && !(s == document.solver))
         // A slider held is one interaction: its values make one undo step.
