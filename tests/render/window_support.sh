@@ -77,7 +77,7 @@ alive() { kill -0 "$pid" 2>/dev/null || fail "the editor died ($*)"; }
 # wait_line PATTERN [N]: until the log has N (default 1) lines matching PATTERN (10 s).
 wait_line() {
     local pattern=$1 n=${2:-1}
-    for _ in $(seq 1 200); do
+    for _ in $(seq 1 400); do
         [ "$(grep -c -- "$pattern" "$log")" -ge "$n" ] && return 0
         alive "waiting for '$pattern'"
         sleep 0.05
@@ -100,7 +100,7 @@ key() {
 widget_at() {
     local label=$1 at="" wheel
     for attempt in $(seq 1 50); do
-        at=$(awk -F'\t' -v n="$label" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map")
+        at=$(widget_centre "$label")
         [ -n "$at" ] && break
         if [ "$attempt" -gt 12 ]; then # not drawn yet, or scrolled out of the panel
             wheel=5                      # down, then up
@@ -123,10 +123,29 @@ widget_at() {
             break
         fi
         xdotool mousemove --window "$win" 830 400 click "$wheel"
-        sleep 0.15
-        at=$(awk -F'\t' -v n="$label" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map")
+        # The frame that scrolls rewrites the map; a slow frame must not leave the old place.
+        local before=$at
+        for _ in $(seq 1 40); do
+            sleep 0.05
+            at=$(widget_centre "$label")
+            [ "$at" != "$before" ] && break
+        done
     done
+    # Still where it was a few frames later: a layout that moves (a widget shown above it,
+    # the panel scrolled) has settled before the hand goes there.
+    for _ in $(seq 1 20); do
+        sleep 0.25
+        local again
+        again=$(widget_centre "$label")
+        [ "$again" = "$at" ] && break
+        at=$again
+    done
+    [ -n "$at" ] || fail "no widget '$label' on screen"
     echo "$at"
+}
+
+widget_centre() {
+    awk -F'\t' -v n="$1" '$1 == n { print int(($2 + $4) / 2), int(($3 + $5) / 2) }' "$map"
 }
 
 click_at() {
@@ -154,6 +173,8 @@ drag() {
         xdotool mousemove --window "$win" $((x0 + (x1 - x0) * k / steps)) $((y0 + (y1 - y0) * k / steps))
         sleep 0.04
     done
+    # Held a moment at the end, as a hand does: a slow frame sees the button still down.
+    sleep 0.15
     xdotool mouseup 1
     sleep 0.3
 }
