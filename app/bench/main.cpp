@@ -184,15 +184,15 @@ double max_relative_difference(const std::vector<Scalar>& a, const std::vector<S
     return scale > 0 ? diff / scale : diff;
 }
 
-//! Peak resident set of `cli smooth FILE --recipe R -o OUT`, in bytes, as the CLI reports
-//! it (its own high-water mark: a forked child's ru_maxrss would include this process's
-//! memory); negative when it fails.
-double cli_peak_rss(const std::string& cli, const std::string& file, const std::string& recipe,
-                    const std::string& out, int threads)
+//! The report of `cli smooth FILE -o OUT --report OUT.report.json [EXTRA...]`, as the CLI
+//! writes it; discarded (is_discarded()) when the CLI fails.
+nlohmann::json cli_smooth_report(const std::string& cli, const std::string& file,
+                                 const std::string& out, std::vector<std::string> extra,
+                                 int threads)
 {
     const std::string report = out + ".report.json";
-    std::vector<std::string> args = {cli,  "smooth", file,       "--recipe", recipe,
-                                     "-o", out,      "--report", report,     "--quiet"};
+    std::vector<std::string> args = {cli, "smooth", file, "-o", out, "--report", report, "--quiet"};
+    args.insert(args.end(), extra.begin(), extra.end());
     if (threads > 0)
         args.insert(args.end(), {"--threads", std::to_string(threads)});
     std::vector<char*> argv;
@@ -205,15 +205,35 @@ double cli_peak_rss(const std::string& cli, const std::string& file, const std::
     pid_t pid = 0;
     const int spawned = posix_spawn(&pid, cli.c_str(), &actions, nullptr, argv.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
-    if (spawned != 0)
-        return -1;
     int status = 0;
-    if (waitpid(pid, &status, 0) != pid || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        return -1;
-    const auto json = nlohmann::json::parse(io::read_file(report), nullptr, false);
+    if (spawned != 0 || waitpid(pid, &status, 0) != pid || !WIFEXITED(status) ||
+        WEXITSTATUS(status) != 0)
+        return nlohmann::json(nlohmann::json::value_t::discarded);
+    return nlohmann::json::parse(io::read_file(report), nullptr, false);
+}
+
+//! Peak resident set of `cli smooth FILE --recipe R -o OUT`, in bytes, as the CLI reports
+//! it (its own high-water mark: a forked child's ru_maxrss would include this process's
+//! memory); negative when it fails.
+double cli_peak_rss(const std::string& cli, const std::string& file, const std::string& recipe,
+                    const std::string& out, int threads)
+{
+    const nlohmann::json json = cli_smooth_report(cli, file, out, {"--recipe", recipe}, threads);
     if (json.is_discarded() || !json.contains("peak_memory_bytes"))
         return -1;
     return json["peak_memory_bytes"].get<double>();
+}
+
+//! The report's seconds.solve of `cli smooth FILE -o OUT --iterations N` (plain
+//! smoothing, the CLI's default recipe); negative when it fails.
+double cli_solve_seconds(const std::string& cli, const std::string& file, const std::string& out,
+                         int iterations, int threads)
+{
+    const nlohmann::json json =
+        cli_smooth_report(cli, file, out, {"--iterations", std::to_string(iterations)}, threads);
+    if (json.is_discarded() || !json.contains("seconds"))
+        return -1;
+    return json["seconds"]["solve"].get<double>();
 }
 
 //! \brief What the bench solves on, as meshfair-cli does: the mesh renumbered for
@@ -428,12 +448,38 @@ private:
                 .samples.push_back(time_steps(region_session, work.positions));
             figure("denoise.json step", n, order, "meshfair", "s")
                 .samples.push_back(time_steps(denoise_session, work.positions));
+            time_cli_loop(file, n, order);
         }
         const double bandwidth = figure("bandwidth (triad)", n, order, "machine", "B/s").median();
         figure("plain step bound", n, order, "machine", "s").samples = {plain_bytes / bandwidth};
         figure("combined step bound", n, order, "machine", "s").samples = {combined_bytes /
                                                                            bandwidth};
         print_order(n, order);
+    }
+
+    //! \brief The loop a batch user runs: meshfair-cli smooth's solve seconds (its report)
+    //! with 0 and with 4 x --steps plain iterations. Their difference over the steps is the
+    //! CLI's cost of a step, the bench's plain step as the CLI runs it (energies and all);
+    //! the solve without steps is what a run costs once (the first and last energies, the
+    //! positions put back in the file's order).
+    void time_cli_loop(const std::string& file, Index n, const std::string& order)
+    {
+        if (o_.cli.empty())
+            return;
+        const int steps = 4 * o_.steps;
+        const std::string out = file + "-cli.ply"; // binary: quick to write, not timed
+        const double none = cli_solve_seconds(o_.cli, file, out, 0, o_.threads);
+        const double some = cli_solve_seconds(o_.cli, file, out, steps, o_.threads);
+        std::filesystem::remove(out);
+        std::filesystem::remove(out + ".report.json");
+        if (none < 0 || some < 0)
+        {
+            failures_.push_back("meshfair-cli smooth failed on " + file);
+            return;
+        }
+        figure("CLI smooth, a step", n, order, "meshfair", "s")
+            .samples.push_back((some - none) / steps);
+        figure("CLI smooth, solve of 0 steps", n, order, "meshfair", "s").samples.push_back(none);
     }
 
     double time_steps(Session& session, const std::vector<Scalar>& start)
@@ -520,6 +566,14 @@ private:
         std::snprintf(note, sizeof note, "  MeshFair %.1fx faster; %.1f cycles/vertex",
                       om.median() / plain.median(), cycles(om, 1));
         print_row(om, note);
+        if (!o_.cli.empty())
+        {
+            const Figure& cli = get("CLI smooth, a step", "meshfair");
+            std::snprintf(note, sizeof note, "  %.2fx the plain step; OpenMesh's %.1fx it",
+                          cli.median() / plain.median(), om.median() / cli.median());
+            print_row(cli, note);
+            print_row(get("CLI smooth, solve of 0 steps", "meshfair"), "");
+        }
         const double combined_bound = get("combined step bound", "machine").median();
         for (const char* name : {"combined step", "combined step, 10% region"})
         {
@@ -587,7 +641,8 @@ int main(int argc, char** argv)
     app.add_option("--mesh", o.mesh, "triangle mesh to subdivide")->check(CLI::ExistingFile);
     app.add_option("--cache", o.cache, "directory of the generated meshes (kept between runs)");
     app.add_option("--out", o.out, "machine-readable results (TSV)");
-    app.add_option("--cli", o.cli, "meshfair-cli, for the peak-memory figure (empty: skip)");
+    app.add_option("--cli", o.cli,
+                   "meshfair-cli, for the CLI's step and peak-memory figures (empty: skip)");
     app.add_flag("--skip-load", o.skip_load, "do not time the readers");
     app.add_flag("--profile", o.profile,
                  "only run --steps plain and combined steps of MeshFair and OpenMesh on the "

@@ -226,17 +226,43 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     const auto t = std::chrono::steady_clock::now();
     int done = 0;
     bool converged_now = false;
-    for (; done < n && !converged_now; ++done)
+    std::optional<TermEnergies> known; // the energy of the positions now, when a step gave it
+    Session& session = run_->session();
+    if (tolerance > 0 && session.fuses_energy())
     {
-        run_->step();
-        if (tolerance > 0) // the command line's rule, step by step
+        // The command line's rule as run() applies it: each step's sweep gives the energy
+        // of the positions it starts from, so a step learns whether the one before it
+        // converged, and is then undone.
+        for (; done < n; ++done)
         {
-            const TermEnergies after = run_->energy();
-            converged_now = converged(before.total(), after.total(), tolerance);
-            before = after;
+            TermEnergies start;
+            session.step(start);
+            if (done > 0 && converged(before.total(), start.total(), tolerance))
+            {
+                session.revert_step();
+                converged_now = true;
+                known = start;
+                break;
+            }
+            before = start;
         }
     }
-    const TermEnergies energy = tolerance > 0 ? before : run_->energy();
+    else
+        for (; done < n && !converged_now; ++done)
+        {
+            run_->step();
+            if (tolerance > 0) // the command line's rule, step by step
+            {
+                const TermEnergies after = run_->energy();
+                converged_now = converged(before.total(), after.total(), tolerance);
+                before = after;
+                known = after;
+            }
+        }
+    const TermEnergies energy = known ? *known : run_->energy();
+    // The frame's last step, checked with the energy the plot needs anyway.
+    if (tolerance > 0 && !converged_now && done > 0 && session.fuses_energy())
+        converged_now = converged(before.total(), energy.total(), tolerance);
     back_.assign(run_->session().positions().begin(), run_->session().positions().end());
     compute_display(back_, run_->mesh());
     compute_heat(heat);

@@ -65,6 +65,22 @@ public:
         r[1] += s01[1];
         r[2] += s2;
     }
+    //! \brief Vertex i's part of energy(x) by the identity E_L = -sum_i (x_i - c)^T r_i
+    //! (E_L is a homogeneous quadratic, x^T L x with r = -L x, and sum_i r_i = 0 makes any
+    //! constant c exact; c near the mesh keeps the products small): the fused step adds
+    //! it from the r_i it computes anyway, 6 flops a vertex instead of 6 a neighbour.
+    static Scalar vertex_part(const Scalar* xi, const Scalar* r, const Scalar* centre)
+    {
+        return -((xi[0] - centre[0]) * r[0] + (xi[1] - centre[1]) * r[1] +
+                 (xi[2] - centre[2]) * r[2]);
+    }
+    //! vertex_part with r_i computed here (the vertices the fused sweep does not visit).
+    Scalar vertex_part(Index i, const Scalar* x, const Scalar* centre) const
+    {
+        Scalar r[3] = {0, 0, 0};
+        add_vertex_rhs(i, x, r);
+        return vertex_part(x + 3 * static_cast<std::ptrdiff_t>(i), r, centre);
+    }
 
 private:
     const Topology* topology_;

@@ -98,9 +98,10 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
         }
 }
 
-void FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
-                                      Scalar* residual) const
+Scalar FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
+                                        Scalar* residual) const
 {
+    Scalar energy = 0;
     if (!face_weight_.empty())
     {
         // mu_f/n_f per face, as face_residual computes it (the same bits).
@@ -116,10 +117,11 @@ void FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index
                 last_n = n;
                 inv = Scalar(1) / n;
             }
-            residual_of(face_corner_sum(*mesh_, x, f), f, inv, face_weight[f] / n,
-                        residual + 3 * static_cast<std::ptrdiff_t>(f));
+            energy += face_weight[f] * residual_of(face_corner_sum(*mesh_, x, f), f, inv,
+                                                   face_weight[f] / n,
+                                                   residual + 3 * static_cast<std::ptrdiff_t>(f));
         }
-        return;
+        return energy;
     }
     // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
     // this saves two divisions per face (the same values as face_residual's).
@@ -135,9 +137,10 @@ void FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index
             inv = Scalar(1) / n;
             w = mu_ / n;
         }
-        residual_of(face_corner_sum(*mesh_, x, f), f, inv, w,
-                    residual + 3 * static_cast<std::ptrdiff_t>(f));
+        energy += residual_of(face_corner_sum(*mesh_, x, f), f, inv, w,
+                              residual + 3 * static_cast<std::ptrdiff_t>(f));
     }
+    return mu_ * energy; // one weight: mu times the sum, as energy() computes it
 }
 
 void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,

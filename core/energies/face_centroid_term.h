@@ -85,9 +85,10 @@ public:
     }
     //! face_residual of each face of faces[begin .. end) into residual[3 f ..] (3 #F; other
     //! faces' values are left as they are): the fused step's pass over the faces, so that
-    //! each residual is computed once per step, not once per corner.
-    void face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
-                        Scalar* residual) const;
+    //! each residual is computed once per step, not once per corner. Returns those faces'
+    //! part of the energy, sum mu_f |x_f - x0_f|^2, which the same pass computes.
+    Scalar face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
+                          Scalar* residual) const;
     //! r += the residuals of i's constrained faces in corner order: add_vertex_rhs's
     //! sum, the same bits, from face_residual's values computed once per face (the fused
     //! step: a face's n_f corners read each residual, which is computed once per step).
@@ -112,12 +113,18 @@ public:
     }
 
 private:
-    //! out = w (x0_f - sum inv), sum being the sum of f's corners.
-    void residual_of(const Vec3& sum, Index f, Scalar inv, Scalar w, Scalar* out) const
+    //! out = w (x0_f - sum inv), sum being the sum of f's corners; returns |x0_f - sum inv|^2.
+    Scalar residual_of(const Vec3& sum, Index f, Scalar inv, Scalar w, Scalar* out) const
     {
         const Scalar* t = &target_[3 * static_cast<size_t>(f)];
+        Scalar squared = 0;
         for (int a = 0; a < 3; ++a)
-            out[a] = w * (t[a] - sum[a] * inv);
+        {
+            const Scalar d = t[a] - sum[a] * inv;
+            out[a] = w * d;
+            squared += d * d;
+        }
+        return squared;
     }
 
     const Mesh* mesh_;

@@ -68,13 +68,17 @@ public:
     //! the fused step tests it once per step, and without weights the corner loop is the
     //! single-mu one, unchanged. Always inlined: the fused sweeps call it from a dozen
     //! instances, and a call would pass r through memory for every vertex.
-    template <bool Weighted>
+    //! With Energy, also *energy += vertex i's part of energy(x): the face-edge pairs that
+    //! start at i (i and the next corner of each constrained face), each pair once. Summed
+    //! directly, not by EdgeTerm::vertex_part's identity: E_N is often near 0 (normals met),
+    //! where the identity's rounding, relative to |x - c| |r|, would swamp it.
+    template <bool Weighted, bool Energy = false>
     [[gnu::always_inline]] void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals,
-                                               Scalar* r) const
+                                               Scalar* r, Scalar* energy = nullptr) const
     {
         // Locals, not r[] and mu_: a store through r could change x, the normals or mu_
         // for the compiler, which would then load them again for every corner.
-        Scalar r0 = r[0], r1 = r[1], r2 = r[2];
+        Scalar r0 = r[0], r1 = r[1], r2 = r[2], own = 0;
         const Scalar mu = mu_;
         const Scalar* face_weight = face_weight_.data();
         const Scalar xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
@@ -94,10 +98,27 @@ public:
             r0 += w * s * u[0];
             r1 += w * s * u[1];
             r2 += w * s * u[2];
+            if constexpr (Energy)
+            {
+                const Scalar t = u[0] * (b[0] - xi0) + u[1] * (b[1] - xi1) + u[2] * (b[2] - xi2);
+                own += w * t * t;
+            }
         }
         r[0] = r0;
         r[1] = r1;
         r[2] = r2;
+        if constexpr (Energy)
+            *energy += own;
+    }
+    //! Vertex i's part of energy(x): the pairs that start at i (see add_vertex_rhs).
+    Scalar vertex_part(Index i, const Scalar* x, const Scalar* normals) const
+    {
+        Scalar r[3] = {0, 0, 0}, e = 0;
+        if (has_weights())
+            add_vertex_rhs<true, true>(i, x, normals, r, &e);
+        else
+            add_vertex_rhs<false, true>(i, x, normals, r, &e);
+        return e;
     }
     //! M_f = sum_{(i,j) in E(f)} (x_j - x_i)(x_j - x_i)^T (xx xy xz yy yz zz), so that face
     //! f's part of E_N is mu_f u_f^T M_f u_f (used by the joint update of u).

@@ -46,11 +46,27 @@ public:
     void add_diagonal(std::span<Scalar> diagonal) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
-    //! One vertex's part: r[a] += mu_i (t_i - x_i)[a] (mu_i = 0 off the constrained set).
-    void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
+    //! One vertex's part: r[a] += mu_i (t_i - x_i)[a] (mu_i = 0 off the constrained set);
+    //! with Energy, also *energy += mu_i |x_i - t_i|^2, the vertex's part of energy(x).
+    template <bool Energy = false>
+    void add_vertex_rhs(Index i, const Scalar* x, Scalar* r, Scalar* energy = nullptr) const
     {
+        Scalar squared = 0;
         for (int a = 0; a < 3; ++a)
-            r[a] += weight_[i] * (target_[3 * i + a] - x[3 * i + a]);
+        {
+            const Scalar d = target_[3 * i + a] - x[3 * i + a];
+            r[a] += weight_[i] * d;
+            squared += d * d;
+        }
+        if constexpr (Energy)
+            *energy += weight_[i] * squared;
+    }
+    //! The vertex's part of energy(x): mu_i |x_i - t_i|^2 (0 off the constrained set).
+    Scalar vertex_part(Index i, const Scalar* x) const
+    {
+        Scalar r[3] = {0, 0, 0}, e = 0;
+        add_vertex_rhs<true>(i, x, r, &e);
+        return e;
     }
 
 private:

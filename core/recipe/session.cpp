@@ -262,6 +262,7 @@ void Session::precompute()
     // for the faces with a free vertex (when that is not all of them, they are listed).
     centroid_residual_ = {};
     centroid_active_ = {};
+    centroid_inactive_ = {};
     if (centroid_ && fused())
     {
         centroid_residual_.assign(3 * static_cast<size_t>(nf), 0);
@@ -269,9 +270,39 @@ void Session::precompute()
         for (const Index f : centroid_->faces())
             if (std::ranges::any_of(mesh.face(f), [&](Index v) { return fixed[v] == 0; }))
                 centroid_active_.push_back(f);
+            else
+                centroid_inactive_.push_back(f);
         if (centroid_active_.size() == centroid_->faces().size())
             centroid_active_ = {};
     }
+    // The point the homogeneous terms' vertex parts are taken about (EdgeTerm::vertex_part):
+    // the middle of the bounding box, where the products stay the size of the mesh.
+    energy_centre_ = {0, 0, 0};
+    if (nv > 0)
+        for (int a = 0; a < 3; ++a)
+        {
+            Scalar lo = x0[a], hi = x0[a];
+            for (Index v = 1; v < nv; ++v)
+            {
+                lo = std::min(lo, x0[3 * v + a]);
+                hi = std::max(hi, x0[3 * v + a]);
+            }
+            energy_centre_[a] = lo + (hi - lo) / 2;
+        }
+    // The fixed vertices whose parts of the energy move with the free ones.
+    energy_border_ = {};
+    if (fused() && free_.size() < static_cast<size_t>(nv))
+    {
+        std::vector<char> is_free(nv, 0);
+        for (const Index v : free_)
+            is_free[v] = 1;
+        for (Index v = 0; v < nv; ++v)
+            if (!is_free[v] &&
+                std::ranges::any_of(topology_->neighbors(v), [&](Index j) { return is_free[j]; }))
+                energy_border_.push_back(v);
+    }
+    fixed_constant_valid_ = false;
+    can_revert_ = false;
     // The fused step needs no right-hand side nor displacement arrays, only an output.
     // Kept positions stay (a new recipe on the same mesh).
     if (fused())
@@ -428,6 +459,7 @@ void Session::set_hard_targets(std::span<const Scalar> targets)
         throw InvalidInputError("Session::set_hard_targets: expected " +
                                 std::to_string(3 * hard_.size()) + " values");
     hard_targets_.assign(targets.begin(), targets.end());
+    fixed_constant_valid_ = false;
     if (!falloff_pin_.empty())
         update_falloff_targets(); // the anchors around the pins follow them
 }
@@ -437,6 +469,7 @@ void Session::set_soft_targets(std::span<const Scalar> targets)
     if (!soft_ || targets.size() != 3 * soft_->vertices().size())
         throw InvalidInputError("Session::set_soft_targets: expected 3 values per soft vertex");
     soft_->set_targets(targets);
+    fixed_constant_valid_ = false;
 }
 
 void Session::set_centroid_targets(std::span<const Scalar> targets)
@@ -445,6 +478,7 @@ void Session::set_centroid_targets(std::span<const Scalar> targets)
         throw InvalidInputError(
             "Session::set_centroid_targets: expected 3 values per constrained face");
     centroid_->set_targets(targets);
+    fixed_constant_valid_ = false;
 }
 
 const std::vector<Index>& Session::soft_vertices() const
@@ -478,9 +512,10 @@ bool Session::fused() const
     return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !joint_;
 }
 
-template <bool Soft, bool Centroid, bool Normal>
-void Session::fused_sweep(const Scalar* x, Scalar* y)
+template <bool Soft, bool Centroid, bool Normal, bool Energy>
+TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y)
 {
+    TermEnergies energy;
     if constexpr (Centroid)
     {
         // Each constrained face's residual once per step, for the faces a free vertex
@@ -489,39 +524,50 @@ void Session::fused_sweep(const Scalar* x, Scalar* y)
                                                  ? std::span<const Index>(centroid_->faces())
                                                  : std::span<const Index>(centroid_active_);
         Scalar* residual = centroid_residual_.data();
-        parallel_ranges(static_cast<Index>(faces.size()), [&](Index begin, Index end) {
-            centroid_->face_residuals(x, faces.data(), begin, end, residual);
-        });
+        const Index count = static_cast<Index>(faces.size());
+        if constexpr (Energy)
+            energy.centroid = deterministic_block_sums<Scalar>(count, [&](Index begin, Index end) {
+                return centroid_->face_residuals(x, faces.data(), begin, end, residual);
+            });
+        else
+            parallel_ranges(count, [&](Index begin, Index end) {
+                centroid_->face_residuals(x, faces.data(), begin, end, residual);
+            });
     }
     // The soft and centroid terms weigh their elements through per-vertex weights and
     // per-face residuals; only the normal term's sweep differs with weights.
     const bool all_free = free_.size() == static_cast<size_t>(vertex_count_);
+    const bool weighted = Normal && normal_->has_weights();
     const Index count = static_cast<Index>(free_.size());
-    if constexpr (Normal)
-        if (normal_->has_weights())
-        {
-            if (all_free)
-                parallel_ranges(count, [=, this](Index begin, Index end) {
-                    fused_range<Soft, Centroid, Normal, true, true>(x, y, begin, end);
-                });
-            else
-                parallel_ranges(count, [=, this](Index begin, Index end) {
-                    fused_range<Soft, Centroid, Normal, true, false>(x, y, begin, end);
-                });
-            return;
-        }
-    if (all_free)
-        parallel_ranges(count, [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, false, true>(x, y, begin, end);
+    // Energy: the ranges are deterministic_block_sums' blocks, so that the sums are the
+    // same for any thread count; otherwise one range per thread.
+    const auto sweep = [&](auto range) {
+        if constexpr (Energy)
+            energy += deterministic_block_sums<TermEnergies>(count, range);
+        else
+            parallel_ranges(count, range);
+    };
+    if (weighted && all_free)
+        sweep([=, this](Index begin, Index end) {
+            return fused_range<Soft, Centroid, Normal, true, true, Energy>(x, y, begin, end);
+        });
+    else if (weighted)
+        sweep([=, this](Index begin, Index end) {
+            return fused_range<Soft, Centroid, Normal, true, false, Energy>(x, y, begin, end);
+        });
+    else if (all_free)
+        sweep([=, this](Index begin, Index end) {
+            return fused_range<Soft, Centroid, Normal, false, true, Energy>(x, y, begin, end);
         });
     else
-        parallel_ranges(count, [=, this](Index begin, Index end) {
-            fused_range<Soft, Centroid, Normal, false, false>(x, y, begin, end);
+        sweep([=, this](Index begin, Index end) {
+            return fused_range<Soft, Centroid, Normal, false, false, Energy>(x, y, begin, end);
         });
+    return energy;
 }
 
-template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree>
-void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
+template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree, bool Energy>
+TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
 {
     // Locals: the loop keeps them in registers (the stores to y could change the
     // session's members for the compiler, which would then load them again).
@@ -532,6 +578,9 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
     const Scalar* diagonal = system_.diagonal.data();
     const Scalar* residual = centroid_residual_.data();
     const EdgeTerm& edge = edge_;
+    const Scalar centre[3] = {energy_centre_[0], energy_centre_[1], energy_centre_[2]};
+    // The range's vertices' parts of the energy, each term summed vertex by vertex.
+    Scalar e_edge = 0, e_soft = 0, e_normal = 0;
     for (Index k = begin; k < end; ++k)
     {
         // Every vertex free (no region, no pins): the free list is 0, 1, ... and is not
@@ -541,12 +590,14 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
         const std::ptrdiff_t at = 3 * static_cast<std::ptrdiff_t>(i);
         Scalar r[3] = {0, 0, 0};
         edge.add_vertex_rhs(i, x, r);
+        if constexpr (Energy) // r holds the edge term's part only here
+            e_edge += EdgeTerm::vertex_part(x + at, r, centre);
         if constexpr (Soft)
-            soft_->add_vertex_rhs(i, x, r);
+            soft_->add_vertex_rhs<Energy>(i, x, r, &e_soft);
         if constexpr (Centroid)
             centroid_->add_vertex_residuals(i, residual, r);
         if constexpr (Normal)
-            normal_->add_vertex_rhs<NormalWeighted>(i, x, normals, r);
+            normal_->add_vertex_rhs<NormalWeighted, Energy>(i, x, normals, r, &e_normal);
         Scalar dx[3];
         if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
             cholesky3_solve(&factor[2 * at], r, dx);
@@ -559,31 +610,100 @@ void Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) co
         for (int a = 0; a < 3; ++a)
             y[at + a] = x[at + a] + step * dx[a];
     }
+    TermEnergies energy;
+    energy.edge = e_edge;
+    energy.soft = e_soft;
+    energy.normal = e_normal;
+    return energy;
+}
+
+void Session::add_vertex_parts(const Scalar* x, Index i, TermEnergies& e) const
+{
+    e.edge += edge_.vertex_part(i, x, energy_centre_.data());
+    if (soft_)
+        e.soft += soft_->vertex_part(i, x);
+    if (normal_)
+        e.normal += normal_->vertex_part(i, x, normals_.data());
+}
+
+TermEnergies Session::vertex_parts(const Scalar* x, std::span<const Index> vertices) const
+{
+    return deterministic_block_sums<TermEnergies>(static_cast<Index>(vertices.size()),
+                                                  [&](Index begin, Index end) {
+                                                      TermEnergies e;
+                                                      for (Index k = begin; k < end; ++k)
+                                                          add_vertex_parts(x, vertices[k], e);
+                                                      return e;
+                                                  });
+}
+
+TermEnergies Session::fixed_energy(const Scalar* x)
+{
+    if (!fixed_constant_valid_)
+    {
+        // Every fixed vertex that is not on the border, in order: the free list and the
+        // border are ascending.
+        fixed_constant_ = {};
+        size_t next_free = 0, next_border = 0;
+        for (Index i = 0; i < vertex_count_; ++i)
+        {
+            if (next_free < free_.size() && free_[next_free] == i)
+            {
+                ++next_free;
+                continue;
+            }
+            if (next_border < energy_border_.size() && energy_border_[next_border] == i)
+            {
+                ++next_border;
+                continue;
+            }
+            add_vertex_parts(x, i, fixed_constant_);
+        }
+        if (!centroid_inactive_.empty())
+            fixed_constant_.centroid = centroid_->face_residuals(
+                x, centroid_inactive_.data(), 0, static_cast<Index>(centroid_inactive_.size()),
+                centroid_residual_.data());
+        fixed_constant_valid_ = true;
+    }
+    TermEnergies energy = fixed_constant_;
+    if (!energy_border_.empty())
+        energy += vertex_parts(x, energy_border_);
+    return energy;
 }
 
 namespace {
 
-using FusedSweep = void (Session::*)(const Scalar*, Scalar*);
+using FusedSweep = TermEnergies (Session::*)(const Scalar*, Scalar*);
 
 } // namespace
 
-void Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y)
+TermEnergies Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy)
 {
-    // One instance per combination of terms: bit 0 soft, bit 1 centroid, bit 2 normal.
-    static constexpr std::array<FusedSweep, 8> sweeps = []<size_t... I>(std::index_sequence<I...>)
+    // One instance per combination of terms: bit 0 soft, bit 1 centroid, bit 2 normal,
+    // bit 3 the energy.
+    static constexpr std::array<FusedSweep, 16> sweeps = []<size_t... I>(std::index_sequence<I...>)
     {
-        return std::array<FusedSweep, 8>{
-            &Session::fused_sweep<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0>...};
+        return std::array<FusedSweep, 16>{
+            &Session::fused_sweep<(I & 1) != 0, (I & 2) != 0, (I & 4) != 0, (I & 8) != 0>...};
     }
-    (std::make_index_sequence<8>{});
-    const size_t which = (soft_ ? 1 : 0) | (centroid_ ? 2 : 0) | (normal_ ? 4 : 0);
-    (this->*sweeps[which])(x.data(), y.data());
+    (std::make_index_sequence<16>{});
+    const size_t which =
+        (soft_ ? 1 : 0) | (centroid_ ? 2 : 0) | (normal_ ? 4 : 0) | (energy ? 8 : 0);
+    TermEnergies e = (this->*sweeps[which])(x.data(), y.data());
+    if (energy)
+    {
+        // The fixed parts after the sweep's (a sum's order: free, then fixed).
+        e += fixed_energy(x.data());
+    }
+    return e;
 }
 
 void Session::set_positions(std::span<const Scalar> x)
 {
     check_size(x, "set_positions");
     has_positions_ = true;
+    fixed_constant_valid_ = false;
+    can_revert_ = false;
     x_.assign(x.begin(), x.end());
     if (fused())
         next_.assign(x.begin(), x.end()); // the vertices a step never writes agree
@@ -593,6 +713,8 @@ void Session::adopt_positions(std::vector<Scalar>&& x)
 {
     check_size(x, "adopt_positions");
     has_positions_ = true;
+    fixed_constant_valid_ = false;
+    can_revert_ = false;
     x_ = std::move(x);
     if (fused())
         next_.assign(x_.begin(), x_.end()); // the vertices a step never writes agree
@@ -603,6 +725,8 @@ std::vector<Scalar> Session::release_positions()
     std::vector<Scalar> out;
     out.swap(x_);
     has_positions_ = false;
+    fixed_constant_valid_ = false;
+    can_revert_ = false;
     return out;
 }
 
@@ -610,13 +734,43 @@ StepInfo Session::step()
 {
     if (!has_positions_)
         throw SolverError("Session::step: no positions (call set_positions first)");
+    can_revert_ = false;
     if (!fused())
         return general_step(x_);
-    fused_step(x_, next_);
+    fused_step(x_, next_, false);
     std::swap(x_, next_);
     if (volume_)
         volume_->project(x_);
+    can_revert_ = true;
     return StepInfo{recipe_.lambda};
+}
+
+StepInfo Session::step(TermEnergies& before)
+{
+    if (!has_positions_)
+        throw SolverError("Session::step: no positions (call set_positions first)");
+    can_revert_ = false;
+    if (!fused())
+    {
+        before = energy();
+        return general_step(x_);
+    }
+    before = fused_step(x_, next_, true);
+    std::swap(x_, next_);
+    if (volume_)
+        volume_->project(x_);
+    can_revert_ = true;
+    return StepInfo{recipe_.lambda};
+}
+
+void Session::revert_step()
+{
+    if (!can_revert_)
+        throw SolverError("Session::revert_step: no fused step to undo");
+    // The buffer the step read is untouched: it wrote the other one (the free vertices;
+    // the fixed ones agree in both).
+    std::swap(x_, next_);
+    can_revert_ = false;
 }
 
 StepInfo Session::step(std::span<Scalar> x)
@@ -744,23 +898,52 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
     if (!session.has_positions())
         throw SolverError("run: the session keeps no positions (call set_positions first)");
     SmoothResult result;
-    result.energies.push_back(session.energy());
-    if (on_step)
-        on_step(0, result.energies.back());
     const Recipe& recipe = session.recipe();
+    const auto record = [&](const TermEnergies& e) {
+        result.energies.push_back(e);
+        if (on_step)
+            on_step(static_cast<int>(result.energies.size()) - 1, e);
+    };
+    if (!session.fuses_energy())
+    {
+        record(session.energy());
+        for (int k = 0; k < recipe.iterations; ++k)
+        {
+            result.lambdas.push_back(session.step().lambda);
+            ++result.iterations;
+            record(session.energy());
+            if (converged(result.energies[k].total(), result.energies[k + 1].total(),
+                          recipe.tolerance))
+            {
+                result.stopped_by_tolerance = true;
+                break;
+            }
+        }
+        return result;
+    }
+    // The fused step computes E(x_k) in the sweep that computes x_{k+1}: the tolerance
+    // learns one step late that step k converged, and that step's successor is undone.
+    // One pass over the mesh a step, and one for the last energy.
     for (int k = 0; k < recipe.iterations; ++k)
     {
-        result.lambdas.push_back(session.step().lambda);
-        result.energies.push_back(session.energy());
-        ++result.iterations;
-        if (on_step)
-            on_step(result.iterations, result.energies.back());
-        if (converged(result.energies[k].total(), result.energies[k + 1].total(), recipe.tolerance))
+        TermEnergies before;
+        const StepInfo info = session.step(before);
+        record(before);
+        if (k > 0 &&
+            converged(result.energies[k - 1].total(), result.energies[k].total(), recipe.tolerance))
         {
+            session.revert_step();
             result.stopped_by_tolerance = true;
-            break;
+            return result;
         }
+        result.lambdas.push_back(info.lambda);
+        ++result.iterations;
     }
+    record(session.energy());
+    if (result.iterations > 0 &&
+        converged(result.energies[result.iterations - 1].total(),
+                  result.energies[result.iterations].total(), recipe.tolerance))
+        result.stopped_by_tolerance = true;
     return result;
 }
 

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <optional>
 #include <span>
@@ -31,6 +32,16 @@ struct TermEnergies
     Scalar total() const
     {
         return edge + soft + centroid + normal + normal_smoothing + normal_soft;
+    }
+    TermEnergies& operator+=(const TermEnergies& o)
+    {
+        edge += o.edge;
+        soft += o.soft;
+        centroid += o.centroid;
+        normal += o.normal;
+        normal_smoothing += o.normal_smoothing;
+        normal_soft += o.normal_soft;
+        return *this;
     }
 };
 
@@ -122,6 +133,24 @@ public:
     std::span<const Scalar> positions() const { return x_; }
     //! One step on the kept positions; the same bits as step(x) (tested).
     StepInfo step();
+    //! \brief One step on the kept positions that also gives `before`, the energy of the
+    //! positions the step starts from. When fuses_energy(), the step's own sweep computes
+    //! it: each free vertex adds its parts of the energy while it computes its step,
+    //! -(x_i - c)^T r_i for the edge term (EdgeTerm::vertex_part), mu_i |x_i - t_i|^2 for its
+    //! anchor, the face-normal pairs that start at it; the centroid faces' energies come
+    //! from the pass that computes their residuals. The fixed vertices' parts are summed once per
+    //! set of positions, except those of fixed vertices next to a free one, which are summed every
+    //! step. Otherwise energy() runs first. The same positions as step(); the energy agrees with
+    //! energy() to rounding and is the same for any thread count.
+    StepInfo step(TermEnergies& before);
+    //! True when step(before) finds the energy in the step's own sweep and revert_step()
+    //! can undo a step: the fused Jacobi step (see fused_step).
+    bool fuses_energy() const { return fused(); }
+    //! \brief Puts back the kept positions of before the last step: for a run that learns
+    //! from step(before) one step late that the step before it had converged.
+    //! \throw SolverError unless the last call was a step() or step(before) on the kept
+    //! positions with fuses_energy().
+    void revert_step();
     //! The energy of the kept positions.
     TermEnergies energy() const { return energy(x_); }
 
@@ -158,16 +187,29 @@ private:
     //! computes each face's residual once (FaceCentroidTerm::face_residuals), which the
     //! face's corners then add (add_vertex_residuals: the same bits as add_vertex_rhs).
     //! x and y must not overlap; y is written at free vertices only.
-    void fused_step(std::span<const Scalar> x, std::span<Scalar> y);
+    //! With energy, returns the energy of x (fused_sweep's parts and fixed_energy's).
+    TermEnergies fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy);
     //! fused_step for one combination of active terms, so that the sweep tests nothing
     //! per vertex: the plain Laplacian step is a bare gather loop. (The Jacobi method
     //! solves 3x3 blocks exactly when the normal term is on.)
-    template <bool Soft, bool Centroid, bool Normal>
-    void fused_sweep(const Scalar* x, Scalar* y);
+    //! With Energy, returns the parts of E(x) that the free vertices and the centroid
+    //! faces with a free corner own, summed in blocks that depend on the counts only.
+    template <bool Soft, bool Centroid, bool Normal, bool Energy>
+    TermEnergies fused_sweep(const Scalar* x, Scalar* y);
     //! The sweep over free[begin .. end) (AllFree: every vertex free, i = k; NormalWeighted:
-    //! the normal term's faces have weights of their own).
-    template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree>
-    void fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const;
+    //! the normal term's faces have weights of their own; Energy: the range's owned parts of
+    //! the energy are summed and returned).
+    template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree, bool Energy>
+    TermEnergies fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const;
+    //! The parts of E(x) of the vertices of `vertices` (fixed ones: the sweep leaves them
+    //! out), summed in blocks.
+    TermEnergies vertex_parts(const Scalar* x, std::span<const Index> vertices) const;
+    //! e += vertex i's parts at x: -(x_i - c)^T r_i of the edge term (EdgeTerm::vertex_part),
+    //! its anchor's mu_i |x_i - t_i|^2, the face-normal pairs that start at it.
+    void add_vertex_parts(const Scalar* x, Index i, TermEnergies& e) const;
+    //! The parts of the fixed vertices and of the centroid faces without a free corner at
+    //! x: the constant part once per set of positions, the border's every call.
+    TermEnergies fixed_energy(const Scalar* x);
     //! The general step (separate right-hand side, displacement, line search, joint
     //! update), in place on x.
     StepInfo general_step(std::span<Scalar> x);
@@ -212,6 +254,18 @@ private:
     std::vector<Scalar> centroid_residual_;
     //! The constrained faces with a free vertex when not all have one; else empty
     std::vector<Index> centroid_active_;
+    //! The constrained faces without a free vertex (fused steps; their energy is constant)
+    std::vector<Index> centroid_inactive_;
+    //! Fixed vertices with a free neighbour, ascending: their parts of the energy change
+    //! with the free positions (fused steps)
+    std::vector<Index> energy_border_;
+    //! c of the vertex parts -(x_i - c)^T r_i (the bounding box's middle)
+    std::array<Scalar, 3> energy_centre_{};
+    //! The parts of the other fixed vertices and of centroid_inactive_, for the kept
+    //! positions and targets, while fixed_constant_valid_
+    TermEnergies fixed_constant_;
+    bool fixed_constant_valid_ = false;
+    bool can_revert_ = false;    //!< the last call was a fused step on the kept positions
     bool has_positions_ = false; //!< positions were given (x_ may be empty: #V = 0)
 };
 

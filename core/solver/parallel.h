@@ -81,23 +81,23 @@ void parallel_ranges(Index n, F&& f)
         f(Index{0}, n);
 }
 
-//! \brief The sum of f(k) over [0, n), bit for bit the same for any thread count: the
-//! range is cut into blocks whose size depends on n only, each block is summed in order,
-//! then the block sums are added in order. Allocates nothing (at most 1024 blocks).
-template <class F>
-Scalar deterministic_sum(Index n, F&& f)
+//! \brief The sum of f(begin, end) over blocks that cover [0, n), bit for bit the same for
+//! any thread count: the blocks' sizes depend on n only (at least 4096 elements, at most
+//! 1024 blocks), each block is one call, and the blocks' results are added in order
+//! (Sums: a value with +=, zero when value-initialized). For sweeps that sum while they
+//! work: each block runs as one range, so what a range loads once it still loads once.
+//! Allocates nothing.
+template <class Sums, class F>
+Sums deterministic_block_sums(Index n, F&& f)
 {
     constexpr std::int64_t kMaxBlocks = 1024;
     const std::int64_t size = n;
     const std::int64_t block = std::max<std::int64_t>(4096, (size + kMaxBlocks - 1) / kMaxBlocks);
     const std::int64_t blocks = (size + block - 1) / block;
-    std::array<Scalar, kMaxBlocks> partial;
+    std::array<Sums, kMaxBlocks> partial;
     const auto sum_block = [&](std::int64_t b) {
-        Scalar s = 0;
-        const std::int64_t end = std::min(size, (b + 1) * block);
-        for (std::int64_t k = b * block; k < end; ++k)
-            s += f(static_cast<Index>(k));
-        partial[static_cast<size_t>(b)] = s;
+        partial[static_cast<size_t>(b)] =
+            f(static_cast<Index>(b * block), static_cast<Index>(std::min(size, (b + 1) * block)));
     };
     const int threads = blocks > 1 ? thread_count() : 1;
     if (threads > 1)
@@ -105,10 +105,23 @@ Scalar deterministic_sum(Index n, F&& f)
     else
         for (std::int64_t b = 0; b < blocks; ++b)
             sum_block(b);
-    Scalar sum = 0;
+    Sums sum{};
     for (std::int64_t b = 0; b < blocks; ++b)
         sum += partial[static_cast<size_t>(b)];
     return sum;
+}
+
+//! \brief The sum of f(k) over [0, n), bit for bit the same for any thread count: each
+//! block of deterministic_block_sums is summed in order, then the block sums in order.
+template <class F>
+Scalar deterministic_sum(Index n, F&& f)
+{
+    return deterministic_block_sums<Scalar>(n, [&](Index begin, Index end) {
+        Scalar s = 0;
+        for (Index k = begin; k < end; ++k)
+            s += f(k);
+        return s;
+    });
 }
 
 } // namespace meshfair

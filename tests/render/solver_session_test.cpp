@@ -172,6 +172,40 @@ TEST_SUITE("Live solving")
         CHECK(cli_reproduces(s, b.path, dir));
     }
 
+    TEST_CASE("a run until the energy settles stops where meshfair-cli's tolerance stops")
+    {
+        const fs::path dir = test::temp_dir();
+        NoisyBunny b(dir);
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+        SolverSettings settings = s.document().solver;
+        settings.tolerance = 1e-3;
+        settings.until_converged = true;
+        settings.iterations_per_frame = 3;
+        s.dispatch(cmd::SetSolverSettings{settings});
+        s.dispatch(cmd::Play{});
+        while (s.playing())
+            s.take_frame();
+        CHECK(s.solver_status().converged);
+        const int steps = s.document().steps_from_base;
+        CHECK(steps > 1);
+        // The library's run of the exported recipe, allowed many more steps, stops at the
+        // same step with the same positions.
+        const fs::path recipe = dir / "recipe.json";
+        REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
+        Recipe r = read_recipe(recipe.string());
+        r.iterations = 100 * steps;
+        Mesh m = io::read_mesh(b.path.string());
+        const SmoothResult result = smooth(m, build_topology(m, required_topology(r)), r);
+        CHECK(result.stopped_by_tolerance);
+        CHECK(result.iterations == steps);
+        // And meshfair-cli (the editor's vertex order, hence its bits) gives its positions.
+        const fs::path longer = dir / "longer.json";
+        io::write_file_atomically(longer.string(), recipe_to_json(r).dump());
+        CHECK(cli_positions(b.path, longer) == file_order_mesh(s.document()).positions);
+    }
+
     TEST_CASE("pins dragged in the view plane move their targets without a precomputation")
     {
         const fs::path dir = test::temp_dir();

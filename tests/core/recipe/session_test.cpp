@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
+#include "core/solver/solver.h"
 #include "tests/helpers.h"
 #include "tests/session_checks.h"
 
@@ -418,6 +419,24 @@ TEST_SUITE("Session")
         const Scalar before = early.energies[early.iterations - 1].total();
         const Scalar after = early.energies[early.iterations].total();
         CHECK((before - after) / before < 1e-4);
+        // run() learns the energies from its steps' sweeps, one step late, and undoes the
+        // step past the stop: the positions and the count of a loop that evaluates the
+        // energy after every step.
+        Mesh c = m;
+        Session session(c, t, r);
+        int steps = 0;
+        Scalar e = session.energy(c.positions).total();
+        for (bool stop = false; !stop && steps < r.iterations; ++steps)
+        {
+            session.step(c.positions);
+            const Scalar next = session.energy(c.positions).total();
+            stop = converged(e, next, r.tolerance);
+            e = next;
+        }
+        CHECK(steps == early.iterations);
+        CHECK(c.positions == b.positions);
+        CHECK(early.energies.size() == static_cast<size_t>(early.iterations) + 1);
+        CHECK(early.lambdas.size() == static_cast<size_t>(early.iterations));
     }
 
     TEST_CASE("a recipe that does not fit the mesh is refused before any work")

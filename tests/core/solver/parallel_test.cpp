@@ -49,6 +49,17 @@ Run run_steps(const Mesh& mesh, const Topology& topology, const Recipe& recipe, 
         r.energies.push_back(session.energy(x.positions).total());
     }
     r.positions = x.positions;
+    // The energies that the steps on kept positions compute in their sweeps.
+    session.set_positions(x.positions);
+    for (int k = 0; k < 3; ++k)
+    {
+        TermEnergies before;
+        session.step(before);
+        for (const Scalar e : {before.edge, before.soft, before.centroid, before.normal})
+            r.energies.push_back(e);
+    }
+    const std::span<const Scalar> kept = session.positions();
+    r.positions.insert(r.positions.end(), kept.begin(), kept.end());
     return r;
 }
 
@@ -248,6 +259,38 @@ TEST_SUITE("Solver")
                 CHECK(a.energy(x).total() == b.energy().total());
             }
             CHECK(!same_bits(x, m.positions)); // something moved
+            // step(before): the same positions, and before is E(x_k) of the positions the
+            // step starts from, computed in the step's sweep (fixed parts and all).
+            Session d(m, t, recipe);
+            std::vector<Scalar> z = m.positions;
+            d.apply_hard_targets(z);
+            d.set_positions(z);
+            REQUIRE(d.fuses_energy());
+            for (int k = 0; k < 5; ++k)
+            {
+                const std::span<const Scalar> kept = d.positions();
+                const std::vector<Scalar> start(kept.begin(), kept.end());
+                const TermEnergies expected = d.energy();
+                TermEnergies before;
+                d.step(before);
+                for (const auto& [got, want] :
+                     {std::pair{before.edge, expected.edge}, std::pair{before.soft, expected.soft},
+                      std::pair{before.centroid, expected.centroid},
+                      std::pair{before.normal, expected.normal}})
+                    CHECK(std::abs(got - want) <= 1e-12 * std::max<Scalar>(1, std::abs(want)));
+                CHECK(expected.total() > 0);
+                if (k == 4)
+                {
+                    // Undone: the kept positions are those the step started from.
+                    d.revert_step();
+                    const std::span<const Scalar> back = d.positions();
+                    CHECK(same_bits(std::vector<Scalar>(back.begin(), back.end()), start));
+                    CHECK_THROWS_AS(d.revert_step(), SolverError); // once
+                    d.step(before);
+                }
+            }
+            const std::span<const Scalar> stepped = d.positions();
+            CHECK(same_bits(std::vector<Scalar>(stepped.begin(), stepped.end()), x));
             Recipe five = recipe;
             five.iterations = 5;
             Session c(m, t, five);
@@ -256,9 +299,47 @@ TEST_SUITE("Solver")
             run(c, y);
             CHECK(same_bits(y, x));
         }
+        // A scan in millimetres far from the origin: the vertex parts are taken about the
+        // mesh's middle, so the energy keeps its digits.
+        {
+            Mesh far = m;
+            for (size_t k = 0; k < far.positions.size(); k += 3)
+            {
+                far.positions[k] = 1000 * far.positions[k] + 2.5e5;
+                far.positions[k + 1] = 1000 * far.positions[k + 1] - 4e5;
+                far.positions[k + 2] = 1000 * far.positions[k + 2] + 1e5;
+            }
+            Recipe r;
+            r.normal = NormalConstraints{{true, {}}, 0.7, NormalSource::Initial, {}};
+            r.region = Region{test::all_indices(far.vertex_count() / 2), {}};
+            Session session(far, t, r);
+            session.set_positions(far.positions);
+            for (int k = 0; k < 3; ++k)
+            {
+                const TermEnergies expected = session.energy();
+                TermEnergies before;
+                session.step(before);
+                CHECK(std::abs(before.edge - expected.edge) <= 1e-12 * expected.edge);
+                CHECK(std::abs(before.normal - expected.normal) <= 1e-12 * expected.normal);
+            }
+        }
         const Recipe plain;
         Session s(m, t, plain);
         CHECK_THROWS_AS(s.step(), SolverError);
+        TermEnergies e;
+        CHECK_THROWS_AS(s.step(e), SolverError);
+        s.set_positions(m.positions);
+        CHECK_THROWS_AS(s.revert_step(), SolverError); // no step yet
+        s.step(m.positions); // the general step on outside positions: nothing to undo
+        CHECK_THROWS_AS(s.revert_step(), SolverError);
+        Recipe optimal;
+        optimal.optimal_step = true; // not fused: the energy from energy(), no undo
+        Session o(m, t, optimal);
+        o.set_positions(m.positions);
+        CHECK_FALSE(o.fuses_energy());
+        o.step(e);
+        CHECK(e.total() == Session(m, t, optimal).energy(m.positions).total());
+        CHECK_THROWS_AS(o.revert_step(), SolverError);
         CHECK_THROWS_AS(s.set_positions(std::vector<Scalar>(5)), SolverError);
     }
 }
