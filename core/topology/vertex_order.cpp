@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include "core/solver/parallel.h"
+
 namespace meshfair {
 
 namespace {
@@ -126,20 +128,26 @@ LocalityOrder locality_order(const Mesh& mesh)
 
 Mesh reorder_mesh(const Mesh& mesh, const LocalityOrder& order)
 {
+    // Both gathers on every thread: each output element is written by its own index (the
+    // CLI renumbers back after every solve; 2.5M faces took 60 ms on one thread).
     Mesh out;
     out.positions.resize(mesh.positions.size());
-    for (size_t k = 0; k < order.vertex_order.size(); ++k)
+    parallel_for(static_cast<Index>(order.vertex_order.size()), [&](Index k) {
+        const size_t from = 3 * static_cast<size_t>(order.vertex_order[k]);
         for (size_t a = 0; a < 3; ++a)
-            out.positions[3 * k + a] =
-                mesh.positions[3 * static_cast<size_t>(order.vertex_order[k]) + a];
-    out.face_offsets.reserve(mesh.face_offsets.size());
-    out.face_vertices.reserve(mesh.face_vertices.size());
-    for (const Index f : order.face_order)
-    {
-        for (const Index i : mesh.face(f))
-            out.face_vertices.push_back(order.vertex_index[i]);
-        out.face_offsets.push_back(static_cast<Index>(out.face_vertices.size()));
-    }
+            out.positions[3 * static_cast<size_t>(k) + a] = mesh.positions[from + a];
+    });
+    const Index nf = static_cast<Index>(order.face_order.size());
+    out.face_offsets.resize(static_cast<size_t>(nf) + 1);
+    out.face_offsets[0] = 0;
+    for (Index k = 0; k < nf; ++k)
+        out.face_offsets[k + 1] = out.face_offsets[k] + mesh.face_size(order.face_order[k]);
+    out.face_vertices.resize(mesh.face_vertices.size());
+    parallel_for(nf, [&](Index k) {
+        Index at = out.face_offsets[k];
+        for (const Index i : mesh.face(order.face_order[k]))
+            out.face_vertices[at++] = order.vertex_index[i];
+    });
     return out;
 }
 
