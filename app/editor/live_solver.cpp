@@ -44,6 +44,8 @@ void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vec
         status_.error.clear();
         status_.steps = 0;
         energies_.clear();
+        known_energy_.reset();
+        energy_due_ = false;
         ++status_.energy_version;
         fresh_ = false;
     }
@@ -63,6 +65,8 @@ void LiveSolver::clear()
     status_.restarts = restarts;
     status_.energy_version = version + 1; // the curve is gone
     energies_.clear();
+    known_energy_.reset();
+    energy_due_ = false;
     fresh_ = false;
 }
 
@@ -129,6 +133,8 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     std::vector<Scalar> x(session.positions().begin(), session.positions().end());
     session.apply_hard_targets(x);
     session.set_positions(x);
+    known_energy_.reset(); // new positions at the same step count
+    energy_due_ = false;
     back_.assign(session.positions().begin(), session.positions().end());
     compute_display(back_, run_->mesh());
     std::swap(back_, published_);
@@ -140,7 +146,10 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
 void LiveSolver::wait_idle()
 {
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return !busy_ && !restart_ && !(heat_dirty_ && run_); });
+    done_.wait(lock, [&] {
+        return !busy_ && !restart_ && !(heat_dirty_ && run_) &&
+               !(energy_due_ && run_ && !status_.playing);
+    });
 }
 
 void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
@@ -218,7 +227,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         stop_tolerance_ > 0 ? stop_tolerance_ : run_->session().recipe().tolerance;
     if (status_.playing && steps_left_ > 0)
         n = std::min(n, steps_left_); // the run's last frame: only the steps left
-    TermEnergies before = energies_.empty() ? run_->energy() : energies_.back().energy;
+    const int first = status_.steps;  // the step count of the positions now
+    // Whether the run pauses after this frame unless the tolerance stops it first (then the
+    // plot's last point must be the energy of the positions shown).
+    const bool last_frame =
+        !status_.playing || (steps_left_ > 0 && steps_left_ <= n) || frames_left_ == 1;
+    std::optional<EnergySample> known = known_energy_;
     const std::optional<EnergyTerm> heat = heat_term_;
     lock.unlock();
 
@@ -226,28 +240,41 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     const auto t = std::chrono::steady_clock::now();
     int done = 0;
     bool converged_now = false;
-    std::optional<TermEnergies> known; // the energy of the positions now, when a step gave it
     Session& session = run_->session();
-    if (tolerance > 0 && session.fuses_energy())
+    if (session.fuses_energy())
     {
-        // The command line's rule as run() applies it: each step's sweep gives the energy
-        // of the positions it starts from, so a step learns whether the one before it
-        // converged, and is then undone.
+        // Each step's sweep gives the energy of the positions it starts from: the plot's
+        // points and the tolerance's rule (as run() applies it: a step learns whether the
+        // one before it converged, and is then undone) cost no pass of their own.
         for (; done < n; ++done)
         {
             TermEnergies start;
             session.step(start);
-            if (done > 0 && converged(before.total(), start.total(), tolerance))
+            const int at = first + done;
+            if (tolerance > 0 && known && known->step == at - 1 &&
+                converged(known->energy.total(), start.total(), tolerance))
             {
                 session.revert_step();
                 converged_now = true;
-                known = start;
+                known = EnergySample{at, start};
                 break;
             }
-            before = start;
+            known = EnergySample{at, start};
+        }
+        // The frame's last step is one behind the positions (the next frame's first step
+        // checks it); when the run stops here the plot ends on the shape shown, and its
+        // last step is checked as run() checks it.
+        if (!converged_now && done > 0 && last_frame)
+        {
+            const TermEnergies now = run_->energy();
+            converged_now =
+                tolerance > 0 && converged(known->energy.total(), now.total(), tolerance);
+            known = EnergySample{first + done, now};
         }
     }
     else
+    {
+        TermEnergies before = known && known->step == first ? known->energy : run_->energy();
         for (; done < n && !converged_now; ++done)
         {
             run_->step();
@@ -256,13 +283,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
                 const TermEnergies after = run_->energy();
                 converged_now = converged(before.total(), after.total(), tolerance);
                 before = after;
-                known = after;
+                known = EnergySample{first + done + 1, after};
             }
         }
-    const TermEnergies energy = known ? *known : run_->energy();
-    // The frame's last step, checked with the energy the plot needs anyway.
-    if (tolerance > 0 && !converged_now && done > 0 && session.fuses_energy())
-        converged_now = converged(before.total(), energy.total(), tolerance);
+        if (!known || known->step != first + done)
+            known = EnergySample{first + done, run_->energy()};
+    }
     back_.assign(run_->session().positions().begin(), run_->session().positions().end());
     compute_display(back_, run_->mesh());
     compute_heat(heat);
@@ -284,8 +310,14 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             if (converged_now || steps_done || frames_done)
                 status_.playing = false;
         }
-        energies_.push_back({status_.steps, energy});
-        ++status_.energy_version;
+        if (known && (energies_.empty() || energies_.back().step < known->step))
+        {
+            energies_.push_back(*known);
+            ++status_.energy_version;
+        }
+        known_energy_ = known;
+        // Paused meanwhile with the plot a step behind: the worker adds the last point.
+        energy_due_ = known && known->step != status_.steps;
         if (energies_.size() > kMaxEnergySamples) // keep the whole curve, at half the detail
         {
             size_t kept = 0;
@@ -315,10 +347,31 @@ void LiveSolver::worker()
         wake_.wait(lock, [&] {
             return quit_ || (restart_ && !busy_) ||
                    (status_.playing && run_ && !fresh_ && !busy_ && !restart_) ||
-                   (heat_dirty_ && run_ && !busy_ && !restart_);
+                   (heat_dirty_ && run_ && !busy_ && !restart_) ||
+                   (energy_due_ && run_ && !busy_ && !restart_ && !status_.playing);
         });
         if (quit_)
             return;
+        if (energy_due_ && !restart_ && !status_.playing && !(heat_dirty_ && run_))
+        {
+            // The plot's last point for the positions shown (the run paused between the
+            // frame's steps and its publication).
+            busy_ = true;
+            const std::uint64_t generation = generation_;
+            lock.unlock();
+            const TermEnergies energy = run_->energy();
+            lock.lock();
+            busy_ = false;
+            if (generation == generation_ && energy_due_)
+            {
+                known_energy_ = EnergySample{status_.steps, energy};
+                energies_.push_back(*known_energy_);
+                ++status_.energy_version;
+            }
+            energy_due_ = false;
+            done_.notify_all();
+            continue;
+        }
         if (heat_dirty_ && !restart_ && !status_.playing)
         {
             // Shares for the positions as they are (the heat map was just turned on).
@@ -426,6 +479,8 @@ void LiveSolver::worker()
                 {
                     heat_dirty_ = heat_term_.has_value();
                     energies_ = {{0, energy}};
+                    known_energy_ = energies_.back();
+                    energy_due_ = false;
                     ++status_.energy_version;
                     if (moved)
                     {

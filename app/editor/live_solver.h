@@ -142,6 +142,10 @@ private:
     void compute_display(std::span<const Scalar> x, const Mesh& mesh);
     bool fresh_ = false; // published_ not yet taken
     std::vector<EnergySample> energies_;
+    //! The newest energy known and the step count of the positions it is of: a step's
+    //! sweep gives the energy of the positions it starts from, one step behind.
+    std::optional<EnergySample> known_energy_;
+    bool energy_due_ = false; // the plot's last point is behind the positions (paused)
     std::optional<EnergyTerm> heat_term_;
     bool heat_dirty_ = false;           // shares wanted for the current positions
     std::vector<float> heat_published_; // colours (heat_colors), newest

@@ -15,6 +15,9 @@
 #include "app/render/image.h"
 #include "core/errors.h"
 #include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
+#include "core/recipe/session.h"
+#include "core/topology/vertex_order.h"
 #include "tests/helpers.h"
 #include "tests/render/render_support.h"
 
@@ -166,6 +169,26 @@ TEST_SUITE("Scripted sessions")
         const std::vector<app::EnergySample> e = session.energies();
         REQUIRE(e.size() == 13);
         CHECK(e.back().energy.total() < e.front().energy.total());
+        // The plot's points come from the steps' sweeps (each the energy of the positions
+        // a step starts from), and the run's end adds the shape shown: step counts rising,
+        // energies falling, and the last point the energy of the positions at step 60.
+        for (size_t k = 1; k < e.size(); ++k)
+        {
+            CHECK(e[k].step > e[k - 1].step);
+            CHECK(e[k].energy.total() <= e[k - 1].energy.total());
+        }
+        CHECK(e.back().step == 60);
+        const fs::path dir = test::temp_dir();
+        REQUIRE(session.dispatch(app::cmd::ExportRecipe{(dir / "plot.json").string()}));
+        const app::Document& doc = session.document();
+        Mesh base = doc.mesh; // the start of the run, in the file's numbering: the targets
+        base.positions = doc.base_positions;
+        base = reorder_mesh(base, inverse_order(doc.order));
+        const Recipe recipe = read_recipe((dir / "plot.json").string());
+        const Topology topology = build_topology(base, required_topology(recipe));
+        const Session check(base, topology, recipe);
+        const Scalar now = check.energy(file_order_mesh(doc).positions).total();
+        CHECK(std::abs(e.back().energy.total() - now) <= 1e-12 * now);
         test::check_golden("ui_energy_plot", host.frame());
     }
 
