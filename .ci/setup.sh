@@ -79,14 +79,30 @@ if [ "$mode" = run ]; then
     exit 0
 fi
 
+# Where the test command's time goes, phase by phase (printed at the end).
+times=()
+phase_start=$SECONDS
+phase() {
+    times+=("$(printf '%-28s %5d s' "$1" $((SECONDS - phase_start)))")
+    phase_start=$SECONDS
+}
+phase "setup and release build"
 # 1. Unit, adversarial and save tests in the release build.
 (cd "$build" && ctest --output-on-failure -j"$(nproc)")
+phase "release tests"
 echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror
+phase "formatting"
 # 2. The same tests built with clang, ASan + UBSan and libstdc++ assertions.
 ./.ci/sanitize.sh
+phase "sanitizer build and tests"
 # 3. clang-tidy (bugprone-*) on core/, with the clang build's compile commands.
 ./.ci/tidy.sh
-# 4. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each.
+phase "clang-tidy"
+# 4. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each
+# (as many targets at a time as there are cores).
 ./.ci/fuzz.sh
+phase "fuzz build and campaigns"
+echo "Time by phase:"
+printf '  %s\n' "${times[@]}"
 echo "All tests passed (release, sanitizers, fuzzing), core/ is lint-clean and every source file is formatted."
