@@ -138,6 +138,7 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     back_.assign(session.positions().begin(), session.positions().end());
     compute_display(back_, run_->mesh());
     std::swap(back_, published_);
+    published_steps_ = status_.steps;
     std::swap(display_back_, display_published_);
     fresh_ = true;
     done_.notify_all();
@@ -163,7 +164,7 @@ void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
     vertex_normals(vertex_face_offsets_, vertex_faces_, g.face_areas, g.normals);
 }
 
-bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry)
+bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry, int& steps)
 {
     {
         std::lock_guard lock(mutex_);
@@ -171,6 +172,7 @@ bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry)
             return false;
         std::swap(positions, published_);
         std::swap(geometry, display_published_);
+        steps = published_steps_;
         fresh_ = false;
     }
     wake_.notify_all(); // a playing worker waits for this
@@ -326,6 +328,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             energies_.resize(kept);
         }
         std::swap(back_, published_);
+        published_steps_ = status_.steps;
         std::swap(display_back_, display_published_);
         fresh_ = true;
         if (heat && heat == heat_term_)
@@ -485,6 +488,7 @@ void LiveSolver::worker()
                     if (moved)
                     {
                         published_ = std::move(published);
+                        published_steps_ = 0;
                         std::swap(display_back_, display_published_);
                     }
                     fresh_ = moved;

@@ -101,9 +101,10 @@ public:
     //! The newest heat-map colours not yet taken (heat_colors of the shares), into `heat`.
     bool take_heat(std::vector<float>& heat);
     //! \brief The newest positions not yet taken, swapped into `positions`, with the
-    //! frame's display geometry into `geometry`; false when there are none. Called once per
-    //! frame by the interface.
-    bool take(std::vector<Scalar>& positions, DisplayGeometry& geometry);
+    //! frame's display geometry into `geometry` and the run's step count at those positions
+    //! into `steps` (status() may already count a later frame's); false when there are
+    //! none. Called once per frame by the interface.
+    bool take(std::vector<Scalar>& positions, DisplayGeometry& geometry, int& steps);
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
     std::vector<EnergySample> energies() const;
@@ -135,6 +136,7 @@ private:
     std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest
+    int published_steps_ = 0;       // the run's step count at published_
     std::vector<Scalar> back_;      // file order, being written (while busy_)
     DisplayGeometry display_published_, display_back_;
     std::vector<Index> vertex_face_offsets_, vertex_faces_; // of the run (set at a restart)

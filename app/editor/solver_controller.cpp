@@ -125,11 +125,14 @@ bool SolverController::update()
 {
     restart_if_needed();
     bool fresh = false;
-    if (solver_.take(incoming_, display_))
+    int steps = 0;
+    if (solver_.take(incoming_, display_, steps))
     {
+        // The step count of these positions, taken with them: a frame the solver finishes
+        // meanwhile counts in status() before its positions are taken.
         std::swap(incoming_, document_.mesh.positions);
-        document_.steps_from_base = steps_at_restart_ + solver_.status().steps;
-        if (solver_.status().steps > 0)
+        document_.steps_from_base = steps_at_restart_ + steps;
+        if (steps > 0)
             document_.shape_recipe = running_;
         document_.modified = true;
         document_.versions.bump(kPositions);

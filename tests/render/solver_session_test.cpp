@@ -12,10 +12,12 @@
 #include <filesystem>
 #include <random>
 #include <string>
+#include <thread>
 
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/editor/editor_session.h"
+#include "app/editor/live_solver.h"
 #include "app/editor/script.h"
 #include "app/render/gl_renderer.h"
 #include "core/geometry/face_geometry.h"
@@ -204,6 +206,47 @@ TEST_SUITE("Live solving")
         const fs::path longer = dir / "longer.json";
         io::write_file_atomically(longer.string(), recipe_to_json(r).dump());
         CHECK(cli_positions(b.path, longer) == file_order_mesh(s.document()).positions);
+    }
+
+    TEST_CASE("positions taken from a playing solver come with the step count they are at")
+    {
+        // An interface slower than the solver: after each take the worker finishes the next
+        // frame before the interface asks again, so status() counts a frame ahead of the
+        // positions taken. take's own count must be theirs (the editor's recipe, and so
+        // meshfair-cli, reproduce the shape from it).
+        Mesh m = test::icosphere(3);
+        test::perturb(m, 0.02, 3);
+        const Document doc = make_document(m, "sphere.obj");
+        Recipe r;
+        r.soft = SoftVertices{{true, {}}, 0.2, {}};
+        LiveSolver solver;
+        solver.restart(m, doc.order, r, {}, doc.draw_data.vertex_face_offsets,
+                       doc.draw_data.vertex_faces);
+        solver.wait_idle();
+        solver.set_iterations_per_frame(2);
+        solver.set_playing(true, 6);
+        std::vector<Scalar> x;
+        DisplayGeometry g;
+        int taken = 0;
+        for (int frames = 0; frames < 6;)
+        {
+            if (!solver.wait_published())
+                break;
+            int steps = -1;
+            REQUIRE(solver.take(x, g, steps));
+            ++frames;
+            std::this_thread::sleep_for(std::chrono::milliseconds(20)); // the next frame runs
+            // The same shape from the library: `steps` steps of the recipe.
+            Mesh reference = m;
+            Recipe n = r;
+            n.iterations = steps;
+            smooth(reference, build_topology(reference, required_topology(n)), n);
+            CHECK(x == reference.positions);
+            CHECK(steps == 2 * frames);
+            taken = steps;
+        }
+        CHECK(taken == 12);
+        CHECK(solver.status().steps == 12);
     }
 
     TEST_CASE("pins dragged in the view plane move their targets without a precomputation")
