@@ -19,10 +19,13 @@ FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
       denominator_(denominator),
       faces_(std::move(faces)),
       constrained_(mesh.face_count(), 0),
-      target_(3 * static_cast<size_t>(mesh.face_count()), 0)
+      target_(3 * static_cast<size_t>(mesh.face_count()), 0),
+      walk_(mesh, topology),
+      all_faces_(false)
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
+    all_faces_ = std::ranges::all_of(constrained_, [](char c) { return c != 0; });
     if (!weights.empty())
     {
         face_weight_.assign(mesh.face_count(), 0);

@@ -96,11 +96,12 @@ public:
     {
         // Locals, not r[]: a store through r could change residual for the compiler.
         Scalar r0 = r[0], r1 = r[1], r2 = r[2];
-        const Index* corner_face = topology_->corner_face.data();
+        const CornerWalk walk = walk_;
+        const bool all_faces = all_faces_;
         for (const Index c : topology_->corners_of_vertex(i))
         {
-            const Index f = corner_face[c];
-            if (!constrained_[f])
+            const Index f = walk.face(c);
+            if (!all_faces && !constrained_[f])
                 continue;
             const Scalar* q = residual + 3 * static_cast<std::ptrdiff_t>(f);
             r0 += q[0];
@@ -135,6 +136,8 @@ private:
     std::vector<char> constrained_;   //!< #F
     std::vector<Scalar> target_;      //!< 3 #F
     std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
+    CornerWalk walk_;
+    bool all_faces_; //!< every face constrained: the sweep tests no flag
 };
 
 } // namespace meshfair

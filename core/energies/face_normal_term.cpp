@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/energies/face_normal_term.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/solver/parallel.h"
@@ -14,10 +15,13 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::
       topology_(&topology),
       mu_(mu),
       faces_(std::move(faces)),
-      constrained_(mesh.face_count(), 0)
+      constrained_(mesh.face_count(), 0),
+      walk_(mesh, topology),
+      all_faces_(false)
 {
     for (const Index f : faces_)
         constrained_[f] = 1;
+    all_faces_ = std::ranges::all_of(constrained_, [](char c) { return c != 0; });
     if (!weights.empty())
     {
         face_weight_.assign(mesh.face_count(), 0);

@@ -82,12 +82,14 @@ public:
         const Scalar mu = mu_;
         const Scalar* face_weight = face_weight_.data();
         const Scalar xi0 = x[3 * i], xi1 = x[3 * i + 1], xi2 = x[3 * i + 2];
+        const CornerWalk walk = walk_;
+        const bool all_faces = all_faces_;
         for (const Index c : topology_->corners_of_vertex(i))
         {
-            const Index f = topology_->corner_face[c];
-            if (!constrained_[f])
+            const Index f = walk.face(c);
+            if (!all_faces && !constrained_[f])
                 continue;
-            const auto [prev, next] = corner_neighbors(*mesh_, *topology_, c);
+            const auto [prev, next] = walk.neighbors(c, f);
             const Scalar* u = &normals[3 * static_cast<std::ptrdiff_t>(f)];
             const Scalar* a = &x[3 * static_cast<std::ptrdiff_t>(prev)];
             const Scalar* b = &x[3 * static_cast<std::ptrdiff_t>(next)];
@@ -131,6 +133,8 @@ private:
     std::vector<Index> faces_;
     std::vector<char> constrained_;   //!< #F
     std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
+    CornerWalk walk_;
+    bool all_faces_; //!< every face constrained: the sweep tests no flag
 };
 
 } // namespace meshfair

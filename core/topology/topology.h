@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstdint>
+
 #include <span>
 #include <vector>
 
@@ -159,5 +161,55 @@ inline CornerNeighbors corner_neighbors(const Mesh& mesh, const Topology& topolo
     const AdjacentCorners a = adjacent_corners(mesh, topology, corner);
     return {mesh.face_vertices[a.previous], mesh.face_vertices[a.next]};
 }
+
+//! \brief The corner walk of the solver's sweeps: a corner's face and its neighbours in
+//! that face, with a shortcut for meshes of triangles only (scans, mostly), where corner c
+//! is in face c / 3 and its face starts at corner 3 f: a multiplication instead of the
+//! loads of corner_face and the face's offsets, each a link in the chain of dependent
+//! loads a corner costs. The same faces and neighbours either way.
+class CornerWalk
+{
+public:
+    CornerWalk(const Mesh& mesh, const Topology& topology)
+        : mesh_(&mesh),
+          corner_face_(topology.corner_face.data()),
+          triangles_(mesh.face_vertices.size() == 3 * static_cast<size_t>(mesh.face_count()))
+    {
+    }
+    //! True when every face is a triangle.
+    bool triangles() const { return triangles_; }
+    //! The face of corner c (topology.corner_face[c]).
+    Index face(Index c) const
+    {
+        return triangles_ ? static_cast<Index>(static_cast<std::uint32_t>(c) / 3u)
+                          : corner_face_[c];
+    }
+    //! corner_neighbors(mesh, topology, c), f being c's face.
+    CornerNeighbors neighbors(Index c, Index f) const
+    {
+        Index first, n;
+        if (triangles_)
+        {
+            first = 3 * f;
+            n = 3;
+        }
+        else
+        {
+            first = mesh_->face_offsets[f];
+            n = mesh_->face_offsets[f + 1] - first;
+        }
+        // Arithmetic, not selects: where a corner sits in its face is unpredictable, and a
+        // compiled branch mispredicted about twice per vertex.
+        const Index previous = c - 1 + n * static_cast<Index>(c == first);
+        const Index next = c + 1 - n * static_cast<Index>(c == first + n - 1);
+        const Index* corners = mesh_->face_vertices.data();
+        return {corners[previous], corners[next]};
+    }
+
+private:
+    const Mesh* mesh_;
+    const Index* corner_face_;
+    bool triangles_;
+};
 
 } // namespace meshfair
