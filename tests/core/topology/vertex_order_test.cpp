@@ -5,6 +5,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <queue>
+#include <random>
 #include <set>
 #include <utility>
 
@@ -157,4 +159,48 @@ TEST_CASE("locality_order: permutations, faces sorted by first vertex, exact rou
         CHECK(again.face_offsets == m.face_offsets);
         CHECK(again.face_vertices == m.face_vertices);
     }
+}
+
+TEST_CASE("breadth_first_order is the textbook queue's order, far past its read-ahead")
+{
+    // The visit reads ahead along its queue and its corners; the order must be the plain
+    // queue's: each vertex's corners in face order, the previous then the next vertex of
+    // each. A shuffled grid of 4,900 vertices (about 29,000 corners) runs far past the
+    // read-ahead distances, and the ends of the queue run into them.
+    const Mesh grid = open_grid(70, 70);
+    std::vector<Index> shuffle = all_indices(grid.vertex_count());
+    std::mt19937 random(7);
+    std::shuffle(shuffle.begin(), shuffle.end(), random);
+    const Mesh m = renumber_vertices(grid, shuffle);
+    std::vector<std::vector<Index>> around(static_cast<size_t>(m.vertex_count()));
+    for (Index f = 0; f < m.face_count(); ++f)
+    {
+        const auto face = m.face(f);
+        for (size_t c = 0; c < face.size(); ++c)
+        {
+            around[face[c]].push_back(face[(c + face.size() - 1) % face.size()]);
+            around[face[c]].push_back(face[(c + 1) % face.size()]);
+        }
+    }
+    std::vector<Index> expected;
+    std::vector<bool> seen(around.size(), false);
+    for (Index root = 0; root < m.vertex_count(); ++root)
+    {
+        if (seen[root])
+            continue;
+        std::queue<Index> queue;
+        queue.push(root);
+        seen[root] = true;
+        for (; !queue.empty(); queue.pop())
+        {
+            expected.push_back(queue.front());
+            for (const Index j : around[queue.front()])
+                if (!seen[j])
+                {
+                    seen[j] = true;
+                    queue.push(j);
+                }
+        }
+    }
+    CHECK(breadth_first_order(m) == expected);
 }
