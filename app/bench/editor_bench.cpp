@@ -23,6 +23,7 @@
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
 #include "core/recipe/locality_run.h"
+#include "core/recipe/recipe_json.h"
 #include "core/solver/parallel.h"
 
 namespace {
@@ -210,6 +211,7 @@ int main(int argc, char** argv)
     // renders the ID buffer once (the visible vertices); each dab puts the shape back where
     // the stroke began and runs the stroke's steps of the whole recipe with the painted
     // region (the solver restarted for the new map).
+    double dab_ms = 0;
     {
         session.dispatch(cmd::SetTool{ToolKind::Paint});
         session.dispatch(cmd::SetBrushRadius{40});
@@ -233,6 +235,7 @@ int main(int argc, char** argv)
         std::printf("\n| part | samples | median ms | max ms |\n|---|---|---|---|\n");
         print(press);
         print(dab);
+        dab_ms = dab.median();
     }
 
     // --- Live solving: a frame of one step, as the solver's thread and the interface run
@@ -263,8 +266,31 @@ int main(int argc, char** argv)
         for (Index f = 1; f < nf; f += 3)
             combined.normal->faces.indices.push_back(f);
     }
-    for (const auto& [name, recipe] : {std::pair<const char*, Recipe>{"plain", Recipe{}},
-                                       std::pair<const char*, Recipe>{"combined", combined}})
+    // The modes beside the paper's terms, each as an artist turns it on: anchors fading
+    // from the region's border (the combined recipe with a falloff), the volume kept
+    // (plain smoothing with the constraint), and the presets as their files say them
+    // (denoise: bilateral normal smoothing, reweighted, in the precomputation, then
+    // integrated by the normal term, volume kept; relax: Taubin's two steps).
+    Recipe with_falloff = combined;
+    with_falloff.falloff = Falloff{};
+    Recipe with_volume;
+    with_volume.volume = KeepVolume{};
+    const std::string recipes_dir = MESHFAIR_RECIPES_DIR;
+    const std::vector<std::pair<const char*, Recipe>> recipes = {
+        {"plain", Recipe{}},
+        {"combined", combined},
+        {"combined, falloff from the border", with_falloff},
+        {"plain, volume kept", with_volume},
+        {"denoise.json (bilateral normals, volume)", read_recipe(recipes_dir + "/denoise.json")},
+        {"relax.json (Taubin, centroids, volume)", read_recipe(recipes_dir + "/relax.json")}};
+    // Per recipe, for the ratios to the plain step printed at the end.
+    struct Priced
+    {
+        std::string name;
+        double precompute, step, frame;
+    };
+    std::vector<Priced> priced;
+    for (const auto& [name, recipe] : recipes)
     {
         t = Clock::now();
         LocalityRun run(internal_mesh, doc.order, recipe);
@@ -322,6 +348,22 @@ int main(int argc, char** argv)
                         x->max());
         std::printf("| %s | iteration + normal update + upload / peer | %.1fx | |\n", name,
                     required.median() / peer.median());
+        priced.push_back({name, precompute, step.median(), required.median()});
     }
+
+    // Every mode priced against the plain step of the same run (medians).
+    const Priced& plain = priced.front();
+    std::printf("\nthe modes priced against the plain step (%.2f ms; its frame %.2f ms):\n\n",
+                plain.step, plain.frame);
+    std::printf(
+        "| mode | step / plain step | frame / plain frame | precomputation / plain step "
+        "|\n|---|---|---|---|\n");
+    for (const Priced& m : priced)
+        std::printf("| %s | %.2fx | %.2fx | %.0fx |\n", m.name.c_str(), m.step / plain.step,
+                    m.frame / plain.frame, m.precompute / plain.step);
+    std::printf(
+        "| smoothing brush, a dab (its restart and 10 steps of the painted region) | "
+        "%.2fx (%.2fx a step) | | |\n",
+        dab_ms / plain.step, dab_ms / 10 / plain.step);
     return 0;
 }

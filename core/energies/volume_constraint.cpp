@@ -42,6 +42,18 @@ Index find_root(std::vector<Index>& parent, Index v)
     return v;
 }
 
+//! The coefficients of 6 V(x + t g) in t, as sums over faces.
+struct Cubic
+{
+    Scalar c[4] = {0, 0, 0, 0};
+    Cubic& operator+=(const Cubic& o)
+    {
+        for (int d = 0; d < 4; ++d)
+            c[d] += o.c[d];
+        return *this;
+    }
+};
+
 //! 6 V_f: the fan of face f from its first corner.
 Scalar face_volume6(const Mesh& mesh, std::span<const Scalar> x, Index f)
 {
@@ -59,6 +71,18 @@ void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<cons
 {
     // For the fan from corner 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
     out[0] = out[1] = out[2] = 0;
+    const CornerWalk walk(mesh, topology);
+    if (walk.triangles())
+    {
+        // A triangle's one fan triangle: the corner's next vertex crossed with its previous
+        // one, the same products in the same order as the general case below gives.
+        for (const Index corner : topology.corners_of_vertex(i))
+        {
+            const CornerNeighbors n = walk.neighbors(corner, walk.face(corner));
+            add_cross(at(x, n.next), at(x, n.previous), out);
+        }
+        return;
+    }
     for (const Index corner : topology.corners_of_vertex(i))
     {
         const Index f = topology.corner_face[corner];
@@ -179,7 +203,6 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
             first + (count - closed > listed ? ", ..." : "") + "): their volumes are not kept");
     }
     gradient_.assign(3 * static_cast<size_t>(nv), 0);
-    cubic_.assign(4 * faces_.size(), 0);
 }
 
 Index VolumeConstraint::closed_component_count() const
@@ -216,32 +239,34 @@ void VolumeConstraint::project(std::span<Scalar> x)
             volume_gradient6(mesh, topology, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
         });
         // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
-        // expanded in t.
-        // g stays 0 at fixed vertices: only free ones are ever written.
+        // expanded in t, summed in one pass over the faces (each face's four terms, then
+        // the block's sums; no per-face array: four sums over one would read it four
+        // times). g stays 0 at fixed vertices: only free ones are ever written.
         const Index fbegin = face_offsets_[component],
                     fcount = face_offsets_[component + 1] - fbegin;
         const std::span<const Scalar> direction = gradient_;
-        Scalar* cubic = cubic_.data();
-        parallel_for(fcount, [&](Index k) {
-            const std::span<const Index> face = mesh.face(faces_[fbegin + k]);
-            Scalar* out = &cubic[4 * static_cast<std::ptrdiff_t>(fbegin + k)];
-            out[0] = out[1] = out[2] = out[3] = 0;
-            const Scalar *a = at(x, face[0]), *ga = at(direction, face[0]);
-            for (size_t m = 1; m + 1 < face.size(); ++m)
+        const Cubic cubic = deterministic_block_sums<Cubic>(fcount, [&](Index begin, Index end) {
+            Cubic sum;
+            for (Index k = begin; k < end; ++k)
             {
-                const Scalar *b = at(x, face[m]), *c = at(x, face[m + 1]);
-                const Scalar *gb = at(direction, face[m]), *gc = at(direction, face[m + 1]);
-                out[0] += det3(a, b, c);
-                out[1] += det3(ga, b, c) + det3(a, gb, c) + det3(a, b, gc);
-                out[2] += det3(a, gb, gc) + det3(ga, b, gc) + det3(ga, gb, c);
-                out[3] += det3(ga, gb, gc);
+                const std::span<const Index> face = mesh.face(faces_[fbegin + k]);
+                Scalar out[4] = {0, 0, 0, 0};
+                const Scalar *a = at(x, face[0]), *ga = at(direction, face[0]);
+                for (size_t m = 1; m + 1 < face.size(); ++m)
+                {
+                    const Scalar *b = at(x, face[m]), *c = at(x, face[m + 1]);
+                    const Scalar *gb = at(direction, face[m]), *gc = at(direction, face[m + 1]);
+                    out[0] += det3(a, b, c);
+                    out[1] += det3(ga, b, c) + det3(a, gb, c) + det3(a, b, gc);
+                    out[2] += det3(a, gb, gc) + det3(ga, b, gc) + det3(ga, gb, c);
+                    out[3] += det3(ga, gb, gc);
+                }
+                for (int d = 0; d < 4; ++d)
+                    sum.c[d] += out[d];
             }
+            return sum;
         });
-        Scalar coefficient[4];
-        for (int d = 0; d < 4; ++d)
-            coefficient[d] = deterministic_sum(fcount, [&](Index k) {
-                return cubic[4 * static_cast<std::ptrdiff_t>(fbegin + k) + d];
-            });
+        const Scalar* coefficient = cubic.c;
         // Newton from t = 0 on 6 (V(t) - V_0). g is the gradient of 6 V, so the slope at 0
         // is c1 = |g|^2: positive unless no free vertex moves the volume.
         const Scalar goal = 6 * target_[component];

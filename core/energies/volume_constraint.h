@@ -61,7 +61,6 @@ private:
     std::vector<char> closed_;
     std::vector<Scalar> target_;
     std::vector<Scalar> gradient_; //!< 3 #V scratch: g, 0 at fixed vertices
-    std::vector<Scalar> cubic_;    //!< 4 per listed face: its part of V(x + t g)'s coefficients
     std::vector<std::string> notes_;
 };
 
