@@ -70,7 +70,9 @@ void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<cons
                       Index i, Scalar* out)
 {
     // For the fan from corner 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
-    out[0] = out[1] = out[2] = 0;
+    // Summed in a local array and stored once: out may alias x for the compiler, which
+    // would otherwise store and reload it at every product.
+    Scalar sum[3] = {0, 0, 0};
     const CornerWalk walk(mesh, topology);
     if (walk.triangles())
     {
@@ -79,27 +81,29 @@ void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<cons
         for (const Index corner : topology.corners_of_vertex(i))
         {
             const CornerNeighbors n = walk.neighbors(corner, walk.face(corner));
-            add_cross(at(x, n.next), at(x, n.previous), out);
+            add_cross(at(x, n.next), at(x, n.previous), sum);
         }
-        return;
     }
-    for (const Index corner : topology.corners_of_vertex(i))
-    {
-        const Index f = topology.corner_face[corner];
-        const std::span<const Index> face = mesh.face(f);
-        const size_t n = face.size(), p = static_cast<size_t>(corner - mesh.face_offsets[f]);
-        const Scalar* a = at(x, face[0]);
-        if (p == 0)
-            for (size_t m = 1; m + 1 < n; ++m)
-                add_cross(at(x, face[m]), at(x, face[m + 1]), out);
-        else
+    else
+        for (const Index corner : topology.corners_of_vertex(i))
         {
-            if (p + 1 < n) // x_p is the middle corner of triangle (0, p, p+1)
-                add_cross(at(x, face[p + 1]), a, out);
-            if (p >= 2) // x_p is the last corner of triangle (0, p-1, p)
-                add_cross(a, at(x, face[p - 1]), out);
+            const Index f = topology.corner_face[corner];
+            const std::span<const Index> face = mesh.face(f);
+            const size_t n = face.size(), p = static_cast<size_t>(corner - mesh.face_offsets[f]);
+            const Scalar* a = at(x, face[0]);
+            if (p == 0)
+                for (size_t m = 1; m + 1 < n; ++m)
+                    add_cross(at(x, face[m]), at(x, face[m + 1]), sum);
+            else
+            {
+                if (p + 1 < n) // x_p is the middle corner of triangle (0, p, p+1)
+                    add_cross(at(x, face[p + 1]), a, sum);
+                if (p >= 2) // x_p is the last corner of triangle (0, p-1, p)
+                    add_cross(a, at(x, face[p - 1]), sum);
+            }
         }
-    }
+    for (int a = 0; a < 3; ++a)
+        out[a] = sum[a];
 }
 
 VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
