@@ -509,11 +509,13 @@ void Session::check_size(std::span<const Scalar> x, const char* what) const
 
 bool Session::fused() const
 {
-    return recipe_.method == Method::Jacobi && !recipe_.optimal_step && !joint_;
+    // Taubin's method is two such steps, of lambda and of mu.
+    return (recipe_.method == Method::Jacobi || recipe_.method == Method::Taubin) &&
+           !recipe_.optimal_step && !joint_;
 }
 
 template <bool Soft, bool Centroid, bool Normal, bool Energy>
-TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y)
+TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
 {
     TermEnergies energy;
     if constexpr (Centroid)
@@ -549,29 +551,30 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y)
     };
     if (weighted && all_free)
         sweep([=, this](Index begin, Index end) {
-            return fused_range<Soft, Centroid, Normal, true, true, Energy>(x, y, begin, end);
+            return fused_range<Soft, Centroid, Normal, true, true, Energy>(x, y, step, begin, end);
         });
     else if (weighted)
         sweep([=, this](Index begin, Index end) {
-            return fused_range<Soft, Centroid, Normal, true, false, Energy>(x, y, begin, end);
+            return fused_range<Soft, Centroid, Normal, true, false, Energy>(x, y, step, begin, end);
         });
     else if (all_free)
         sweep([=, this](Index begin, Index end) {
-            return fused_range<Soft, Centroid, Normal, false, true, Energy>(x, y, begin, end);
+            return fused_range<Soft, Centroid, Normal, false, true, Energy>(x, y, step, begin, end);
         });
     else
         sweep([=, this](Index begin, Index end) {
-            return fused_range<Soft, Centroid, Normal, false, false, Energy>(x, y, begin, end);
+            return fused_range<Soft, Centroid, Normal, false, false, Energy>(x, y, step, begin,
+                                                                             end);
         });
     return energy;
 }
 
 template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree, bool Energy>
-TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const
+TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index begin,
+                                  Index end) const
 {
     // Locals: the loop keeps them in registers (the stores to y could change the
     // session's members for the compiler, which would then load them again).
-    const Scalar step = recipe_.lambda;
     const Index* free = free_.data();
     const Scalar* normals = normals_.data();
     const Scalar* factor = system_.factor.data();
@@ -673,11 +676,12 @@ TermEnergies Session::fixed_energy(const Scalar* x)
 
 namespace {
 
-using FusedSweep = TermEnergies (Session::*)(const Scalar*, Scalar*);
+using FusedSweep = TermEnergies (Session::*)(const Scalar*, Scalar*, Scalar);
 
 } // namespace
 
-TermEnergies Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy)
+TermEnergies Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy,
+                                 Scalar step)
 {
     // One instance per combination of terms: bit 0 soft, bit 1 centroid, bit 2 normal,
     // bit 3 the energy.
@@ -689,7 +693,7 @@ TermEnergies Session::fused_step(std::span<const Scalar> x, std::span<Scalar> y,
     (std::make_index_sequence<16>{});
     const size_t which =
         (soft_ ? 1 : 0) | (centroid_ ? 2 : 0) | (normal_ ? 4 : 0) | (energy ? 8 : 0);
-    TermEnergies e = (this->*sweeps[which])(x.data(), y.data());
+    TermEnergies e = (this->*sweeps[which])(x.data(), y.data(), step);
     if (energy)
     {
         // The fixed parts after the sweep's (a sum's order: free, then fixed).
@@ -737,11 +741,18 @@ StepInfo Session::step()
     can_revert_ = false;
     if (!fused())
         return general_step(x_);
-    fused_step(x_, next_, false);
+    fused_step(x_, next_, false, recipe_.lambda);
     std::swap(x_, next_);
+    if (recipe_.method == Method::Taubin)
+    {
+        // The second of Taubin's steps, from the first one's positions, as general_step
+        // takes it. The positions before both are gone: nothing to revert to.
+        fused_step(x_, next_, false, recipe_.taubin_mu);
+        std::swap(x_, next_);
+    }
     if (volume_)
         volume_->project(x_);
-    can_revert_ = true;
+    can_revert_ = recipe_.method != Method::Taubin;
     return StepInfo{recipe_.lambda};
 }
 
@@ -750,12 +761,12 @@ StepInfo Session::step(TermEnergies& before)
     if (!has_positions_)
         throw SolverError("Session::step: no positions (call set_positions first)");
     can_revert_ = false;
-    if (!fused())
+    if (!fuses_energy())
     {
         before = energy();
-        return general_step(x_);
+        return step();
     }
-    before = fused_step(x_, next_, true);
+    before = fused_step(x_, next_, true, recipe_.lambda);
     std::swap(x_, next_);
     if (volume_)
         volume_->project(x_);

@@ -144,8 +144,9 @@ public:
     //! energy() to rounding and is the same for any thread count.
     StepInfo step(TermEnergies& before);
     //! True when step(before) finds the energy in the step's own sweep and revert_step()
-    //! can undo a step: the fused Jacobi step (see fused_step).
-    bool fuses_energy() const { return fused(); }
+    //! can undo a step: the fused Jacobi step (see fused_step). Taubin's method fuses its
+    //! two steps but not the energy: the second starts where the first ends.
+    bool fuses_energy() const { return fused() && recipe_.method != Method::Taubin; }
     //! \brief Puts back the kept positions of before the last step: for a run that learns
     //! from step(before) one step late that the step before it had converged.
     //! \throw SolverError unless the last call was a step() or step(before) on the kept
@@ -176,31 +177,32 @@ private:
     //! The merged soft targets for the current hard targets (the falloff moves with pins).
     void update_falloff_targets();
     void factor_blocks();
-    //! True when step() can be fused: the Jacobi method with a fixed lambda and fixed
-    //! normals (no line search, no joint mode).
+    //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
+    //! with a fixed lambda and fixed normals (no line search, no joint mode).
     bool fused() const;
     //! \brief The fused step: one sweep over the free vertices in which each vertex adds
     //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
-    //! solves its 3x3 or scalar system and writes y_i = x_i + lambda dx_i. The same operations as
+    //! solves its 3x3 or scalar system and writes y_i = x_i + step dx_i. The same operations as
     //! general_step without its right-hand-side and displacement arrays and their passes
     //! over memory. With centroid constraints a pass over the constrained faces first
     //! computes each face's residual once (FaceCentroidTerm::face_residuals), which the
     //! face's corners then add (add_vertex_residuals: the same bits as add_vertex_rhs).
     //! x and y must not overlap; y is written at free vertices only.
     //! With energy, returns the energy of x (fused_sweep's parts and fixed_energy's).
-    TermEnergies fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy);
+    TermEnergies fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy,
+                            Scalar step);
     //! fused_step for one combination of active terms, so that the sweep tests nothing
     //! per vertex: the plain Laplacian step is a bare gather loop. (The Jacobi method
     //! solves 3x3 blocks exactly when the normal term is on.)
     //! With Energy, returns the parts of E(x) that the free vertices and the centroid
     //! faces with a free corner own, summed in blocks that depend on the counts only.
     template <bool Soft, bool Centroid, bool Normal, bool Energy>
-    TermEnergies fused_sweep(const Scalar* x, Scalar* y);
+    TermEnergies fused_sweep(const Scalar* x, Scalar* y, Scalar step);
     //! The sweep over free[begin .. end) (AllFree: every vertex free, i = k; NormalWeighted:
     //! the normal term's faces have weights of their own; Energy: the range's owned parts of
     //! the energy are summed and returned).
     template <bool Soft, bool Centroid, bool Normal, bool NormalWeighted, bool AllFree, bool Energy>
-    TermEnergies fused_range(const Scalar* x, Scalar* y, Index begin, Index end) const;
+    TermEnergies fused_range(const Scalar* x, Scalar* y, Scalar step, Index begin, Index end) const;
     //! The parts of E(x) of the vertices of `vertices` (fixed ones: the sweep leaves them
     //! out), summed in blocks.
     TermEnergies vertex_parts(const Scalar* x, std::span<const Index> vertices) const;

@@ -257,7 +257,7 @@ TEST_SUITE("Camera up axis")
         CHECK(glm::length(y.up() - glm::dvec3(0, 1, 0)) < 1e-12);
     }
 
-    TEST_CASE("a view file keeps its up axis; without scene centre and radius it takes the mesh's")
+    TEST_CASE("a view file keeps its up axis, without scene centre and radius it takes the mesh's")
     {
         Camera c;
         c.up_axis = UpAxis::Z;

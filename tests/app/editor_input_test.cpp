@@ -179,7 +179,7 @@ TEST_SUITE("Editor input")
         CHECK(e.renderer.selected_vertices() == e.doc().selected_vertices);
     }
 
-    TEST_CASE("keys typed into a field never trigger a binding; Ctrl+A then typing replaces")
+    TEST_CASE("keys typed into a field never trigger a binding, Ctrl+A then typing replaces")
     {
         const fs::path mesh = bunny_copy();
         Editor e(mesh);
@@ -278,7 +278,7 @@ TEST_SUITE("Editor input")
         CHECK(e.doc().sets[1].normals.empty());
     }
 
-    TEST_CASE("Play runs its steps and stops; each run and each change during one is a step")
+    TEST_CASE("Play runs its steps and stops, each run and each change during one is a step")
     {
         Editor e(bunny_copy());
         e.key("r");
@@ -344,7 +344,7 @@ TEST_SUITE("Editor input")
 
 TEST_SUITE("Editor display")
 {
-    TEST_CASE("the region's ring takes its set's colour; each kind its own colour")
+    TEST_CASE("the region's ring takes its set's colour, each kind its own colour")
     {
         Editor e(bunny_copy());
         e.key("r");

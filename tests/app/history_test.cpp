@@ -77,7 +77,7 @@ void random_action(EditorSession& s, std::mt19937& rng)
 
 TEST_SUITE("History")
 {
-    TEST_CASE("any action sequence undone returns the initial state; redo replays it exactly")
+    TEST_CASE("any action sequence undone returns the initial state, redo replays it exactly")
     {
         for (const unsigned seed : {1u, 2u, 3u, 4u})
         {

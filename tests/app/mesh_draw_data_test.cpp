@@ -73,7 +73,7 @@ TEST_SUITE("MeshDrawData")
         CHECK(d.singular_edges.empty());
     }
 
-    TEST_CASE("an open grid's boundary edges are its perimeter; a fan's shared edge is singular")
+    TEST_CASE("an open grid's boundary edges are its perimeter, a fan's shared edge is singular")
     {
         const MeshDrawData grid = draw_data(test::open_grid(5, 3));
         CHECK(grid.boundary_edges.size() == 2 * (2 * 5 + 2 * 3));
@@ -89,7 +89,7 @@ TEST_SUITE("MeshDrawData")
         CHECK(fan.boundary_edges.size() == 2 * 6);
     }
 
-    TEST_CASE("area vectors are the polygons' areas; vertex normals are unit and outward")
+    TEST_CASE("area vectors are the polygons' areas, vertex normals are unit and outward")
     {
         Mesh grid = test::open_grid(4, 4);
         const MeshDrawData d = draw_data(grid);

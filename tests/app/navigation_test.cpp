@@ -48,7 +48,7 @@ TEST_SUITE("Navigator")
         CHECK(c.distance < start.distance);
     }
 
-    TEST_CASE("Shift + middle drag pans; a second button does not change the drag")
+    TEST_CASE("Shift + middle drag pans, a second button does not change the drag")
     {
         Navigator n;
         Camera c = framed();

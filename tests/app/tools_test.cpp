@@ -190,7 +190,7 @@ TEST_SUITE("Selection tools")
         CHECK(g.vertices().size() == 2); // the other mode's selection is not touched
     }
 
-    TEST_CASE("front-facing only by default; 'through' also takes what is hidden")
+    TEST_CASE("front-facing only by default, 'through' also takes what is hidden")
     {
         // Two grids, one 1 unit behind the other, seen from the front: the back one is hidden.
         Mesh two = test::open_grid(kN, kN);

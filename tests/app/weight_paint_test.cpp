@@ -54,7 +54,7 @@ TEST_SUITE("Weight maps")
         CHECK(reach.vertices.size() == 21);
     }
 
-    TEST_CASE("add, subtract and smooth keep weights in [0, 1]; smoothing keeps a constant map")
+    TEST_CASE("add, subtract and smooth keep weights in [0, 1], smoothing keeps a constant map")
     {
         const Mesh grid = test::open_grid(6, 6);
         const Topology t = build_topology(grid, TopologyParts::Neighbors);

@@ -37,7 +37,7 @@ std::string bunny()
 
 TEST_SUITE("Cli")
 {
-    TEST_CASE("--help and --version succeed; no command is a usage error")
+    TEST_CASE("--help and --version succeed, no command is a usage error")
     {
         const Run help = cli("smooth --help");
         CHECK(help.code == 0);

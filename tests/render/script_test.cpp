@@ -206,7 +206,7 @@ TEST_SUITE("Scripted sessions")
         test::check_golden("script_lasso_faces", app::read_png(lasso.string()));
     }
 
-    TEST_CASE("undo returns the frame of the untouched mesh; redo the frame after the stroke")
+    TEST_CASE("undo returns the frame of the untouched mesh, redo the frame after the stroke")
     {
         const fs::path dir = test::temp_dir();
         REQUIRE(play("[]", dir / "plain.png").code == 0);

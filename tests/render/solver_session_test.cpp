@@ -299,7 +299,7 @@ TEST_SUITE("Live solving")
         CHECK(cli_reproduces(s, b.path, dir));
     }
 
-    TEST_CASE("what does not change the recipe restarts nothing; undoing a pin move puts pins back")
+    TEST_CASE("what does not change the recipe restarts nothing, undoing a pin move puts pins back")
     {
         const fs::path dir = test::temp_dir();
         NoisyBunny b(dir);
@@ -387,7 +387,7 @@ TEST_SUITE("Live solving")
         CHECK(s.document().base_positions != s.document().mesh.positions);
     }
 
-    TEST_CASE("overlaps are resolved by precedence with a note; what cannot run is refused")
+    TEST_CASE("overlaps are resolved by precedence with a note, what cannot run is refused")
     {
         const fs::path dir = test::temp_dir();
         NoisyBunny b(dir);

@@ -58,7 +58,7 @@ Scalar squared_distance(const Vec3& a, const Vec3& b)
 
 TEST_SUITE("BilateralFaceWeights")
 {
-    TEST_CASE("edge neighbours are the dual graph's; vertex neighbours share any corner")
+    TEST_CASE("edge neighbours are the dual graph's, vertex neighbours share any corner")
     {
         const BilateralWeights edge{}, vertex{1, 0.35, 1, FaceNeighborhood::Vertex};
         {
@@ -93,7 +93,7 @@ TEST_SUITE("BilateralFaceWeights")
         }
     }
 
-    TEST_CASE("each weight is the product of the two Gaussians; a crease cuts the weights")
+    TEST_CASE("each weight is the product of the two Gaussians, a crease cuts the weights")
     {
         const Mesh m = folded_grid();
         const Topology t = build_topology(m);
@@ -214,7 +214,7 @@ TEST_SUITE("BilateralFaceWeights")
     }
 
     TEST_CASE(
-        "reweighted smoothing keeps a crease that the paper's uniform smoothing rounds; "
+        "reweighted smoothing keeps a crease that the paper's uniform smoothing rounds, "
         "the robust energy never increases")
     {
         const Mesh clean = folded_grid();

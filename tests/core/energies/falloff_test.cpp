@@ -156,7 +156,7 @@ TEST_SUITE("Falloff")
     }
 
     TEST_CASE(
-        "border anchors hold the vertices near the fixed rest, not the ones further in; "
+        "border anchors hold the vertices near the fixed rest, not the ones further in, "
         "the same bits on one and two threads")
     {
         Mesh m = test::open_grid(kGrid, kGrid);

@@ -120,7 +120,7 @@ TEST_SUITE("ReadObj")
               "t.obj:4:5: face corner '/2' has no vertex index");
     }
 
-    TEST_CASE("a zero-byte file is refused; a file without vertices is an empty mesh")
+    TEST_CASE("a zero-byte file is refused, a file without vertices is an empty mesh")
     {
         CHECK(error_of("") == "t.obj: empty file");
         io::ReadReport report;

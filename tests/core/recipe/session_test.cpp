@@ -132,7 +132,7 @@ TEST_SUITE("Session")
         }
     }
 
-    TEST_CASE("hard and out-of-region vertices stay bit-identical; moved pins sit on targets")
+    TEST_CASE("hard and out-of-region vertices stay bit-identical, moved pins sit on targets")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
@@ -320,7 +320,7 @@ TEST_SUITE("Session")
         }
     }
 
-    TEST_CASE("a topology of the required parts only gives the same bits; fewer are refused")
+    TEST_CASE("a topology of the required parts only gives the same bits, fewer are refused")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology whole = build_topology(m);
@@ -376,7 +376,7 @@ TEST_SUITE("Session")
         CHECK_THROWS_AS(session.set_hard_targets(std::vector<Scalar>{1, 2, 3}), InvalidInputError);
     }
 
-    TEST_CASE("plain gradient descent needs a small step; the Jacobi step does not")
+    TEST_CASE("plain gradient descent needs a small step, the Jacobi step does not")
     {
         // The paper's question: the descent directions differ by 1/n_i. Without it,
         // lambda = 0.5 makes the energy grow on a mesh of valence 5-6.
@@ -400,7 +400,7 @@ TEST_SUITE("Session")
         CHECK(e_jacobi < e_gd);
     }
 
-    TEST_CASE("the tolerance stops early; zero tolerance runs every iteration")
+    TEST_CASE("the tolerance stops early, zero tolerance runs every iteration")
     {
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);

@@ -78,7 +78,7 @@ TEST_SUITE("MeshSelect")
               std::vector<Index>{0, 1, 2});
     }
 
-    TEST_CASE("the boundary of an open grid; a closed cube has none")
+    TEST_CASE("the boundary of an open grid, a closed cube has none")
     {
         const Mesh g = test::open_grid(3, 2);
         const Topology t = topology_of(g);
