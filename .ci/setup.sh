@@ -79,9 +79,10 @@ if [ "$mode" = run ]; then
     exit 0
 fi
 
-# Where the test command's time goes, phase by phase (printed at the end).
+# Where the test command's time goes, phase by phase (printed at the end; the first phase
+# from the script's start).
 times=()
-phase_start=$SECONDS
+phase_start=0
 phase() {
     times+=("$(printf '%-28s %5d s' "$1" $((SECONDS - phase_start)))")
     phase_start=$SECONDS
