@@ -3,6 +3,7 @@
 #include "core/energies/bilateral_face_weights.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include "core/geometry/face_geometry.h"
@@ -105,10 +106,20 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
 {
     const Index nf = mesh_->face_count();
     Scalar* centroids = centroids_.data();
+    // The spatial factors change only when a centroid does: in the two-stage process the
+    // positions stay put through every reweighting, and one exponential in two per
+    // listing is then the one of the last reweighting, bit for bit.
+    std::atomic<bool> moved{!spatial_current_};
     parallel_for(nf, [&](Index f) {
         const Vec3 c = face_centroid(*mesh_, x, f);
-        std::copy(c.begin(), c.end(), &centroids[3 * f]);
+        if (!std::equal(c.begin(), c.end(), &centroids[3 * f]))
+        {
+            std::copy(c.begin(), c.end(), &centroids[3 * f]);
+            moved.store(true, std::memory_order_relaxed);
+        }
     });
+    const bool spatial_due = moved.load();
+    spatial_current_ = true;
     // 1 / 2 sigma^2, or 0 for a spatial factor of 1 (sigma_s = 0: no scale to measure).
     const Scalar spatial_rate = sigma_s_ > 0 ? Scalar(1) / (2 * sigma_s_ * sigma_s_) : 0;
     effective_sigma_r_ = sigma_r_;
@@ -133,8 +144,9 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
         for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
         {
             const Index g = neighbors_[k];
-            spatial_[k] =
-                std::exp(-spatial_rate * squared_distance3(&centroids[3 * f], &centroids[3 * g]));
+            if (spatial_due)
+                spatial_[k] = std::exp(-spatial_rate *
+                                       squared_distance3(&centroids[3 * f], &centroids[3 * g]));
             weights_[k] =
                 spatial_[k] * std::exp(-range_rate * squared_distance3(&u[3 * f], &u[3 * g]));
             sum += weights_[k];

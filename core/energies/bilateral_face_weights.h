@@ -109,7 +109,8 @@ private:
     std::vector<Scalar> spatial_;            //!< s_fg, per CSR entry
     std::vector<Scalar> weights_;            //!< w_fg, per CSR entry
     std::vector<Scalar> weight_sum_;         //!< #F
-    std::vector<Scalar> centroids_;          //!< 3 #F, reweight's scratch
+    std::vector<Scalar> centroids_;          //!< 3 #F, the centroids spatial_ was taken at
+    bool spatial_current_ = false;           //!< spatial_ is of centroids_
     std::vector<Scalar> sample_;             //!< the median's scratch (sampled pairs)
     Scalar sigma_s_ = 0, sigma_r_ = 0, noise_scale_ = 0, effective_sigma_r_ = 0;
     int reweight_every_ = 1;

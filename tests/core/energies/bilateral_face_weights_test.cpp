@@ -134,6 +134,43 @@ TEST_SUITE("BilateralFaceWeights")
         CHECK(along > 0.4);
     }
 
+    TEST_CASE("reweighting keeps the spatial factors while the centroids stay, and only then")
+    {
+        // The spatial factors are kept between reweightings at unchanged positions (the
+        // two-stage process) and taken again when a centroid moves (joint mode): either
+        // way the weights are a fresh object's, bit for bit.
+        const Mesh m = folded_grid();
+        const Topology t = build_topology(m);
+        const BilateralWeights settings{1.5, 0.35, 1, FaceNeighborhood::Vertex};
+        const std::vector<Scalar> u = face_normals(m, m.positions);
+        std::vector<Scalar> moved = m.positions;
+        for (size_t k = 0; k < moved.size(); k += 3)
+            moved[k + 2] += 0.1 * std::sin(static_cast<Scalar>(k));
+        const std::vector<Scalar> u_moved = face_normals(m, moved);
+        const auto same_weights = [&](const BilateralFaceWeights& a,
+                                      const BilateralFaceWeights& b) {
+            for (Index f = 0; f < m.face_count(); ++f)
+            {
+                const auto wa = a.weights_of(f), wb = b.weights_of(f);
+                if (!std::equal(wa.begin(), wa.end(), wb.begin(), wb.end()) ||
+                    a.weight_sum(f) != b.weight_sum(f))
+                    return false;
+            }
+            return true;
+        };
+        BilateralFaceWeights kept(m, t, settings, m.positions);
+        kept.reweight(m.positions, u);
+        kept.reweight(m.positions, u_moved); // the same positions, other normals
+        BilateralFaceWeights fresh(m, t, settings, m.positions);
+        fresh.reweight(m.positions, u_moved);
+        CHECK(same_weights(kept, fresh));
+        kept.reweight(moved, u_moved); // the centroids moved
+        BilateralFaceWeights fresh_moved(m, t, settings, m.positions);
+        fresh_moved.reweight(moved, u_moved);
+        CHECK(same_weights(kept, fresh_moved));
+        CHECK_FALSE(same_weights(kept, fresh)); // the move changed them
+    }
+
     TEST_CASE(
         "the weighted step's numerator is -1/2 dE_U/du (central differences), its "
         "denominator the weights' sum plus mu_f")
