@@ -63,6 +63,18 @@ Run run_steps(const Mesh& mesh, const Topology& topology, const Recipe& recipe, 
     return r;
 }
 
+// run() of `recipe` for 5 iterations from the mesh's positions (hard targets applied).
+std::vector<Scalar> run_five(const Mesh& mesh, const Topology& topology, const Recipe& recipe)
+{
+    Recipe five = recipe;
+    five.iterations = 5;
+    Session session(mesh, topology, five);
+    std::vector<Scalar> y = mesh.positions;
+    session.apply_hard_targets(y);
+    run(session, y);
+    return y;
+}
+
 } // namespace
 
 TEST_SUITE("Parallel")
@@ -291,13 +303,7 @@ TEST_SUITE("Solver")
             }
             const std::span<const Scalar> stepped = d.positions();
             CHECK(same_bits(std::vector<Scalar>(stepped.begin(), stepped.end()), x));
-            Recipe five = recipe;
-            five.iterations = 5;
-            Session c(m, t, five);
-            std::vector<Scalar> y = m.positions;
-            c.apply_hard_targets(y);
-            run(c, y);
-            CHECK(same_bits(y, x));
+            CHECK(same_bits(run_five(m, t, recipe), x));
         }
         // Taubin's method: two fused sweeps a step (lambda, then mu from the new
         // positions), the bits of the general path's two passes, with every combination
@@ -327,13 +333,7 @@ TEST_SUITE("Solver")
                 CHECK(same_bits(std::vector<Scalar>(kept.begin(), kept.end()), x));
             }
             CHECK(!same_bits(x, m.positions));
-            Recipe five = recipe;
-            five.iterations = 5;
-            Session c(m, t, five);
-            std::vector<Scalar> y = m.positions;
-            c.apply_hard_targets(y);
-            run(c, y);
-            CHECK(same_bits(y, x));
+            CHECK(same_bits(run_five(m, t, recipe), x));
         }
         // A scan in millimetres far from the origin: the vertex parts are taken about the
         // mesh's middle, so the energy keeps its digits.
