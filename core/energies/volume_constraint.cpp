@@ -54,6 +54,55 @@ struct Cubic
     }
 };
 
+//! Triangles taken kLanes at a time, their corners gathered lane by lane so that the
+//! determinants run on whole vectors; each lane computes what the face-by-face loop of
+//! VolumeConstraint::project computes, in the same order, and the lanes are summed in
+//! face order: the same bits.
+constexpr Index kLanes = 4;
+
+//! det3 of lane l of three gathered points (the same products in the same order).
+Scalar lane_det3(const Scalar (&a)[3][kLanes], const Scalar (&b)[3][kLanes],
+                 const Scalar (&c)[3][kLanes], int l)
+{
+    return a[0][l] * (b[1][l] * c[2][l] - b[2][l] * c[1][l]) -
+           a[1][l] * (b[0][l] * c[2][l] - b[2][l] * c[0][l]) +
+           a[2][l] * (b[0][l] * c[1][l] - b[1][l] * c[0][l]);
+}
+
+//! Adds the cubic's four coefficients of the kLanes triangles listed at `faces`.
+void add_triangle_cubics(const Mesh& mesh, std::span<const Scalar> x, std::span<const Scalar> g,
+                         const Index* faces, Cubic& sum)
+{
+    // p[0..2]: the corners' positions, p[3..5]: their directions; [axis][lane].
+    Scalar p[6][3][kLanes];
+    const Index* corners = mesh.face_vertices.data();
+    for (int l = 0; l < kLanes; ++l)
+        for (int c = 0; c < 3; ++c)
+        {
+            const Scalar* xc = at(x, corners[3 * static_cast<std::ptrdiff_t>(faces[l]) + c]);
+            const Scalar* gc = at(g, corners[3 * static_cast<std::ptrdiff_t>(faces[l]) + c]);
+            for (int axis = 0; axis < 3; ++axis)
+            {
+                p[c][axis][l] = xc[axis];
+                p[3 + c][axis][l] = gc[axis];
+            }
+        }
+    Scalar out[4][kLanes];
+    for (int l = 0; l < kLanes; ++l)
+    {
+        // 0 + the value, as the face loop's sums start at 0.
+        out[0][l] = Scalar(0) + lane_det3(p[0], p[1], p[2], l);
+        out[1][l] = Scalar(0) + (lane_det3(p[3], p[1], p[2], l) + lane_det3(p[0], p[4], p[2], l) +
+                                 lane_det3(p[0], p[1], p[5], l));
+        out[2][l] = Scalar(0) + (lane_det3(p[0], p[4], p[5], l) + lane_det3(p[3], p[1], p[5], l) +
+                                 lane_det3(p[3], p[4], p[2], l));
+        out[3][l] = Scalar(0) + lane_det3(p[3], p[4], p[5], l);
+    }
+    for (int l = 0; l < kLanes; ++l)
+        for (int d = 0; d < 4; ++d)
+            sum.c[d] += out[d][l];
+}
+
 //! 6 V_f: the fan of face f from its first corner.
 Scalar face_volume6(const Mesh& mesh, std::span<const Scalar> x, Index f)
 {
@@ -249,9 +298,15 @@ void VolumeConstraint::project(std::span<Scalar> x)
         const Index fbegin = face_offsets_[component],
                     fcount = face_offsets_[component + 1] - fbegin;
         const std::span<const Scalar> direction = gradient_;
+        const bool triangles =
+            mesh.face_vertices.size() == 3 * static_cast<size_t>(mesh.face_count());
         const Cubic cubic = deterministic_block_sums<Cubic>(fcount, [&](Index begin, Index end) {
             Cubic sum;
-            for (Index k = begin; k < end; ++k)
+            Index k = begin;
+            if (triangles)
+                for (; k + kLanes <= end; k += kLanes)
+                    add_triangle_cubics(mesh, x, direction, &faces_[fbegin + k], sum);
+            for (; k < end; ++k)
             {
                 const std::span<const Index> face = mesh.face(faces_[fbegin + k]);
                 Scalar out[4] = {0, 0, 0, 0};
