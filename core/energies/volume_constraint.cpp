@@ -115,14 +115,17 @@ Scalar face_volume6(const Mesh& mesh, std::span<const Scalar> x, Index f)
 
 } // namespace
 
-void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x,
-                      Index i, Scalar* out)
+namespace {
+
+//! volume_gradient6 with the mesh's corner walk made once by the caller (project() calls it
+//! for every free vertex of every step).
+void gradient6(const Mesh& mesh, const Topology& topology, const CornerWalk& walk,
+               std::span<const Scalar> x, Index i, Scalar* out)
 {
     // For the fan from corner 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
     // Summed in a local array and stored once: out may alias x for the compiler, which
     // would otherwise store and reload it at every product.
     Scalar sum[3] = {0, 0, 0};
-    const CornerWalk walk(mesh, topology);
     if (walk.triangles())
     {
         // A triangle's one fan triangle: the corner's next vertex crossed with its previous
@@ -153,6 +156,14 @@ void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<cons
         }
     for (int a = 0; a < 3; ++a)
         out[a] = sum[a];
+}
+
+} // namespace
+
+void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x,
+                      Index i, Scalar* out)
+{
+    gradient6(mesh, topology, CornerWalk(mesh, topology), x, i, out);
 }
 
 VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
@@ -278,6 +289,7 @@ void VolumeConstraint::project(std::span<Scalar> x)
 {
     const Mesh& mesh = *mesh_;
     const Topology& topology = *topology_;
+    const CornerWalk walk(mesh, topology);
     Scalar* g = gradient_.data();
     for (Index component = 0; component < component_count(); ++component)
     {
@@ -289,7 +301,7 @@ void VolumeConstraint::project(std::span<Scalar> x)
         // 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
         parallel_for(vcount, [&](Index k) {
             const Index i = vertices_[vbegin + k];
-            volume_gradient6(mesh, topology, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
+            gradient6(mesh, topology, walk, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
         });
         // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
         // expanded in t, summed in one pass over the faces (each face's four terms, then
@@ -298,12 +310,10 @@ void VolumeConstraint::project(std::span<Scalar> x)
         const Index fbegin = face_offsets_[component],
                     fcount = face_offsets_[component + 1] - fbegin;
         const std::span<const Scalar> direction = gradient_;
-        const bool triangles =
-            mesh.face_vertices.size() == 3 * static_cast<size_t>(mesh.face_count());
         const Cubic cubic = deterministic_block_sums<Cubic>(fcount, [&](Index begin, Index end) {
             Cubic sum;
             Index k = begin;
-            if (triangles)
+            if (walk.triangles())
                 for (; k + kLanes <= end; k += kLanes)
                     add_triangle_cubics(mesh, x, direction, &faces_[fbegin + k], sum);
             for (; k < end; ++k)
