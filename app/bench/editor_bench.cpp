@@ -212,11 +212,14 @@ int main(int argc, char** argv)
     // the stroke began and runs the stroke's steps of the whole recipe with the painted
     // region (the solver restarted for the new map).
     double dab_ms = 0;
+    const int dab_steps = session.tool_settings().paint.steps;
     {
         session.dispatch(cmd::SetTool{ToolKind::Paint});
         session.dispatch(cmd::SetBrushRadius{40});
         Series press{"smoothing brush: the press (visible vertices, first dab)", {}};
-        Series dab{"smoothing brush: a mouse move with one dab (10 steps)", {}};
+        Series dab{
+            "smoothing brush: a mouse move with one dab (" + std::to_string(dab_steps) + " steps)",
+            {}};
         for (int rep = 0; rep < reps; ++rep)
         {
             session.camera().orbit(OrbitStyle::Turntable, 0, 0, 2, 0, width, height);
@@ -362,8 +365,8 @@ int main(int argc, char** argv)
         std::printf("| %s | %.2fx | %.2fx | %.0fx |\n", m.name.c_str(), m.step / plain.step,
                     m.frame / plain.frame, m.precompute / plain.step);
     std::printf(
-        "| smoothing brush, a dab (its restart and 10 steps of the painted region) | "
+        "| smoothing brush, a dab (its restart and %d steps of the painted region) | "
         "%.2fx (%.2fx a step) | | |\n",
-        dab_ms / plain.step, dab_ms / 10 / plain.step);
+        dab_steps, dab_ms / plain.step, dab_ms / dab_steps / plain.step);
     return 0;
 }
