@@ -189,27 +189,19 @@ void set_clipboard(void* window, const char* text)
     glfwSetClipboardString(static_cast<GLFWwindow*>(window), text);
 }
 
-// The widgets' rectangles in window pixels, one per line, rewritten when they change.
+// The widgets' rectangles in window pixels, one per line, after a first line "#frame N"
+// with the number of the frame that wrote it: rewritten every frame, so that a driver can
+// tell that frames were drawn since it last looked and the layout it reads has settled.
 void write_widget_map(const std::string& path, const EditorUi& ui, const FrameSize& size,
-                      WidgetMap& written)
+                      long frame)
 {
-    WidgetMap now;
-    for (const std::string& name : ui.widget_names())
-        now[name] = *ui.widget(name);
-    const auto same = [](const WidgetRect& a, const WidgetRect& b) {
-        return a.x0 == b.x0 && a.y0 == b.y0 && a.x1 == b.x1 && a.y1 == b.y1;
-    };
-    if (now.size() == written.size() &&
-        std::equal(now.begin(), now.end(), written.begin(), [&](const auto& a, const auto& b) {
-            return a.first == b.first && same(a.second, b.second);
-        }))
-        return;
     const double sx = double(size.window_width) / std::max(size.framebuffer_width, 1);
     const double sy = double(size.window_height) / std::max(size.framebuffer_height, 1);
-    std::string text;
+    std::string text = "#frame\t" + std::to_string(frame) + "\n";
     char line[64];
-    for (const auto& [name, r] : now)
+    for (const std::string& name : ui.widget_names())
     {
+        const WidgetRect r = *ui.widget(name);
         std::snprintf(line, sizeof line, "\t%d\t%d\t%d\t%d\n", int(r.x0 * sx), int(r.y0 * sy),
                       int(r.x1 * sx), int(r.y1 * sy));
         text += name + line;
@@ -217,7 +209,6 @@ void write_widget_map(const std::string& path, const EditorUi& ui, const FrameSi
     try
     {
         io::write_file_atomically(path, text);
-        written = std::move(now);
     }
     catch (const std::exception&)
     {
@@ -301,7 +292,7 @@ void run_window(const WindowOptions& options)
     EditorSession& session = *editor->session;
     if (options.trace)
         session.set_trace(stdout);
-    WidgetMap written; // the widget map as last written
+    long frames = 0; // drawn so far
     {
         EditorState& state = session.state();
         state.renderer_name = renderer_name;
@@ -343,7 +334,7 @@ void run_window(const WindowOptions& options)
             session.dispatch(cmd::OpenMesh{path});
         session.autosave();
         if (!options.widget_map.empty())
-            write_widget_map(options.widget_map, editor->frame->ui(), size, written);
+            write_widget_map(options.widget_map, editor->frame->ui(), size, ++frames);
         session.draw();
         if (std::optional<std::string> shot = std::exchange(session.state().screenshot, {}))
             editor->screenshot(*shot); // the view without the panels

@@ -131,17 +131,40 @@ widget_at() {
             [ "$at" != "$before" ] && break
         done
     done
-    # Still where it was a few frames later: a layout that moves (a widget shown above it,
-    # the panel scrolled) has settled before the hand goes there.
+    # Settled: the hand moves over it, and the frames drawn after two such moves show it
+    # where it was (a layout that moves - a widget shown above it, the panel scrolled - has
+    # settled before the hand presses; a slow frame is waited for, not guessed at).
+    local again settled=0 nudge=0
     for _ in $(seq 1 20); do
-        sleep 0.25
-        local again
+        local x=${at%% *} y=${at#* } frame
+        frame=$(frame_number)
+        xdotool mousemove --window "$win" $((x + nudge)) "$y"
+        nudge=$((1 - nudge)) # a move the window sees each time
+        wait_frame_after "$frame"
         again=$(widget_centre "$label")
-        [ "$again" = "$at" ] && break
-        at=$again
+        if [ -n "$again" ] && [ "$again" = "$at" ]; then
+            settled=$((settled + 1))
+            [ "$settled" -ge 2 ] && break
+        else
+            settled=0
+            at=$again
+        fi
     done
     [ -n "$at" ] || fail "no widget '$label' on screen"
     echo "$at"
+}
+
+# The number of the frame that last wrote the widget map.
+frame_number() { awk -F'\t' '$1 == "#frame" { print $2 }' "$map"; }
+
+# wait_frame_after N: until a frame after frame N has been drawn (10 s).
+wait_frame_after() {
+    for _ in $(seq 1 200); do
+        [ "$(frame_number)" -gt "$1" ] 2>/dev/null && return 0
+        alive "waiting for a frame"
+        sleep 0.05
+    done
+    fail "no frame drawn in 10 s after frame $1"
 }
 
 widget_centre() {
