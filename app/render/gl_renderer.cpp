@@ -278,9 +278,12 @@ void GlRenderer::update_geometry(std::span<const float> positions, std::span<con
                           std::to_string(face_areas.size()) + " face values for a mesh of " +
                           std::to_string(positions_.size() / 3) + " vertices and " +
                           std::to_string(face_areas_.size() / 3) + " faces");
-    // The positions are kept for visibility(); the GPU gets the three arrays as given.
+    // The positions are kept for visibility(); the GPU gets the arrays as given, the face
+    // area vectors only while flat shading reads them (they are half the bytes of a frame's
+    // upload): else draw() brings them up to date when flat shading is turned on.
     std::copy(positions.begin(), positions.end(), positions_.begin());
-    upload_geometry(positions_, normals, face_areas);
+    upload_geometry(positions_, normals, flat_drawn_ ? face_areas : std::span<const float>{});
+    face_areas_current_ = flat_drawn_;
     check("update_geometry");
 }
 
@@ -293,7 +296,11 @@ void GlRenderer::upload_geometry(std::span<const float> positions, std::span<con
     };
     sub(GL_ARRAY_BUFFER, gl_->positions, positions);
     sub(GL_ARRAY_BUFFER, gl_->normals, normals);
-    sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas);
+    if (!face_areas.empty())
+    {
+        sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas);
+        ++face_area_uploads_;
+    }
 }
 
 void GlRenderer::set_vertex_colors(std::span<const float> rgb)
@@ -369,7 +376,20 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     // The surface, pushed back a little so that edges and points drawn on it win.
     gl_->surface.use();
     set_matrices(gl_->surface, view, projection);
-    glUniform1i(gl_->surface["u_flat"], o.shading == Shading::Flat);
+    flat_drawn_ = o.shading == Shading::Flat;
+    if (flat_drawn_ && !face_areas_current_)
+    {
+        // Flat shading turned on after updates that left the area vectors out: from the
+        // positions the GPU has, once.
+        face_area_vectors(positions_, connectivity_, face_areas_);
+        glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_area);
+        glBufferSubData(GL_TEXTURE_BUFFER, 0,
+                        static_cast<GLsizeiptr>(face_areas_.size() * sizeof(float)),
+                        face_areas_.data());
+        ++face_area_uploads_;
+        face_areas_current_ = true;
+    }
+    glUniform1i(gl_->surface["u_flat"], flat_drawn_);
     glUniform1i(gl_->surface["u_back_tint"], o.back_face_tint);
     glUniform1i(gl_->surface["u_orthographic"], camera.projection == Projection::Orthographic);
     glUniform1i(gl_->surface["u_triangle_face"], 0);

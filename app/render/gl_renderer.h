@@ -38,12 +38,15 @@ public:
     //! How many GPU buffers were (re)allocated, counted at the one place that allocates them
     //! (for tests: updating positions must not).
     int buffer_allocations() const { return buffer_allocations_; }
+    //! How many times the face area vectors went to the GPU (for tests).
+    int face_area_uploads() const { return face_area_uploads_; }
 
 private:
     struct Gl; // the GL objects, defined where GL is included
     //! Draws the ID buffer of a `width` x `height` view into the pick framebuffer, left bound.
     void render_ids(const Camera& camera, int width, int height);
-    //! Re-uploads the positions, normals and face area vectors in place (no allocation).
+    //! Re-uploads the positions, normals and face area vectors (unless empty) in place (no
+    //! allocation).
     void upload_geometry(std::span<const float> positions, std::span<const float> normals,
                          std::span<const float> face_areas);
     std::unique_ptr<Gl> gl_;
@@ -61,7 +64,10 @@ private:
         int first, count; // in points of the glyph buffer
     };
     std::vector<GlyphRange> glyphs_;
-    int buffer_allocations_ = 0;
+    int buffer_allocations_ = 0, face_area_uploads_ = 0;
+    // Whether the last draw was flat-shaded (update_geometry then uploads the face area
+    // vectors), and whether the GPU's area vectors belong to its positions.
+    bool flat_drawn_ = false, face_areas_current_ = true;
     size_t color_bytes_ = 0, glyph_bytes_ = 0; // what the colour and glyph buffers hold
 };
 

@@ -45,7 +45,11 @@ MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology)
     return d;
 }
 
-void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<float> out)
+namespace {
+
+// In double precision whatever the coordinates' type.
+template <typename Coordinate>
+void area_vectors(std::span<const Coordinate> x, const Mesh& mesh, std::span<float> out)
 {
     if (mesh.face_vertices.size() == 3 * static_cast<size_t>(mesh.face_count()))
     {
@@ -57,8 +61,8 @@ void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<fl
             const Index* c = corners + 3 * static_cast<size_t>(f);
             for (int k = 0; k < 3; ++k)
             {
-                const double* p = &x[3 * static_cast<size_t>(c[k])];
-                const double* q = &x[3 * static_cast<size_t>(c[k == 2 ? 0 : k + 1])];
+                const Coordinate* p = &x[3 * static_cast<size_t>(c[k])];
+                const Coordinate* q = &x[3 * static_cast<size_t>(c[k == 2 ? 0 : k + 1])];
                 n[0] += (p[1] - q[1]) * (p[2] + q[2]);
                 n[1] += (p[2] - q[2]) * (p[0] + q[0]);
                 n[2] += (p[0] - q[0]) * (p[1] + q[1]);
@@ -74,8 +78,8 @@ void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<fl
         // Corner k with corner k + 1, the last with the first: no division per corner (this
         // runs for every corner of every frame of live solving).
         const auto add = [&](Index i, Index j) {
-            const double* p = &x[3 * static_cast<size_t>(i)];
-            const double* q = &x[3 * static_cast<size_t>(j)];
+            const Coordinate* p = &x[3 * static_cast<size_t>(i)];
+            const Coordinate* q = &x[3 * static_cast<size_t>(j)];
             n[0] += (p[1] - q[1]) * (p[2] + q[2]);
             n[1] += (p[2] - q[2]) * (p[0] + q[0]);
             n[2] += (p[0] - q[0]) * (p[1] + q[1]);
@@ -86,6 +90,18 @@ void face_area_vectors(std::span<const Scalar> x, const Mesh& mesh, std::span<fl
         for (int a = 0; a < 3; ++a)
             out[3 * static_cast<size_t>(f) + a] = static_cast<float>(0.5 * n[a]);
     });
+}
+
+} // namespace
+
+void face_area_vectors(std::span<const Scalar> positions, const Mesh& mesh, std::span<float> out)
+{
+    area_vectors(positions, mesh, out);
+}
+
+void face_area_vectors(std::span<const float> positions, const Mesh& mesh, std::span<float> out)
+{
+    area_vectors(positions, mesh, out);
 }
 
 void vertex_normals(std::span<const Index> offsets, std::span<const Index> faces,

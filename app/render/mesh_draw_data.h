@@ -39,6 +39,8 @@ MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology);
 //! corners, whose length is the area of a planar polygon and which a non-planar one
 //! averages), as floats, 3 #F, computed face by face on the threads.
 void face_area_vectors(std::span<const Scalar> positions, const Mesh& mesh, std::span<float> out);
+//! The same from float coordinates (the GPU's copy), the products still in double.
+void face_area_vectors(std::span<const float> positions, const Mesh& mesh, std::span<float> out);
 
 //! \brief Unit vertex normals, 3 #V: the normalized sum of the area vectors of the faces
 //! around each vertex (area-weighted), (0, 0, 0) where that sum vanishes (isolated or

@@ -104,7 +104,8 @@ public:
     //! \pre positions has 3 #V entries of the mesh last given to set_mesh.
     virtual void update_positions(std::span<const Scalar> positions) = 0;
     //! \brief New positions with their normals already computed (by the solver's thread):
-    //! floats, 3 #V positions and vertex normals and 3 #F face area vectors. Uploads only.
+    //! floats, 3 #V positions and vertex normals and 3 #F face area vectors. Uploads only
+    //! (the area vectors only while flat shading shows them).
     virtual void update_geometry(std::span<const float> positions, std::span<const float> normals,
                                  std::span<const float> face_areas) = 0;
     //! RGB in [0, 1], 3 #V floats; empty clears the overlay.

@@ -7,6 +7,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/render/render_error.h"
 #include "tests/helpers.h"
@@ -201,6 +202,54 @@ TEST_SUITE("GlRenderer")
         CHECK(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y).hit == false);
         r.set_mesh(s.document.mesh, s.document.draw_data); // a new connectivity does allocate
         CHECK(r.buffer_allocations() == 2 * allocations);
+    }
+
+    TEST_CASE(
+        "the face area vectors go up only while flat shading shows them, and a flat "
+        "frame after smooth ones shows the shape of the last update")
+    {
+        test::offscreen_context(kWidth, kHeight);
+        Document d = make_document(test::open_grid(6, 3), "bumps.obj");
+        Camera camera;
+        camera.frame(d.box, double(kWidth) / kHeight);
+        // Bumps in z: faces of many orientations, each its own flat shade.
+        std::vector<Scalar> moved = d.mesh.positions;
+        for (size_t i = 0; i < moved.size(); i += 3)
+            moved[i + 2] = 0.3 * std::sin(2.0 * moved[i]) * std::cos(3.0 * moved[i + 1]);
+        std::vector<float> positions(moved.size()), normals(moved.size()),
+            areas(3 * static_cast<size_t>(d.mesh.face_count()));
+        positions_to_float(moved, positions);
+        face_area_vectors(moved, d.mesh, areas);
+        vertex_normals(d.draw_data, areas, normals);
+        const ViewRect whole = ViewRect::whole(kWidth, kHeight);
+        DisplayOptions smooth, flat;
+        flat.shading = Shading::Flat;
+
+        GlRenderer r;
+        r.set_mesh(d.mesh, d.draw_data);
+        r.draw(camera, smooth, whole);
+        const int uploads = r.face_area_uploads();
+        r.update_geometry(positions, normals, areas); // smooth shading: positions and normals
+        CHECK(r.face_area_uploads() == uploads);
+        r.draw(camera, smooth, whole);
+        const Image smooth_image = r.read_pixels(kWidth, kHeight);
+        CHECK(r.face_area_uploads() == uploads);
+        r.draw(camera, flat, whole); // turned on: the area vectors of the moved shape, once
+        CHECK(r.face_area_uploads() == uploads + 1);
+        const Image flat_image = r.read_pixels(kWidth, kHeight);
+        r.draw(camera, flat, whole);
+        CHECK(r.face_area_uploads() == uploads + 1);
+        r.update_geometry(positions, normals, areas); // flat shown: uploaded with the rest
+        CHECK(r.face_area_uploads() == uploads + 2);
+
+        // The same picture as a renderer given the moved shape whole, and not the smooth one.
+        GlRenderer reference;
+        reference.set_mesh(d.mesh, d.draw_data);
+        reference.update_positions(moved);
+        reference.draw(camera, flat, whole);
+        const Image expected = reference.read_pixels(kWidth, kHeight);
+        CHECK(compare_images(flat_image, expected, 1).pixels_over_tolerance == 0);
+        CHECK(compare_images(flat_image, smooth_image, 8).fraction_over_tolerance > 0.02);
     }
 
     TEST_CASE("positions or colours of the wrong size are refused")
