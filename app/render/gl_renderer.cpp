@@ -282,8 +282,8 @@ void GlRenderer::update_geometry(std::span<const float> positions, std::span<con
     // area vectors only while flat shading reads them (they are half the bytes of a frame's
     // upload): else draw() brings them up to date when flat shading is turned on.
     std::copy(positions.begin(), positions.end(), positions_.begin());
+    face_areas_current_ = false; // until uploaded with these positions
     upload_geometry(positions_, normals, flat_drawn_ ? face_areas : std::span<const float>{});
-    face_areas_current_ = flat_drawn_;
     check("update_geometry");
 }
 
@@ -297,10 +297,16 @@ void GlRenderer::upload_geometry(std::span<const float> positions, std::span<con
     sub(GL_ARRAY_BUFFER, gl_->positions, positions);
     sub(GL_ARRAY_BUFFER, gl_->normals, normals);
     if (!face_areas.empty())
-    {
-        sub(GL_TEXTURE_BUFFER, gl_->face_area, face_areas);
-        ++face_area_uploads_;
-    }
+        upload_face_areas(face_areas);
+}
+
+void GlRenderer::upload_face_areas(std::span<const float> face_areas)
+{
+    glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_area);
+    glBufferSubData(GL_TEXTURE_BUFFER, 0,
+                    static_cast<GLsizeiptr>(face_areas.size() * sizeof(float)), face_areas.data());
+    ++face_area_uploads_;
+    face_areas_current_ = true;
 }
 
 void GlRenderer::set_vertex_colors(std::span<const float> rgb)
@@ -382,12 +388,7 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
         // Flat shading turned on after updates that left the area vectors out: from the
         // positions the GPU has, once.
         face_area_vectors(positions_, connectivity_, face_areas_);
-        glBindBuffer(GL_TEXTURE_BUFFER, gl_->face_area);
-        glBufferSubData(GL_TEXTURE_BUFFER, 0,
-                        static_cast<GLsizeiptr>(face_areas_.size() * sizeof(float)),
-                        face_areas_.data());
-        ++face_area_uploads_;
-        face_areas_current_ = true;
+        upload_face_areas(face_areas_);
     }
     glUniform1i(gl_->surface["u_flat"], flat_drawn_);
     glUniform1i(gl_->surface["u_back_tint"], o.back_face_tint);

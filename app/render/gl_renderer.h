@@ -49,6 +49,8 @@ private:
     //! allocation).
     void upload_geometry(std::span<const float> positions, std::span<const float> normals,
                          std::span<const float> face_areas);
+    //! Re-uploads the face area vectors in place; they are then those of the positions.
+    void upload_face_areas(std::span<const float> face_areas);
     std::unique_ptr<Gl> gl_;
     Mesh connectivity_; // the faces of the mesh set last (positions not kept)
     std::uint32_t vertex_count_ = 0, face_count_ = 0;
