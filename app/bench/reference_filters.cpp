@@ -113,7 +113,7 @@ void bilateral_normal_filter(const Mesh& mesh, const Topology& topology, std::sp
             Scalar move[3] = {0, 0, 0};
             for (const Index corner : corners)
             {
-                const Index f = topology.corner_face[corner];
+                const Index f = topology.face_of_corner(corner);
                 const Scalar* n = &normals[3 * f];
                 const Scalar offset = n[0] * (c[3 * f] - x[3 * i]) +
                                       n[1] * (c[3 * f + 1] - x[3 * i + 1]) +

@@ -41,7 +41,7 @@ MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology)
     d.vertex_face_offsets = topology.vertex_corner_offsets;
     d.vertex_faces.resize(topology.vertex_corners.size());
     for (size_t k = 0; k < topology.vertex_corners.size(); ++k)
-        d.vertex_faces[k] = topology.corner_face[static_cast<size_t>(topology.vertex_corners[k])];
+        d.vertex_faces[k] = topology.face_of_corner(topology.vertex_corners[k]);
     return d;
 }
 

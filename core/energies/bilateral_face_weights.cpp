@@ -36,7 +36,7 @@ void vertex_neighborhoods(const Mesh& mesh, const Topology& topology, std::vecto
         for (const Index v : mesh.face(f))
             for (const Index corner : topology.corners_of_vertex(v))
             {
-                const Index g = topology.corner_face[corner];
+                const Index g = topology.face_of_corner(corner);
                 if (g != f && seen[g] != f + 1)
                 {
                     seen[g] = f + 1;

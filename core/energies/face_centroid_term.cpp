@@ -92,7 +92,7 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
     for (Index i = 0; i < topology_->vertex_count; ++i)
         for (const Index c : topology_->corners_of_vertex(i))
         {
-            const Index f = topology_->corner_face[c];
+            const Index f = topology_->face_of_corner(c);
             if (!constrained_[f])
                 continue;
             const Scalar n = mesh_->face_size(f);

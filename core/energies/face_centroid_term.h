@@ -67,7 +67,7 @@ public:
     {
         for (const Index c : topology_->corners_of_vertex(i))
         {
-            const Index f = topology_->corner_face[c];
+            const Index f = topology_->face_of_corner(c);
             if (!constrained_[f])
                 continue;
             Scalar residual[3];

@@ -58,7 +58,7 @@ void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const 
         Scalar* B = &block[6 * i];
         for (const Index c : topology_->corners_of_vertex(i))
         {
-            const Index f = topology_->corner_face[c];
+            const Index f = topology_->face_of_corner(c);
             if (!constrained_[f])
                 continue;
             const Scalar w = 2 * face_weight(f);

@@ -139,7 +139,7 @@ void gradient6(const Mesh& mesh, const Topology& topology, const CornerWalk& wal
     else
         for (const Index corner : topology.corners_of_vertex(i))
         {
-            const Index f = topology.corner_face[corner];
+            const Index f = topology.face_of_corner(corner);
             const std::span<const Index> face = mesh.face(f);
             const size_t n = face.size(), p = static_cast<size_t>(corner - mesh.face_offsets[f]);
             const Scalar* a = at(x, face[0]);

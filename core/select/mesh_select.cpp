@@ -71,7 +71,7 @@ SelectionMask vertex_touches(const Topology& t, const SelectionMask& faces, bool
         bool any_face = false, every_face = true;
         for (Index k = t.vertex_corner_offsets[i]; k < t.vertex_corner_offsets[i + 1]; ++k)
         {
-            const bool s = faces[static_cast<size_t>(t.corner_face[t.vertex_corners[k]])] != 0;
+            const bool s = faces[static_cast<size_t>(t.face_of_corner(t.vertex_corners[k]))] != 0;
             any_face = any_face || s;
             every_face = every_face && s;
         }

@@ -110,11 +110,14 @@ constexpr auto itself = [](Index v) { return v; };
 void build_corners(const Mesh& mesh, Topology& t)
 {
     const Index corners = mesh.corner_count();
-    t.corner_face.resize(corners);
-    parallel_for(t.face_count, [&](Index f) {
-        std::fill(t.corner_face.begin() + mesh.face_offsets[f],
-                  t.corner_face.begin() + mesh.face_offsets[f + 1], f);
-    });
+    if (!t.triangles)
+    {
+        t.corner_face.resize(corners);
+        parallel_for(t.face_count, [&](Index f) {
+            std::fill(t.corner_face.begin() + mesh.face_offsets[f],
+                      t.corner_face.begin() + mesh.face_offsets[f + 1], f);
+        });
+    }
     std::vector<Index> count(t.vertex_count, 0);
     for (Index c = 0; c < corners; ++c)
         ++count[mesh.face_vertices[c]];
@@ -222,7 +225,7 @@ void build_edges(const Mesh& mesh, Topology& t)
     face_count = {};
     t.edge_faces.resize(t.edge_face_offsets.back());
     parallel_for(corners, [&](Index c) {
-        t.edge_faces[t.edge_face_offsets[t.corner_edge[c]] + place[c]] = t.corner_face[c];
+        t.edge_faces[t.edge_face_offsets[t.corner_edge[c]] + place[c]] = t.face_of_corner(c);
     });
 }
 
@@ -314,6 +317,8 @@ Topology build_topology(const Mesh& mesh, TopologyParts parts)
     Topology t;
     t.vertex_count = mesh.vertex_count();
     t.face_count = mesh.face_count();
+    // Every face at least a triangle (validate_mesh): 3 #F corners means all triangles.
+    t.triangles = mesh.face_vertices.size() == 3 * static_cast<size_t>(t.face_count);
     t.parts = parts;
     // The corners are the base of every other part. V(i) and the edge counts come from
     // the edges when they are built anyway, else from the corners (no edge hash).

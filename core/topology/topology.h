@@ -24,7 +24,7 @@ enum class EdgeKind
 enum class TopologyParts : unsigned
 {
     Neighbors = 1, //!< V(i): vertex_offsets, vertex_neighbors
-    Corners = 2,   //!< corners of each vertex and corner_face
+    Corners = 2,   //!< corners of each vertex and (unless all triangles) corner_face
     Edges = 4,     //!< the edge list, corner_edge and F(e)
     Dual = 8,      //!< E* and N*(f)
     All = 15
@@ -59,7 +59,10 @@ struct Topology
     //! For corner k of face f (position k in Mesh::face_vertices), the edge from that
     //! corner's vertex to the next corner's vertex of the same face (cyclically).
     std::vector<Index> corner_edge;
-    //! Face owning each corner.
+    //! True when every face is a triangle: corner c is then in face c / 3 and corner_face
+    //! is left empty (24 bytes a vertex a scan's solver need not hold).
+    bool triangles = false;
+    //! Face owning each corner; empty when `triangles` (use face_of_corner).
     std::vector<Index> corner_face;
     //! F(e) in CSR form; n_e = edge_face_offsets[e+1] - edge_face_offsets[e].
     std::vector<Index> edge_face_offsets, edge_faces;
@@ -98,6 +101,11 @@ struct Topology
     {
         return {vertex_corners.data() + vertex_corner_offsets[i],
                 static_cast<size_t>(vertex_corner_offsets[i + 1] - vertex_corner_offsets[i])};
+    }
+    //! The face of corner c (needs TopologyParts::Corners unless `triangles`).
+    Index face_of_corner(Index c) const
+    {
+        return triangles ? static_cast<Index>(static_cast<std::uint32_t>(c) / 3u) : corner_face[c];
     }
     Index dual_valence(Index f) const
     {
@@ -144,7 +152,7 @@ inline AdjacentCorners adjacent_corners(const Mesh& mesh, const Topology& topolo
 {
     // Branches, not (k +- 1) % n: two integer divisions per corner were a measurable
     // part of the face-normal term's step.
-    const Index f = topology.corner_face[corner];
+    const Index f = topology.face_of_corner(corner);
     const Index first = mesh.face_offsets[f], last = mesh.face_offsets[f + 1] - 1;
     return {corner == first ? last : corner - 1, corner == last ? first : corner + 1};
 }
@@ -171,9 +179,7 @@ class CornerWalk
 {
 public:
     CornerWalk(const Mesh& mesh, const Topology& topology)
-        : mesh_(&mesh),
-          corner_face_(topology.corner_face.data()),
-          triangles_(mesh.face_vertices.size() == 3 * static_cast<size_t>(mesh.face_count()))
+        : mesh_(&mesh), corner_face_(topology.corner_face.data()), triangles_(topology.triangles)
     {
     }
     //! True when every face is a triangle.

@@ -90,7 +90,7 @@ TEST_SUITE("FaceCentroidTerm")
         Scalar exact = t.valence(i), paper = t.valence(i);
         for (const Index c : t.corners_of_vertex(i))
         {
-            const Scalar n = m.face_size(t.corner_face[c]);
+            const Scalar n = m.face_size(t.face_of_corner(c));
             exact += 2.0 / (n * n);
             paper += 2.0 / n;
         }
@@ -131,7 +131,7 @@ TEST_SUITE("FaceCentroidTerm")
                     sum[a] += before.positions[3 * j + a] - before.positions[3 * i + a];
             for (const Index c : t.corners_of_vertex(i))
             {
-                const Index f = t.corner_face[c];
+                const Index f = t.face_of_corner(c);
                 const Scalar n = m.face_size(f);
                 denominator += 3.0 / n;
                 const Vec3 xf = face_centroid(before, before.positions, f);
@@ -202,7 +202,7 @@ TEST_SUITE("FaceCentroidTerm")
                 Scalar expected = 0;
                 for (const Index c : t.corners_of_vertex(i))
                 {
-                    const Index f = t.corner_face[c];
+                    const Index f = t.face_of_corner(c);
                     const Scalar n = m.face_size(f);
                     expected += mu * weights[f] / (d == CentroidDenominator::Paper ? n : n * n);
                 }

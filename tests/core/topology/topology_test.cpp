@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <ranges>
 #include <set>
 
 #include "core/io/io.h"
@@ -60,9 +61,14 @@ void check_invariants(const Mesh& m)
             CHECK(t.edge_vertices[2 * e + 1] == b);
             const auto faces = t.faces_of_edge(e);
             CHECK(std::find(faces.begin(), faces.end(), f) != faces.end());
-            CHECK(t.corner_face[c] == f);
+            CHECK(t.face_of_corner(c) == f);
         }
     }
+    // corner_face is held only where faces are not all triangles.
+    const bool triangles = std::ranges::all_of(std::views::iota(Index(0), m.face_count()),
+                                               [&](Index f) { return m.face_size(f) == 3; });
+    CHECK(t.triangles == triangles);
+    CHECK(t.corner_face.empty() == triangles);
     // sum n_e = corners; sum n_i = 2 #E; neighbours symmetric.
     CHECK(t.edge_faces.size() == static_cast<size_t>(m.corner_count()));
     CHECK(t.vertex_neighbors.size() == 2 * static_cast<size_t>(t.edge_count()));
