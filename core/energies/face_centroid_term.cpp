@@ -43,8 +43,19 @@ FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
     set_targets(targets);
 }
 
+void FaceCentroidTerm::use_centroids_of(std::span<const Scalar> x)
+{
+    std::vector<Scalar>().swap(target_); // freed, not only emptied
+    centroid_source_ = x;
+}
+
 void FaceCentroidTerm::set_targets_to_centroids(std::span<const Scalar> x)
 {
+    if (target_.empty())
+    {
+        target_.assign(3 * static_cast<size_t>(mesh_->face_count()), 0);
+        centroid_source_ = {};
+    }
     for (const Index f : faces_)
     {
         const Vec3 c = face_centroid(*mesh_, x, f);
@@ -54,6 +65,11 @@ void FaceCentroidTerm::set_targets_to_centroids(std::span<const Scalar> x)
 
 void FaceCentroidTerm::set_targets(std::span<const Scalar> targets)
 {
+    if (target_.empty())
+    {
+        target_.assign(3 * static_cast<size_t>(mesh_->face_count()), 0);
+        centroid_source_ = {};
+    }
     for (size_t k = 0; k < faces_.size(); ++k)
         for (int a = 0; a < 3; ++a)
             target_[3 * faces_[k] + a] = targets[3 * k + a];
@@ -64,10 +80,11 @@ Scalar FaceCentroidTerm::energy(std::span<const Scalar> x) const
     const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index k) {
         const Index f = faces_[k];
         const Vec3 c = face_centroid(*mesh_, x, f);
+        const Vec3 t = target(f);
         Scalar s = 0;
         for (int a = 0; a < 3; ++a)
         {
-            const Scalar d = c[a] - target_[3 * f + a];
+            const Scalar d = c[a] - t[a];
             s += d * d;
         }
         return face_weight_.empty() ? s : face_weight_[f] * s;
@@ -104,6 +121,14 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
 Scalar FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
                                         Scalar* residual) const
 {
+    return centroid_source_.empty() ? face_residuals_from<false>(x, faces, begin, end, residual)
+                                    : face_residuals_from<true>(x, faces, begin, end, residual);
+}
+
+template <bool FromSource>
+Scalar FaceCentroidTerm::face_residuals_from(const Scalar* x, const Index* faces, Index begin,
+                                             Index end, Scalar* residual) const
+{
     Scalar energy = 0;
     if (!face_weight_.empty())
     {
@@ -120,9 +145,10 @@ Scalar FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Ind
                 last_n = n;
                 inv = Scalar(1) / n;
             }
-            energy += face_weight[f] * residual_of(face_corner_sum(*mesh_, x, f), f, inv,
-                                                   face_weight[f] / n,
-                                                   residual + 3 * static_cast<std::ptrdiff_t>(f));
+            energy +=
+                face_weight[f] *
+                residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, face_weight[f] / n,
+                                        residual + 3 * static_cast<std::ptrdiff_t>(f));
         }
         return energy;
     }
@@ -140,8 +166,8 @@ Scalar FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Ind
             inv = Scalar(1) / n;
             w = mu_ / n;
         }
-        energy += residual_of(face_corner_sum(*mesh_, x, f), f, inv, w,
-                              residual + 3 * static_cast<std::ptrdiff_t>(f));
+        energy += residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, w,
+                                          residual + 3 * static_cast<std::ptrdiff_t>(f));
     }
     return mu_ * energy; // one weight: mu times the sum, as energy() computes it
 }
@@ -159,10 +185,11 @@ void FaceCentroidTerm::add_vertex_energy(std::span<const Scalar> x,
     for (const Index f : faces_)
     {
         const Vec3 c = face_centroid(*mesh_, x, f);
+        const Vec3 t = target(f);
         Scalar s = 0;
         for (int a = 0; a < 3; ++a)
         {
-            const Scalar d = c[a] - target_[3 * f + a];
+            const Scalar d = c[a] - t[a];
             s += d * d;
         }
         const Scalar share = face_weight(f) * s / Scalar(mesh_->face_size(f));

@@ -50,6 +50,12 @@ public:
     void set_targets(std::span<const Scalar> targets);
     //! Targets at the listed faces' centroids for positions `x` (3 #V): no gathered copy.
     void set_targets_to_centroids(std::span<const Scalar> x);
+    //! Targets at the listed faces' centroids for positions `x` (3 #V), computed from `x`
+    //! when needed (the same bits as set_targets_to_centroids) instead of stored: 48 bytes
+    //! a vertex saved on triangle meshes, for reading the face's corners in `x` once more
+    //! per step. \pre x stays alive and unchanged until the next set_targets or
+    //! set_targets_to_centroids or the term's end.
+    void use_centroids_of(std::span<const Scalar> x);
     const std::vector<Index>& faces() const { return faces_; }
     //! mu_f of a constrained face.
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
@@ -81,7 +87,11 @@ public:
     {
         const Index n = mesh_->face_size(f);
         // face_centroid's 1/n_f, so that the residuals are energy()'s.
-        residual_of(face_corner_sum(*mesh_, x, f), f, Scalar(1) / n, face_weight(f) / n, out);
+        const Vec3 sum = face_corner_sum(*mesh_, x, f);
+        if (centroid_source_.empty())
+            residual_of<false>(sum, f, Scalar(1) / n, face_weight(f) / n, out);
+        else
+            residual_of<true>(sum, f, Scalar(1) / n, face_weight(f) / n, out);
     }
     //! face_residual of each face of faces[begin .. end) into residual[3 f ..] (3 #F; other
     //! faces' values are left as they are): the fused step's pass over the faces, so that
@@ -114,10 +124,34 @@ public:
     }
 
 private:
+    //! x0_f: stored, or the centroid of f in centroid_source_ (face_centroid's expression,
+    //! with inv = 1/n_f).
+    template <bool FromSource>
+    Vec3 target_of(Index f, Scalar inv) const
+    {
+        if constexpr (FromSource)
+        {
+            Vec3 t = face_corner_sum(*mesh_, centroid_source_.data(), f);
+            for (int a = 0; a < 3; ++a)
+                t[a] *= inv;
+            return t;
+        }
+        else
+        {
+            const Scalar* t = &target_[3 * static_cast<size_t>(f)];
+            return {t[0], t[1], t[2]};
+        }
+    }
+    Vec3 target(Index f) const
+    {
+        const Scalar inv = Scalar(1) / mesh_->face_size(f);
+        return centroid_source_.empty() ? target_of<false>(f, inv) : target_of<true>(f, inv);
+    }
     //! out = w (x0_f - sum inv), sum being the sum of f's corners; returns |x0_f - sum inv|^2.
+    template <bool FromSource>
     Scalar residual_of(const Vec3& sum, Index f, Scalar inv, Scalar w, Scalar* out) const
     {
-        const Scalar* t = &target_[3 * static_cast<size_t>(f)];
+        const Vec3 t = target_of<FromSource>(f, inv);
         Scalar squared = 0;
         for (int a = 0; a < 3; ++a)
         {
@@ -133,9 +167,14 @@ private:
     Scalar mu_;
     CentroidDenominator denominator_;
     std::vector<Index> faces_;
-    std::vector<char> constrained_;   //!< #F
-    std::vector<Scalar> target_;      //!< 3 #F
-    std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
+    std::vector<char> constrained_; //!< #F
+    template <bool FromSource>
+    Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
+                               Scalar* residual) const;
+
+    std::vector<Scalar> target_;              //!< 3 #F, or empty while centroid_source_ is used
+    std::span<const Scalar> centroid_source_; //!< 3 #V (use_centroids_of), or empty
+    std::vector<Scalar> face_weight_;         //!< #F: mu_f = mu w_f; empty without weights
     CornerWalk walk_;
     bool all_faces_; //!< every face constrained: the sweep tests no flag
 };

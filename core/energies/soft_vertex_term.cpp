@@ -14,26 +14,52 @@ SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, 
     : mu_(mu),
       has_weights_(!weights.empty()),
       vertices_(std::move(vertices)),
-      weight_(vertex_count, 0),
-      target_(3 * static_cast<size_t>(vertex_count), 0)
+      own_target_(3 * static_cast<size_t>(vertex_count), 0),
+      target_(own_target_)
 {
-    for (size_t k = 0; k < vertices_.size(); ++k)
-        weight_[vertices_[k]] = has_weights_ ? mu_ * weights[k] : mu_;
+    if (has_weights_)
+    {
+        weight_.assign(vertex_count, 0);
+        for (size_t k = 0; k < vertices_.size(); ++k)
+            weight_[vertices_[k]] = mu_ * weights[k];
+    }
+    else
+    {
+        listed_.assign(vertex_count, 0);
+        for (const Index i : vertices_)
+            listed_[i] = 1;
+    }
     if (!targets.empty())
         set_targets(targets);
 }
 
+void SoftVertexTerm::own_targets()
+{
+    if (!own_target_.empty())
+        return;
+    own_target_.assign(target_.begin(), target_.end());
+    target_ = own_target_;
+}
+
+void SoftVertexTerm::view_targets(std::span<const Scalar> x)
+{
+    std::vector<Scalar>().swap(own_target_); // freed, not only emptied
+    target_ = x;
+}
+
 void SoftVertexTerm::set_targets_at(std::span<const Scalar> x)
 {
+    own_targets();
     for (const Index i : vertices_)
-        std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &target_[3 * static_cast<size_t>(i)]);
+        std::copy_n(&x[3 * static_cast<size_t>(i)], 3, &own_target_[3 * static_cast<size_t>(i)]);
 }
 
 void SoftVertexTerm::set_targets(std::span<const Scalar> targets)
 {
+    own_targets();
     for (size_t k = 0; k < vertices_.size(); ++k)
         for (int a = 0; a < 3; ++a)
-            target_[3 * vertices_[k] + a] = targets[3 * k + a];
+            own_target_[3 * vertices_[k] + a] = targets[3 * k + a];
 }
 
 Scalar SoftVertexTerm::energy(std::span<const Scalar> x) const
@@ -66,7 +92,7 @@ Scalar SoftVertexTerm::quadratic(std::span<const Scalar> dx) const
 void SoftVertexTerm::add_diagonal(std::span<Scalar> diagonal) const
 {
     for (const Index i : vertices_)
-        diagonal[i] += weight_[i]; // mu itself without weights
+        diagonal[i] += weight(i); // mu itself without weights
 }
 
 void SoftVertexTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
@@ -87,7 +113,7 @@ void SoftVertexTerm::add_vertex_energy(std::span<const Scalar> x,
             const Scalar d = x[3 * i + a] - target_[3 * i + a];
             s += d * d;
         }
-        per_vertex[i] += weight_[i] * s;
+        per_vertex[i] += weight(i) * s;
     }
 }
 

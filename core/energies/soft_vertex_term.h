@@ -28,15 +28,26 @@ public:
     //! one per listed vertex, each finite and >= 0 (as mu).
     SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, Scalar mu,
                    std::span<const Scalar> targets = {}, std::span<const Scalar> weights = {});
+    // Not copyable: the targets may be a view of the term's own array.
+    SoftVertexTerm(const SoftVertexTerm&) = delete;
+    SoftVertexTerm& operator=(const SoftVertexTerm&) = delete;
 
     void set_targets(std::span<const Scalar> targets);
     //! Targets at positions `x` (3 #V) of the listed vertices: no gathered copy.
     void set_targets_at(std::span<const Scalar> x);
+    //! Targets at positions `x` (3 #V) of the listed vertices, read from `x` itself, with no
+    //! copy: a session's initial positions, shared with the centroid term (24 bytes a vertex
+    //! saved). \pre x stays alive and unchanged until the next set_targets or set_targets_at
+    //! (which copy it first) or the term's end.
+    void view_targets(std::span<const Scalar> x);
     Scalar mu() const { return mu_; }
     //! True when the vertices have weights of their own (not all mu).
     bool has_weights() const { return has_weights_; }
     //! mu_i: mu w_i on constrained vertices, 0 elsewhere.
-    Scalar weight(Index i) const { return weight_[i]; }
+    Scalar weight(Index i) const
+    {
+        return has_weights_ ? weight_[i] : (listed_[i] ? mu_ : Scalar(0));
+    }
     const std::vector<Index>& vertices() const { return vertices_; }
 
     Scalar energy(std::span<const Scalar> x) const;
@@ -52,14 +63,15 @@ public:
     void add_vertex_rhs(Index i, const Scalar* x, Scalar* r, Scalar* energy = nullptr) const
     {
         Scalar squared = 0;
+        const Scalar w = weight(i);
         for (int a = 0; a < 3; ++a)
         {
             const Scalar d = target_[3 * i + a] - x[3 * i + a];
-            r[a] += weight_[i] * d;
+            r[a] += w * d;
             squared += d * d;
         }
         if constexpr (Energy)
-            *energy += weight_[i] * squared;
+            *energy += w * squared;
     }
     //! The vertex's part of energy(x): mu_i |x_i - t_i|^2 (0 off the constrained set).
     Scalar vertex_part(Index i, const Scalar* x) const
@@ -70,11 +82,16 @@ public:
     }
 
 private:
+    //! Owns the targets unless they are a view (view_targets); copied before a change.
+    void own_targets();
+
     Scalar mu_;
     bool has_weights_;
     std::vector<Index> vertices_;
-    std::vector<Scalar> weight_; //!< #V: mu_i on constrained vertices, 0 elsewhere
-    std::vector<Scalar> target_; //!< 3 #V
+    std::vector<Scalar> weight_;     //!< #V with weights: mu_i on constrained vertices, 0 elsewhere
+    std::vector<char> listed_;       //!< #V without weights (mu_i = mu or 0): 1 byte, not 8
+    std::vector<Scalar> own_target_; //!< 3 #V, or empty while target_ is a view
+    std::span<const Scalar> target_; //!< 3 #V: own_target_ or view_targets's positions
 };
 
 } // namespace meshfair

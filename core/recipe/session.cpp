@@ -119,7 +119,17 @@ void Session::precompute()
     // The terms take their index lists by move and read targets at the initial
     // positions directly: no gathered copies (a million-vertex mesh would keep their
     // freed pages resident).
+    // Targets at the initial positions (the default of soft and centroid constraints) are
+    // read from one copy of them, shared by both terms, not stored per term: the positions
+    // the session steps may be the mesh's own (adopt_positions).
+    const bool soft_at_x0 = !recipe_.falloff && recipe_.soft && recipe_.soft->targets.empty();
+    const bool centroids_at_x0 = recipe_.centroid && recipe_.centroid->targets.empty();
     soft_.reset();
+    centroid_.reset();
+    if (soft_at_x0 || centroids_at_x0)
+        initial_.assign(x0.begin(), x0.end());
+    else
+        std::vector<Scalar>().swap(initial_);
     falloff_pin_ = {};
     falloff_base_ = {};
     falloff_share_ = {};
@@ -149,21 +159,20 @@ void Session::precompute()
             nv, std::move(vertices), s.mu, std::span<const Scalar>{},
             s.vertices.all ? std::span<const Scalar>(weights) : std::span<const Scalar>(s.weights));
         if (s.targets.empty())
-            soft_->set_targets_at(x0);
+            soft_->view_targets(initial_);
         else if (s.vertices.all) // one target per vertex of the mesh
             soft_->set_targets_at(flatten(s.targets));
         else
             soft_->set_targets(flatten(s.targets));
     }
 
-    centroid_.reset();
     if (recipe_.centroid)
     {
         const CentroidConstraints& c = *recipe_.centroid;
         centroid_.emplace(mesh, *topology_, c.faces.all ? all_indices(nf) : c.faces.indices, c.mu,
                           c.denominator, c.weights);
         if (c.targets.empty())
-            centroid_->set_targets_to_centroids(x0);
+            centroid_->use_centroids_of(initial_);
         else
             centroid_->set_targets(flatten(c.targets));
     }

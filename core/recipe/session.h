@@ -231,6 +231,9 @@ private:
     std::vector<Scalar> hard_targets_; //!< 3 per hard vertex; empty: no targets
 
     EdgeTerm edge_;
+    //! 3 #V: the initial positions, when soft or centroid targets are at them (the terms
+    //! read them here); declared before the terms, which view it.
+    std::vector<Scalar> initial_;
     std::optional<SoftVertexTerm> soft_;
     std::optional<FaceCentroidTerm> centroid_;
     std::optional<FaceNormalTerm> normal_;

@@ -246,3 +246,56 @@ TEST_SUITE("FaceCentroidTerm")
             CHECK(after[3 * i + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
     }
 }
+
+TEST_SUITE("FaceCentroidTerm")
+{
+    TEST_CASE(
+        "targets computed from the initial positions: the same bits as stored ones, "
+        "stored before a change")
+    {
+        const Mesh m = test::mixed_polygons(); // triangles, quads and a pentagon
+        const Topology t = build_topology(m);
+        const std::vector<Scalar> x0 = m.positions;
+        const std::vector<Index> faces = test::all_indices(m.face_count());
+        std::vector<Scalar> weights(faces.size());
+        for (size_t k = 0; k < weights.size(); ++k)
+            weights[k] = 0.5 + 0.25 * static_cast<Scalar>(k % 3);
+        Mesh moved = m;
+        test::perturb(moved, 0.2, 9);
+        for (const bool weighted : {false, true})
+        {
+            const std::span<const Scalar> w =
+                weighted ? std::span<const Scalar>(weights) : std::span<const Scalar>{};
+            FaceCentroidTerm stored(m, t, faces, 1.5, CentroidDenominator::Paper, w);
+            stored.set_targets_to_centroids(x0);
+            FaceCentroidTerm computed(m, t, faces, 1.5, CentroidDenominator::Paper, w);
+            computed.use_centroids_of(x0);
+            CHECK(computed.energy(moved.positions) == stored.energy(moved.positions));
+            CHECK(computed.energy(x0) == 0);
+            const std::vector<Index> all = test::all_indices(m.vertex_count());
+            std::vector<Scalar> a(x0.size(), 0), b(x0.size(), 0);
+            stored.add_rhs(moved.positions, all, a);
+            computed.add_rhs(moved.positions, all, b);
+            CHECK(a == b);
+            std::vector<Scalar> ra(3 * faces.size(), 0), rb(3 * faces.size(), 0);
+            const Scalar ea = stored.face_residuals(moved.positions.data(), faces.data(), 0,
+                                                    m.face_count(), ra.data());
+            const Scalar eb = computed.face_residuals(moved.positions.data(), faces.data(), 0,
+                                                      m.face_count(), rb.data());
+            CHECK(ea == eb);
+            CHECK(ra == rb);
+            std::vector<Scalar> pa(m.vertex_count(), 0), pb(m.vertex_count(), 0);
+            stored.add_vertex_energy(moved.positions, pa);
+            computed.add_vertex_energy(moved.positions, pb);
+            CHECK(pa == pb);
+
+            // set_targets stores targets of its own and leaves the positions alone.
+            const std::vector<Scalar> elsewhere(3 * faces.size(), -0.5);
+            computed.set_targets(elsewhere);
+            stored.set_targets(elsewhere);
+            CHECK(x0 == m.positions);
+            CHECK(computed.energy(moved.positions) == stored.energy(moved.positions));
+            CHECK(computed.energy(x0) > 0);
+        }
+    }
+}

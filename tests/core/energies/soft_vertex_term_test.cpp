@@ -140,3 +140,42 @@ TEST_SUITE("SoftVertexTerm")
               doctest::Approx(plain.energy(m.positions)).epsilon(1e-15));
     }
 }
+
+TEST_SUITE("SoftVertexTerm")
+{
+    TEST_CASE(
+        "targets viewed from positions: the same bits as copied ones, copied before a "
+        "change")
+    {
+        Mesh m = test::icosphere(1);
+        const std::vector<Scalar> x0 = m.positions;
+        const std::vector<Index> vertices{1, 4, 9, 30, 41};
+        const std::vector<Scalar> weights{1.0, 0.5, 2.0, 0.0, 3.0};
+        for (const bool weighted : {false, true})
+        {
+            const std::span<const Scalar> w =
+                weighted ? std::span<const Scalar>(weights) : std::span<const Scalar>{};
+            SoftVertexTerm copied(m.vertex_count(), vertices, 0.7, {}, w);
+            copied.set_targets_at(x0);
+            SoftVertexTerm viewed(m.vertex_count(), vertices, 0.7, {}, w);
+            viewed.view_targets(x0);
+            Mesh moved = m;
+            test::perturb(moved, 0.1, 5);
+            CHECK(viewed.energy(moved.positions) == copied.energy(moved.positions));
+            const std::vector<Index> all = test::all_indices(m.vertex_count());
+            std::vector<Scalar> a(x0.size(), 0), b(x0.size(), 0);
+            copied.add_rhs(moved.positions, all, a);
+            viewed.add_rhs(moved.positions, all, b);
+            CHECK(a == b);
+            CHECK(viewed.energy(x0) == 0);
+
+            // set_targets writes the term's own copy, never the viewed positions.
+            const std::vector<Scalar> elsewhere(3 * vertices.size(), 0.25);
+            viewed.set_targets(elsewhere);
+            copied.set_targets(elsewhere);
+            CHECK(x0 == m.positions);
+            CHECK(viewed.energy(moved.positions) == copied.energy(moved.positions));
+            CHECK(viewed.energy(x0) > 0);
+        }
+    }
+}
