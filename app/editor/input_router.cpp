@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/input_router.h"
 
+#include <algorithm>
+
 #include <imgui.h>
 
 #include "app/editor/editor_session.h"
@@ -118,6 +120,14 @@ void InputRouter::route(EditorSession& session, bool with_interface)
     const ViewRect& view = session.view_rect();
     for (const InputEvent& e : batch_)
     {
+        routed_ += e.type != InputEvent::Type::MouseMove;
+        if (e.type == InputEvent::Type::KeyPress &&
+            std::ranges::find(keys_down_, e.key) == keys_down_.end())
+            keys_down_.push_back(e.key);
+        if (e.type == InputEvent::Type::KeyRelease)
+            std::erase(keys_down_, e.key);
+        if (e.type == InputEvent::Type::MousePress || e.type == InputEvent::Type::MouseRelease)
+            buttons_down_[button_index(e.button)] = e.type == InputEvent::Type::MousePress;
         const double vx = e.x - view.x, vy = e.y - view.y;
         switch (e.type)
         {

@@ -34,6 +34,16 @@ public:
     //! Call after the interface's frame was built; without an interface nothing is captured.
     void route(EditorSession& session, bool with_interface);
 
+    //! Events other than cursor moves handed to the session so far (route: presses,
+    //! releases, wheel turns, characters), and whether a key or a mouse button
+    //! is down after them: the widget map reports both, so that a test driving the window
+    //! waits for its input to be handled instead of sleeping for a guessed time.
+    long routed_count() const { return routed_; }
+    bool anything_held() const
+    {
+        return !keys_down_.empty() || buttons_down_[0] || buttons_down_[1] || buttons_down_[2];
+    }
+
     //! Where the cursor was last seen, in framebuffer pixels.
     double cursor_x() const { return x_; }
     double cursor_y() const { return y_; }
@@ -42,6 +52,9 @@ private:
     std::deque<InputEvent> queue_;
     std::vector<InputEvent> batch_;
     std::array<bool, 3> view_owns_{}; // the view took the press of this button
+    long routed_ = 0;
+    std::vector<int> keys_down_;
+    std::array<bool, 3> buttons_down_{};
     double x_ = 0, y_ = 0;
 };
 

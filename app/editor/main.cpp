@@ -93,8 +93,10 @@ int main(int argc, char** argv)
                  "Print each command the keys, menus, panels and tools give, and its outcome");
     app.add_option("--widget-map", widget_map,
                    "Window: keep FILE listing where each widget of the interface is (label, "
-                   "x0, y0, x1, y1 in window pixels, tab-separated, after a line '#frame N'), "
-                   "for driving it from outside");
+                   "x0, y0, x1, y1 in window pixels, tab-separated, after the lines '#frame N' "
+                   "and '#input EVENTS HELD QUEUED': the key, button and wheel events handled, "
+                   "1 while a key or button is down, 1 while events wait), for driving it from "
+                   "outside");
     app.add_option("--threads", threads, "Threads for normals and loading (default: every core)")
         ->check(CLI::Range(1, 1024));
     DisplayOptions display;

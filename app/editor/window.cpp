@@ -194,11 +194,15 @@ void set_clipboard(void* window, const char* text)
 // with the number of the frame that wrote it: rewritten every frame, so that a driver can
 // tell that frames were drawn since it last looked and the layout it reads has settled.
 void write_widget_map(const std::string& path, const EditorUi& ui, const FrameSize& size,
-                      long frame)
+                      long frame, const InputRouter& input)
 {
     const double sx = double(size.window_width) / std::max(size.framebuffer_width, 1);
     const double sy = double(size.window_height) / std::max(size.framebuffer_height, 1);
-    std::string text = "#frame\t" + std::to_string(frame) + "\n";
+    // The input handled by this frame: the events routed so far, whether a key or button
+    // is still down, and the events still queued.
+    std::string text =
+        "#frame\t" + std::to_string(frame) + "\n#input\t" + std::to_string(input.routed_count()) +
+        "\t" + (input.anything_held() ? "1" : "0") + "\t" + (input.pending() ? "1" : "0") + "\n";
     char line[64];
     for (const std::string& name : ui.widget_names())
     {
@@ -338,7 +342,8 @@ void run_window(const WindowOptions& options)
             session.dispatch(cmd::OpenMesh{path});
         session.autosave();
         if (!options.widget_map.empty())
-            write_widget_map(options.widget_map, editor->frame->ui(), size, ++frames);
+            write_widget_map(options.widget_map, editor->frame->ui(), size, ++frames,
+                             editor->frame->input());
         session.draw();
         if (std::optional<std::string> shot = std::exchange(session.state().screenshot, {}))
             editor->screenshot(*shot); // the view without the panels

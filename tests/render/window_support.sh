@@ -88,26 +88,55 @@ wait_line() {
 # count_lines PATTERN: how many lines of the log match.
 count_lines() { grep -c -- "$1" "$log" || true; }
 
-# A key chord to the focused window (through XTEST, as a keyboard gives it), then a
-# moment for the frame that takes it.
+# The editor's input counters from the widget map's '#input' line: the key, button and
+# wheel events it has handled, 1 while a key or button is down, 1 while events wait.
+input_count() { awk -F'\t' '$1 == "#input" { print $2 }' "$map"; }
+
+# wait_input N0 MIN: until the editor has handled MIN more events than N0, with no key or
+# button down and none waiting (10 s), or has quit: the input sent is taken, however slow
+# the frames. A release follows its press, so no key is down only once the last release
+# is handled.
+wait_input() {
+    local n0=$1 min=$2 routed held queued
+    for _ in $(seq 1 500); do
+        read -r routed held queued < <(awk -F'\t' '$1 == "#input" { print $2, $3, $4 }' "$map")
+        if [ -n "${routed:-}" ] && [ "$routed" -ge $((n0 + min)) ] && [ "$held" = 0 ] &&
+            [ "$queued" = 0 ]; then
+            return 0
+        fi
+        # Gone: the input quit it (Ctrl+Q, a quit button); the caller's wait_exit or next
+        # step judges whether it should have.
+        kill -0 "$pid" 2>/dev/null || return 0
+        sleep 0.02
+    done
+    fail "the editor did not take its input in 10 s (${routed:-?} of $((n0 + min)) events)"
+}
+
+# A key chord to the focused window (through XTEST, as a keyboard gives it), until the
+# editor has taken it (a press and a release at least).
 key() {
+    local n0
+    n0=$(input_count)
     xdotool key --clearmodifiers "$@"
-    sleep 0.25
+    wait_input "$n0" 2
 }
 
 # The centre of a widget of the interface, from the widget map (waits until it is shown;
 # a widget scrolled out of the side panel is scrolled to with the wheel, as a person does).
 widget_at() {
-    local label=$1 at="" wheel
-    for attempt in $(seq 1 50); do
+    local label=$1 at="" wheel frame
+    for attempt in $(seq 1 42); do
         at=$(widget_centre "$label")
         [ -n "$at" ] && break
-        if [ "$attempt" -gt 12 ]; then # not drawn yet, or scrolled out of the panel
-            wheel=5                      # down, then up
-            [ "$attempt" -gt 31 ] && wheel=4
+        # Not in two frames drawn since: scrolled out of the panel, scrolled to with the
+        # wheel (down, then up), a frame waited for after each turn.
+        frame=$(frame_number)
+        if [ "$attempt" -gt 2 ]; then
+            wheel=5
+            [ "$attempt" -gt 22 ] && wheel=4
             xdotool mousemove --window "$win" 830 400 click "$wheel"
         fi
-        sleep 0.1
+        wait_frame_after "$frame"
     done
     [ -n "$at" ] || fail "no widget '$label' on screen"
     # Drawn but below or above the side panel's visible part (the panel is longer than the
@@ -172,10 +201,12 @@ widget_centre() {
 }
 
 click_at() {
+    local n0
     xdotool mousemove --window "$win" "$1" "$2"
     sleep 0.1
+    n0=$(input_count)
     xdotool click 1
-    sleep 0.3
+    wait_input "$n0" 2
 }
 
 click_widget() {
@@ -198,8 +229,10 @@ drag() {
     done
     # Held a moment at the end, as a hand does: a slow frame sees the button still down.
     sleep 0.15
+    local n0
+    n0=$(input_count)
     xdotool mouseup 1
-    sleep 0.3
+    wait_input "$n0" 1
 }
 
 # wait_dialog: until a file dialog shows with its name field taking the keys.
@@ -209,6 +242,8 @@ wait_dialog() {
 
 # type_text TEXT: typed fast, as a person in a hurry types.
 type_text() {
+    local n0
+    n0=$(input_count)
     xdotool type --delay 8 "$1"
-    sleep 0.3
+    wait_input "$n0" $((2 * ${#1})) # a press and a release per character at least
 }

@@ -5,7 +5,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <ranges>
 #include <set>
 
 #include "core/io/io.h"
@@ -65,8 +64,9 @@ void check_invariants(const Mesh& m)
         }
     }
     // corner_face is held only where faces are not all triangles.
-    const bool triangles = std::ranges::all_of(std::views::iota(Index(0), m.face_count()),
-                                               [&](Index f) { return m.face_size(f) == 3; });
+    bool triangles = true;
+    for (Index f = 0; f < m.face_count(); ++f)
+        triangles = triangles && m.face_size(f) == 3;
     CHECK(t.triangles == triangles);
     CHECK(t.corner_face.empty() == triangles);
     // sum n_e = corners; sum n_i = 2 #E; neighbours symmetric.
