@@ -10,32 +10,44 @@ namespace meshfair {
 
 namespace {
 
-// The members are built in order: the numbering, the renumbered mesh, its topology.
-LocalityOrder order_of(const Mesh& mesh)
+// File to internal: read to renumber the mesh and the recipe, not by the solve; dropped
+// before the topology and the session are built, so that the peak holds neither.
+LocalityOrder without_inverses(LocalityOrder order)
 {
-    return locality_order(mesh);
+    std::vector<Index>().swap(order.vertex_index);
+    std::vector<Index>().swap(order.face_index);
+    return order;
 }
 
 } // namespace
 
-LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)
-    : order_(order_of(mesh)),
-      mesh_(reorder_mesh(std::exchange(mesh, Mesh{}), order_)),
-      topology_(build_topology(mesh_, required_topology(recipe))),
-      session_(mesh_, topology_, renumber_recipe(recipe, order_.vertex_index, order_.face_index))
+LocalityRun::Renumbered LocalityRun::renumber(Mesh mesh, const Recipe& recipe)
 {
-    session_.apply_hard_targets(mesh_.positions);
-    // The session holds the only copy of the positions while it runs.
-    session_.adopt_positions(std::move(mesh_.positions));
+    LocalityOrder order = locality_order(mesh);
+    Mesh renumbered = reorder_mesh(std::exchange(mesh, Mesh{}), order);
+    Recipe renumbered_recipe = renumber_recipe(recipe, order.vertex_index, order.face_index);
+    return {std::move(renumbered), without_inverses(std::move(order)),
+            std::move(renumbered_recipe)};
+}
+
+LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)
+    : LocalityRun(renumber(std::move(mesh), recipe))
+{
+}
+
+LocalityRun::LocalityRun(Renumbered r)
+    : LocalityRun(std::move(r.mesh), std::move(r.order), r.recipe)
+{
 }
 
 LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe)
-    : order_(std::move(order)),
+    : order_(without_inverses(std::move(order))),
       mesh_(std::move(renumbered_mesh)),
       topology_(build_topology(mesh_, required_topology(renumbered_recipe))),
       session_(mesh_, topology_, renumbered_recipe)
 {
     session_.apply_hard_targets(mesh_.positions);
+    // The session holds the only copy of the positions while it runs.
     session_.adopt_positions(std::move(mesh_.positions));
 }
 
@@ -54,7 +66,7 @@ Topology checked(Topology topology, const Mesh& mesh, const Recipe& recipe)
 
 LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
                          Topology topology)
-    : order_(std::move(order)),
+    : order_(without_inverses(std::move(order))),
       mesh_(std::move(renumbered_mesh)),
       topology_(checked(std::move(topology), mesh_, renumbered_recipe)),
       session_(mesh_, topology_, renumbered_recipe)
@@ -76,6 +88,11 @@ LocalityRun::Released LocalityRun::release() &&
 
 Mesh file_order_mesh(LocalityRun::Released released)
 {
+    LocalityOrder& order = released.order;
+    if (order.vertex_index.size() != order.vertex_order.size())
+        order.vertex_index = inverse_permutation(order.vertex_order);
+    if (order.face_index.size() != order.face_order.size())
+        order.face_index = inverse_permutation(order.face_order);
     return reorder_mesh(released.mesh, inverse_order(std::move(released.order)));
 }
 

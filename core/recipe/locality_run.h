@@ -49,6 +49,9 @@ public:
     //! The mesh in the locality numbering (its positions are the session's until released).
     const Mesh& mesh() const { return mesh_; }
     const Topology& topology() const { return topology_; }
+    //! The numbering, internal to file: vertex_order and face_order. Their inverses (file
+    //! to internal; 12 bytes a vertex the solve does not read) are dropped before the
+    //! topology and the session are built; file_order_mesh rebuilds them.
     const LocalityOrder& order() const { return order_; }
 
     //! \brief Ends the run: the renumbered mesh with the current positions, and its order.
@@ -64,13 +67,23 @@ public:
     Topology take_topology() &&;
 
 private:
+    //! The file's mesh and recipe renumbered, with the order's inverses already dropped.
+    struct Renumbered
+    {
+        Mesh mesh;
+        LocalityOrder order;
+        Recipe recipe;
+    };
+    static Renumbered renumber(Mesh mesh, const Recipe& recipe);
+    explicit LocalityRun(Renumbered r);
+
     LocalityOrder order_;
     Mesh mesh_;
     Topology topology_;
     Session session_;
 };
 
-//! The released mesh in the file's numbering.
+//! The released mesh in the file's numbering (the order's inverses rebuilt when dropped).
 Mesh file_order_mesh(LocalityRun::Released released);
 
 } // namespace meshfair
