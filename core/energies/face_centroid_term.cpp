@@ -17,7 +17,7 @@ FaceCentroidTerm::FaceCentroidTerm(const Mesh& mesh, const Topology& topology,
       topology_(&topology),
       mu_(mu),
       denominator_(denominator),
-      faces_(std::move(faces)),
+      faces_(IndexList(std::move(faces))),
       constrained_(mesh.face_count(), 0),
       target_(3 * static_cast<size_t>(mesh.face_count()), 0),
       walk_(mesh, topology),
@@ -138,7 +138,7 @@ Scalar FaceCentroidTerm::face_residuals_from(const Scalar* x, const Index* faces
         const Scalar* face_weight = face_weight_.data();
         for (Index k = begin; k < end; ++k)
         {
-            const Index f = faces[k];
+            const Index f = faces != nullptr ? faces[k] : k;
             const Index n = mesh_->face_size(f);
             if (n != last_n)
             {
@@ -158,7 +158,7 @@ Scalar FaceCentroidTerm::face_residuals_from(const Scalar* x, const Index* faces
     Scalar inv = 0, w = 0;
     for (Index k = begin; k < end; ++k)
     {
-        const Index f = faces[k];
+        const Index f = faces != nullptr ? faces[k] : k;
         const Index n = mesh_->face_size(f);
         if (n != last_n)
         {

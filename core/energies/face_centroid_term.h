@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/index_list.h"
 #include "core/geometry/face_geometry.h"
 #include "core/mesh/mesh.h"
 #include "core/topology/topology.h"
@@ -56,7 +57,7 @@ public:
     //! per step. \pre x stays alive and unchanged until the next set_targets or
     //! set_targets_to_centroids or the term's end.
     void use_centroids_of(std::span<const Scalar> x);
-    const std::vector<Index>& faces() const { return faces_; }
+    const IndexList& faces() const { return faces_; }
     //! mu_f of a constrained face.
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
 
@@ -93,7 +94,8 @@ public:
         else
             residual_of<true>(sum, f, Scalar(1) / n, face_weight(f) / n, out);
     }
-    //! face_residual of each face of faces[begin .. end) into residual[3 f ..] (3 #F; other
+    //! face_residual of each face of faces[begin .. end) (face k itself when faces is
+    //! nullptr) into residual[3 f ..] (3 #F; other
     //! faces' values are left as they are): the fused step's pass over the faces, so that
     //! each residual is computed once per step, not once per corner. Returns those faces'
     //! part of the energy, sum mu_f |x_f - x0_f|^2, which the same pass computes.
@@ -166,7 +168,7 @@ private:
     const Topology* topology_;
     Scalar mu_;
     CentroidDenominator denominator_;
-    std::vector<Index> faces_;
+    IndexList faces_;               //!< no list stored when every face, in order
     std::vector<char> constrained_; //!< #F
     template <bool FromSource>
     Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,

@@ -14,7 +14,7 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
-      faces_(std::move(faces)),
+      faces_(IndexList(std::move(faces))),
       constrained_(mesh.face_count(), 0),
       walk_(mesh, topology),
       all_faces_(false)

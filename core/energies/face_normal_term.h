@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/index_list.h"
 #include "core/mesh/mesh.h"
 #include "core/topology/topology.h"
 
@@ -36,7 +37,7 @@ public:
     Scalar mu() const { return mu_; }
     //! mu_f of a constrained face.
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
-    const std::vector<Index>& faces() const { return faces_; }
+    const IndexList& faces() const { return faces_; }
     bool constrains(Index f) const { return constrained_[f] != 0; }
 
     Scalar energy(std::span<const Scalar> x, std::span<const Scalar> normals) const;
@@ -130,7 +131,7 @@ private:
     const Mesh* mesh_;
     const Topology* topology_;
     Scalar mu_;
-    std::vector<Index> faces_;
+    IndexList faces_;                 //!< no list stored when every face, in order
     std::vector<char> constrained_;   //!< #F
     std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
     CornerWalk walk_;

@@ -502,9 +502,9 @@ const std::vector<std::string>& Session::notes() const
     return volume_ ? volume_->notes() : none;
 }
 
-const std::vector<Index>& Session::centroid_faces() const
+const IndexList& Session::centroid_faces() const
 {
-    static const std::vector<Index> none;
+    static const IndexList none;
     return centroid_ ? centroid_->faces() : none;
 }
 
@@ -531,18 +531,19 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
     {
         // Each constrained face's residual once per step, for the faces a free vertex
         // reads; its n_f corners then add it.
-        const std::span<const Index> faces = centroid_active_.empty()
-                                                 ? std::span<const Index>(centroid_->faces())
-                                                 : std::span<const Index>(centroid_active_);
+        // nullptr: every face, in order (IndexList keeps no list of them).
+        const Index* faces =
+            centroid_active_.empty() ? centroid_->faces().data() : centroid_active_.data();
         Scalar* residual = centroid_residual_.data();
-        const Index count = static_cast<Index>(faces.size());
+        const Index count = static_cast<Index>(centroid_active_.empty() ? centroid_->faces().size()
+                                                                        : centroid_active_.size());
         if constexpr (Energy)
             energy.centroid = deterministic_block_sums<Scalar>(count, [&](Index begin, Index end) {
-                return centroid_->face_residuals(x, faces.data(), begin, end, residual);
+                return centroid_->face_residuals(x, faces, begin, end, residual);
             });
         else
             parallel_ranges(count, [&](Index begin, Index end) {
-                centroid_->face_residuals(x, faces.data(), begin, end, residual);
+                centroid_->face_residuals(x, faces, begin, end, residual);
             });
     }
     // The soft and centroid terms weigh their elements through per-vertex weights and
