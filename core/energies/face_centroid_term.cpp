@@ -49,13 +49,17 @@ void FaceCentroidTerm::use_centroids_of(std::span<const Scalar> x)
     centroid_source_ = x;
 }
 
+void FaceCentroidTerm::store_targets()
+{
+    if (!target_.empty())
+        return;
+    target_.assign(3 * static_cast<size_t>(mesh_->face_count()), 0);
+    centroid_source_ = {};
+}
+
 void FaceCentroidTerm::set_targets_to_centroids(std::span<const Scalar> x)
 {
-    if (target_.empty())
-    {
-        target_.assign(3 * static_cast<size_t>(mesh_->face_count()), 0);
-        centroid_source_ = {};
-    }
+    store_targets();
     for (const Index f : faces_)
     {
         const Vec3 c = face_centroid(*mesh_, x, f);
@@ -65,11 +69,7 @@ void FaceCentroidTerm::set_targets_to_centroids(std::span<const Scalar> x)
 
 void FaceCentroidTerm::set_targets(std::span<const Scalar> targets)
 {
-    if (target_.empty())
-    {
-        target_.assign(3 * static_cast<size_t>(mesh_->face_count()), 0);
-        centroid_source_ = {};
-    }
+    store_targets();
     for (size_t k = 0; k < faces_.size(); ++k)
         for (int a = 0; a < 3; ++a)
             target_[3 * faces_[k] + a] = targets[3 * k + a];

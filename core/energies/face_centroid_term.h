@@ -126,6 +126,11 @@ public:
     }
 
 private:
+    //! Targets of their own (3 #F), stored from here on: before set_targets writes them.
+    void store_targets();
+    template <bool FromSource>
+    Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
+                               Scalar* residual) const;
     //! x0_f: stored, or the centroid of f in centroid_source_ (face_centroid's expression,
     //! with inv = 1/n_f).
     template <bool FromSource>
@@ -168,12 +173,8 @@ private:
     const Topology* topology_;
     Scalar mu_;
     CentroidDenominator denominator_;
-    IndexList faces_;               //!< no list stored when every face, in order
-    std::vector<char> constrained_; //!< #F
-    template <bool FromSource>
-    Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
-                               Scalar* residual) const;
-
+    IndexList faces_;                         //!< no list stored when every face, in order
+    std::vector<char> constrained_;           //!< #F
     std::vector<Scalar> target_;              //!< 3 #F, or empty while centroid_source_ is used
     std::span<const Scalar> centroid_source_; //!< 3 #V (use_centroids_of), or empty
     std::vector<Scalar> face_weight_;         //!< #F: mu_f = mu w_f; empty without weights

@@ -39,15 +39,6 @@ public:
     }
     //! The stored indices, or nullptr when identity() (the k-th element is k).
     const Index* data() const { return identity_ ? nullptr : indices_.data(); }
-    //! The indices written out (a copy; the elements 0 .. size - 1 when identity()).
-    std::vector<Index> to_vector() const
-    {
-        std::vector<Index> v(static_cast<std::size_t>(size_));
-        for (Index k = 0; k < size_; ++k)
-            v[k] = (*this)[k];
-        return v;
-    }
-
     class Iterator
     {
     public:

@@ -116,12 +116,11 @@ void Session::precompute()
             fixed[v] = fixed[v] || !inside[v];
     }
 
-    // The terms take their index lists by move and read targets at the initial
-    // positions directly: no gathered copies (a million-vertex mesh would keep their
-    // freed pages resident).
-    // Targets at the initial positions (the default of soft and centroid constraints) are
-    // read from one copy of them, shared by both terms, not stored per term: the positions
-    // the session steps may be the mesh's own (adopt_positions).
+    // The terms take their index lists by move, and targets at the initial positions (the
+    // default of soft and centroid constraints) are read from one copy of them shared by
+    // both terms: no gathered or per-term copies (a million-vertex mesh would keep their
+    // pages resident). A copy, not the mesh's positions: the session may step those
+    // (adopt_positions).
     const bool soft_at_x0 = !recipe_.falloff && recipe_.soft && recipe_.soft->targets.empty();
     const bool centroids_at_x0 = recipe_.centroid && recipe_.centroid->targets.empty();
     soft_.reset();
