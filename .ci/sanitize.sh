@@ -1,14 +1,27 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The whole ctest suite in a release build with AddressSanitizer, UndefinedBehavior-
-# Sanitizer (any report is fatal) and libstdc++ assertions, built with clang.
+# Sanitizer (any report is fatal) and libstdc++ assertions, built with clang in unity
+# translation units. Usage: .ci/sanitize.sh [build|test]: builds, runs the tests, or
+# (without an argument) both.
 # Needs: clang, libclang-rt-14-dev (installed by .ci/setup.sh test).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=build-asan
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
-    -DMESHFAIR_SANITIZE=ON -DMESHFAIR_WERROR=ON >/dev/null
-cmake --build "$build" -j"$(nproc)"
+step=${1:-all}
+case "$step" in
+    build | test | all) ;;
+    *)
+        echo "usage: $0 [build|test]" >&2
+        exit 2
+        ;;
+esac
+if [ "$step" != test ]; then
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
+        -DCMAKE_UNITY_BUILD=ON -DMESHFAIR_SANITIZE=ON -DMESHFAIR_WERROR=ON >/dev/null
+    cmake --build "$build" -j"$(nproc)"
+fi
+[ "$step" != build ] || exit 0
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions=$PWD/.ci/lsan.supp:print_suppressions=0

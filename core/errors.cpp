@@ -38,6 +38,11 @@ FormatError::FormatError(SourceLocation where, const std::string& message)
 {
 }
 
+std::string recipe_item_key(const std::string& key, std::size_t k)
+{
+    return key + "[" + std::to_string(k) + "]";
+}
+
 RecipeError::RecipeError(const std::string& key, const std::string& message,
                          const std::string& file)
     : InvalidInputError((file.empty() ? std::string("recipe") : "'" + file + "'") + ": " + key +

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -70,6 +71,9 @@ private:
     std::string key_;
     std::string message_;
 };
+
+//! The key of entry k of the list at key in a RecipeError: "key[k]".
+std::string recipe_item_key(const std::string& key, std::size_t k);
 
 //! An operating-system failure reading or writing a file.
 class IOError : public std::runtime_error

@@ -8,6 +8,7 @@
 
 #include "core/io/io.h"
 #include "core/mesh/mesh.h"
+#include "core/solver/parallel.h"
 
 namespace meshfair::test {
 
@@ -55,6 +56,12 @@ Mesh with_isolated_vertex();    //!< a triangle plus an unused vertex
 Mesh quad_torus(int nu, int nv, double R, double r); //!< closed quad torus
 Mesh icosphere(int subdivisions);                    //!< subdivided icosahedron on the unit sphere
 Mesh mixed_polygons(); //!< open patch of triangles, quads and a pentagon
+
+//! Restores the default thread count when a test case ends, whatever happens.
+struct ThreadCountGuard
+{
+    ~ThreadCountGuard() { set_thread_count(0); }
+};
 
 //! Adds deterministic Gaussian noise (sigma in absolute units).
 void perturb(Mesh& mesh, double sigma, unsigned seed);

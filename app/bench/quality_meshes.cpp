@@ -12,34 +12,11 @@
 #include <string>
 #include <utility>
 
+#include "app/bench/vec3_math.h"
+
 namespace meshfair::bench {
 
 namespace {
-
-Vec3 operator+(const Vec3& a, const Vec3& b)
-{
-    return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-Vec3 operator-(const Vec3& a, const Vec3& b)
-{
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 operator*(Scalar s, const Vec3& a)
-{
-    return {s * a[0], s * a[1], s * a[2]};
-}
-Scalar dot(const Vec3& a, const Vec3& b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec3 normalized(const Vec3& a)
-{
-    return (1 / std::sqrt(dot(a, a))) * a;
-}
 
 Index add_vertex(Mesh& mesh, const Vec3& p)
 {

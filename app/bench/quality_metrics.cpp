@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "app/bench/vec3_math.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
 
@@ -17,22 +18,6 @@ namespace {
 
 constexpr Scalar kNaN = std::numeric_limits<Scalar>::quiet_NaN();
 
-Vec3 sub(const Vec3& a, const Vec3& b)
-{
-    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Scalar dot(const Vec3& a, const Vec3& b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3& a, const Vec3& b)
-{
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Scalar norm(const Vec3& a)
-{
-    return std::sqrt(dot(a, a));
-}
 Vec3 point(std::span<const Scalar> x, Index i)
 {
     return {x[3 * i], x[3 * i + 1], x[3 * i + 2]};
@@ -50,10 +35,10 @@ Scalar angle_deg(const Vec3& a, const Vec3& b)
 
 Scalar segment_distance(const Vec3& p, const Vec3& a, const Vec3& b)
 {
-    const Vec3 ab = sub(b, a);
+    const Vec3 ab = b - a;
     const Scalar length2 = dot(ab, ab);
-    const Scalar t = length2 > 0 ? std::clamp(dot(sub(p, a), ab) / length2, 0.0, 1.0) : 0.0;
-    return norm(sub(p, {a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]}));
+    const Scalar t = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+    return norm(p - Vec3{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]});
 }
 
 } // namespace
@@ -72,21 +57,21 @@ Scalar mean_normal_angle_deg(const Mesh& mesh, std::span<const Scalar> x,
 
 Scalar point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
-    const Vec3 ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+    const Vec3 ab = b - a, ac = c - a, ap = p - a;
     if (norm(cross(ab, ac)) == 0)
         return std::min(
             {segment_distance(p, a, b), segment_distance(p, b, c), segment_distance(p, c, a)});
     const Scalar d1 = dot(ab, ap), d2 = dot(ac, ap);
     if (d1 <= 0 && d2 <= 0)
         return norm(ap); // vertex region a
-    const Vec3 bp = sub(p, b);
+    const Vec3 bp = p - b;
     const Scalar d3 = dot(ab, bp), d4 = dot(ac, bp);
     if (d3 >= 0 && d4 <= d3)
         return norm(bp); // vertex region b
     const Scalar vc = d1 * d4 - d3 * d2;
     if (vc <= 0 && d1 >= 0 && d3 <= 0)
         return segment_distance(p, a, b); // edge region ab
-    const Vec3 cp = sub(p, c);
+    const Vec3 cp = p - c;
     const Scalar d5 = dot(ab, cp), d6 = dot(ac, cp);
     if (d6 >= 0 && d5 <= d6)
         return norm(cp); // vertex region c
@@ -100,7 +85,7 @@ Scalar point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
     const Scalar v = vb * denom, w = vc * denom;
     const Vec3 q{a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
                  a[2] + ab[2] * v + ac[2] * w};
-    return norm(sub(p, q));
+    return norm(p - q);
 }
 
 SurfaceDistance::SurfaceDistance(const Mesh& mesh, std::span<const Scalar> x)
@@ -113,12 +98,11 @@ SurfaceDistance::SurfaceDistance(const Mesh& mesh, std::span<const Scalar> x)
         {
             triangles_.push_back({point(x, face[0]), point(x, face[k]), point(x, face[k + 1])});
             const auto& t = triangles_.back();
-            size_sum +=
-                std::max({norm(sub(t[1], t[0])), norm(sub(t[2], t[1])), norm(sub(t[0], t[2]))});
+            size_sum += std::max({norm(t[1] - t[0]), norm(t[2] - t[1]), norm(t[0] - t[2])});
         }
     }
     const BoundingBox box = bounding_box(x);
-    const Vec3 extent = sub(box.max, box.min);
+    const Vec3 extent = box.max - box.min;
     diagonal_ = norm(extent);
     origin_ = box.min;
     // About two triangles wide, and at most 256 cells along an axis.
@@ -223,9 +207,9 @@ Scalar signed_volume(const Mesh& mesh, std::span<const Scalar> x)
     for (Index f = 0; f < mesh.face_count(); ++f)
     {
         const auto face = mesh.face(f);
-        const Vec3 a = sub(point(x, face[0]), o);
+        const Vec3 a = point(x, face[0]) - o;
         for (size_t k = 1; k + 1 < face.size(); ++k)
-            six_volume += dot(a, cross(sub(point(x, face[k]), o), sub(point(x, face[k + 1]), o)));
+            six_volume += dot(a, cross(point(x, face[k]) - o, point(x, face[k + 1]) - o));
     }
     return six_volume / 6;
 }

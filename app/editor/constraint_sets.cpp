@@ -15,7 +15,7 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::pair<ConstraintKind, std::string_view> kNames[kConstraintKinds] = {
+constexpr std::pair<ConstraintKind, std::string_view> kKindNames[kConstraintKinds] = {
     {ConstraintKind::Region, "region"},         {ConstraintKind::Pin, "pin"},
     {ConstraintKind::Anchor, "anchor"},         {ConstraintKind::Centroid, "centroid"},
     {ConstraintKind::Normal, "normal"},         {ConstraintKind::HardNormal, "hard_normal"},
@@ -144,7 +144,7 @@ std::vector<Vec3> merged_normals(const std::vector<ConstraintSet>& sets, Constra
 
 std::string_view kind_name(ConstraintKind kind)
 {
-    for (const auto& [k, name] : kNames)
+    for (const auto& [k, name] : kKindNames)
         if (k == kind)
             return name;
     return {};
@@ -152,7 +152,7 @@ std::string_view kind_name(ConstraintKind kind)
 
 std::optional<ConstraintKind> kind_named(std::string_view name)
 {
-    for (const auto& [k, n] : kNames)
+    for (const auto& [k, n] : kKindNames)
         if (n == name)
             return k;
     return std::nullopt;

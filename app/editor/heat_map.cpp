@@ -10,7 +10,7 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<EnergyTerm, std::string_view>, 5> kNames = {{
+constexpr std::array<std::pair<EnergyTerm, std::string_view>, 5> kTermNames = {{
     {EnergyTerm::Total, "total"},
     {EnergyTerm::Edge, "edge"},
     {EnergyTerm::Soft, "anchor"},
@@ -22,7 +22,7 @@ constexpr std::array<std::pair<EnergyTerm, std::string_view>, 5> kNames = {{
 
 std::string_view heat_term_name(EnergyTerm term)
 {
-    for (const auto& [t, name] : kNames)
+    for (const auto& [t, name] : kTermNames)
         if (t == term)
             return name;
     return {};
@@ -30,7 +30,7 @@ std::string_view heat_term_name(EnergyTerm term)
 
 std::optional<EnergyTerm> heat_term_named(std::string_view name)
 {
-    for (const auto& [t, n] : kNames)
+    for (const auto& [t, n] : kTermNames)
         if (n == name)
             return t;
     return std::nullopt;

@@ -12,11 +12,6 @@ namespace {
 
 using Kind = ScriptAction::Kind;
 
-[[noreturn]] void fail(const std::string& name, const std::string& where, const std::string& why)
-{
-    throw InvalidInputError("'" + name + "': " + where + ": " + why);
-}
-
 // The session's settings with the keys an action gives replaced.
 SolverSettings merged_settings(const SolverSettings& g, const std::vector<std::string>& keys,
                                SolverSettings s)
@@ -79,6 +74,11 @@ void run_until_taken(EditorFrame& frame, ScriptHost& host)
 }
 
 } // namespace
+
+void script_error(const std::string& name, const std::string& where, const std::string& why)
+{
+    throw InvalidInputError("'" + name + "': " + where + ": " + why);
+}
 
 InputEvent input_event(InputEvent::Type type, ScreenPoint p, MouseButton button, Modifiers mods)
 {
@@ -175,7 +175,7 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                     {
                         if (a.writes)
                             throw WriteError(a.where + ": " + session.state().message);
-                        fail(script.name, a.where, session.state().message);
+                        script_error(script.name, a.where, session.state().message);
                     }
                 }
                 if (!a.interaction.empty())
@@ -210,11 +210,12 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                     std::string names;
                     for (const std::string& n : frame.ui().widget_names())
                         names += (names.empty() ? "" : ", ") + n;
-                    fail(script.name, a.where,
-                         "no widget '" + a.text + "' on screen (" +
-                             (frame.has_interface() ? "shown: " + names
-                                                    : std::string("no interface: run with --ui")) +
-                             ")");
+                    script_error(
+                        script.name, a.where,
+                        "no widget '" + a.text + "' on screen (" +
+                            (frame.has_interface() ? "shown: " + names
+                                                   : std::string("no interface: run with --ui")) +
+                            ")");
                 }
                 const ScreenPoint p{w->center_x(), w->center_y(), 0};
                 for (const InputEvent& e : drag_events({p, p}, MouseButton::Left, a.mods))
@@ -227,7 +228,7 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 break;
             case Kind::Play:
                 if (!session.dispatch(cmd::Play{a.count}))
-                    fail(script.name, a.where, session.state().message);
+                    script_error(script.name, a.where, session.state().message);
                 while (session.playing())
                     session.take_frame();
                 host.run_frame();

@@ -59,6 +59,10 @@ struct Script
 Script parse_script(const std::string& text, const std::string& name);
 Script read_script(const std::string& path);
 
+//! Throws the InvalidInputError of a script's action: "'name': where: why".
+[[noreturn]] void script_error(const std::string& name, const std::string& where,
+                               const std::string& why);
+
 //! \brief A stroke's dabs (one set, mode, radius, strength, curve and steps) as the script
 //! action that replays them bit for bit: {"paint": {..., "dabs": [[x, y, z], ...]}} on one
 //! line; the editor's trace prints it at the end of each Paint stroke.

@@ -19,11 +19,6 @@ namespace {
 using Json = nlohmann::json;
 using Kind = ScriptAction::Kind;
 
-[[noreturn]] void fail(const std::string& name, const std::string& where, const std::string& why)
-{
-    throw InvalidInputError("'" + name + "': " + where + ": " + why);
-}
-
 struct Reader
 {
     const std::string& name;
@@ -31,7 +26,7 @@ struct Reader
 
     [[noreturn]] void bad(const std::string& key, const std::string& why) const
     {
-        fail(name, where + "." + key, why);
+        script_error(name, where + "." + key, why);
     }
     std::string text(const Json& j, const std::string& key) const
     {
@@ -93,7 +88,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     ScriptAction a;
     a.where = r.where;
     if (!j.is_object())
-        fail(r.name, r.where, "an action must be a JSON object");
+        script_error(r.name, r.where, "an action must be a JSON object");
     static const char* const kinds[] = {"tool",          "elements",       "through",
                                         "brush_radius",  "drag",           "click",
                                         "scroll",        "move",           "key",
@@ -127,11 +122,11 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         if (std::find(std::begin(kinds), std::end(kinds), key) == std::end(kinds))
             r.bad(key, "is not an action or an action's option");
         if (!kind.empty())
-            fail(r.name, r.where, "has two actions ('" + kind + "' and '" + key + "')");
+            script_error(r.name, r.where, "has two actions ('" + kind + "' and '" + key + "')");
         kind = key;
     }
     if (kind.empty())
-        fail(r.name, r.where, "names no action");
+        script_error(r.name, r.where, "names no action");
     for (const auto& [option, owners] : options)
     {
         const std::string list = std::string(" ") + owners + " ";
@@ -616,13 +611,13 @@ Script parse_script(const std::string& text, const std::string& name)
     {
         for (const auto& [key, value] : j.items())
             if (key != "actions")
-                fail(name, key, "is unknown (a script is {\"actions\": [...]})");
+                script_error(name, key, "is unknown (a script is {\"actions\": [...]})");
         if (!j.contains("actions"))
-            fail(name, "actions", "is missing");
+            script_error(name, "actions", "is missing");
         list = &j["actions"];
     }
     if (!list->is_array())
-        fail(name, "actions", "must be a list of actions");
+        script_error(name, "actions", "must be a list of actions");
     Script script;
     script.name = name;
     for (size_t k = 0; k < list->size(); ++k)

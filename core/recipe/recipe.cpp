@@ -13,11 +13,6 @@ namespace meshfair {
 
 namespace {
 
-std::string item(const std::string& key, size_t k)
-{
-    return key + "[" + std::to_string(k) + "]";
-}
-
 // Names the entries of an element list and of the lists that follow it (targets, normals,
 // weights) in messages: "hard.vertices[1]", or, for a set merged from a JSON list of sets,
 // "soft[1].vertices[0]".
@@ -42,16 +37,16 @@ public:
     std::string operator()(size_t k) const
     {
         if (ends_.empty())
-            return item(whole(), k);
+            return recipe_item_key(whole(), k);
         const size_t s = set_of(k);
-        return item(set_name(s) + "." + list_, k - (s == 0 ? 0 : ends_[s - 1]));
+        return recipe_item_key(set_name(s) + "." + list_, k - (s == 0 ? 0 : ends_[s - 1]));
     }
     size_t set_of(size_t k) const
     {
         const auto s = std::upper_bound(ends_.begin(), ends_.end(), k) - ends_.begin();
         return std::min(static_cast<size_t>(s), ends_.empty() ? 0 : ends_.size() - 1);
     }
-    std::string set_name(size_t s) const { return item(section_, s); }
+    std::string set_name(size_t s) const { return recipe_item_key(section_, s); }
 
 private:
     std::string section_, list_;
@@ -275,7 +270,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
         }
         for (size_t k = 0; k < ns.soft.faces.size(); ++k)
             if (hard_faces[ns.soft.faces[k]])
-                throw RecipeError(item("normal_smoothing.soft.faces", k),
+                throw RecipeError(recipe_item_key("normal_smoothing.soft.faces", k),
                                   "face " + std::to_string(ns.soft.faces[k]) +
                                       " is also in normal_smoothing.hard.faces (hard and soft "
                                       "normal sets must be disjoint)");

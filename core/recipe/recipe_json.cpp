@@ -20,11 +20,6 @@ std::string child(const std::string& key, const std::string& name)
     return key.empty() ? name : key + "." + name;
 }
 
-std::string item(const std::string& key, size_t k)
-{
-    return key + "[" + std::to_string(k) + "]";
-}
-
 void expect_object(const Json& j, const std::string& key,
                    std::initializer_list<std::string_view> allowed)
 {
@@ -105,9 +100,10 @@ std::vector<Index> indices(const Json& j, const std::string& key)
     out.reserve(j.size());
     for (size_t k = 0; k < j.size(); ++k)
     {
-        const std::int64_t v = integer(j[k], item(key, k));
+        const std::int64_t v = integer(j[k], recipe_item_key(key, k));
         if (v < 0 || v > kMaxElements)
-            throw RecipeError(item(key, k), "index " + std::to_string(v) + " is out of range");
+            throw RecipeError(recipe_item_key(key, k),
+                              "index " + std::to_string(v) + " is out of range");
         out.push_back(static_cast<Index>(v));
     }
     return out;
@@ -137,10 +133,10 @@ std::vector<Vec3> points(const Json& j, const std::string& key)
     {
         const Json& p = j[k];
         if (!p.is_array() || p.size() != 3)
-            throw RecipeError(item(key, k), "must be an [x, y, z] triple");
+            throw RecipeError(recipe_item_key(key, k), "must be an [x, y, z] triple");
         Vec3 v;
         for (size_t a = 0; a < 3; ++a)
-            v[a] = number(p[a], item(item(key, k), a));
+            v[a] = number(p[a], recipe_item_key(recipe_item_key(key, k), a));
         out.push_back(v);
     }
     return out;
@@ -161,7 +157,7 @@ std::vector<Scalar> weights(const Json& j, const std::string& key)
     std::vector<Scalar> out;
     out.reserve(j.size());
     for (size_t k = 0; k < j.size(); ++k)
-        out.push_back(weight(j[k], item(key, k)));
+        out.push_back(weight(j[k], recipe_item_key(key, k)));
     return out;
 }
 
@@ -179,7 +175,7 @@ std::vector<Set> sets_of(const Json& j, const std::string& key, ParseOne parse_o
     std::vector<Set> sets;
     sets.reserve(j.size());
     for (size_t k = 0; k < j.size(); ++k)
-        sets.push_back(parse_one(j[k], item(key, k)));
+        sets.push_back(parse_one(j[k], recipe_item_key(key, k)));
     return sets;
 }
 
@@ -193,7 +189,7 @@ void check_set_list(const std::vector<Set>& sets, const std::string& key, const 
 {
     for (size_t k = 0; k < sets.size(); ++k)
     {
-        const std::string set = item(key, k);
+        const std::string set = recipe_item_key(key, k);
         const IndexSet& e = sets[k].*elements;
         if (e.all)
             throw RecipeError(child(set, list), "\"all\" is allowed only when " + key +
@@ -203,8 +199,9 @@ void check_set_list(const std::vector<Set>& sets, const std::string& key, const 
         if ((given == 0) != (sets[0].*targets).empty())
             throw RecipeError(child(set, targets_name),
                               std::string(given == 0 ? "is missing" : "is given") + ", but " +
-                                  item(key, 0) + (given == 0 ? " gives " : " gives no ") +
-                                  targets_name + ": in a list, every set gives them or none does");
+                                  recipe_item_key(key, 0) +
+                                  (given == 0 ? " gives " : " gives no ") + targets_name +
+                                  ": in a list, every set gives them or none does");
         if (given != 0 && given != count)
             throw RecipeError(child(set, targets_name), "has " + std::to_string(given) +
                                                             " entries but " + child(set, list) +
@@ -240,8 +237,9 @@ Set merge_sets(const std::vector<Set>& sets, const std::string& key, IndexSet Se
         {
             const Scalar w = set.weights.empty() ? set.mu : set.mu * set.weights[k];
             if (!std::isfinite(w))
-                throw RecipeError(item(child(item(key, s), "weights"), k),
-                                  "times " + child(item(key, s), "mu") + " is not finite");
+                throw RecipeError(
+                    recipe_item_key(child(recipe_item_key(key, s), "weights"), k),
+                    "times " + child(recipe_item_key(key, s), "mu") + " is not finite");
             merged.weights.push_back(w);
         }
         merged.set_ends.push_back(into.size());
@@ -343,7 +341,7 @@ CentroidConstraints parse_centroid(const Json& j)
     // One term, one denominator: every set must name the same (omitted: "paper").
     for (size_t k = 1; k < sets.size(); ++k)
         if (sets[k].denominator != sets[0].denominator)
-            throw RecipeError(child(item("centroid", k), "denominator"),
+            throw RecipeError(child(recipe_item_key("centroid", k), "denominator"),
                               std::string("\"") + denominator_name(sets[k].denominator) +
                                   "\" differs from centroid[0]'s \"" +
                                   denominator_name(sets[0].denominator) +
@@ -409,7 +407,7 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
     // One term, one source of normals: every set must name the same.
     for (size_t k = 1; k < sets.size(); ++k)
         if (sets[k].source != sets[0].source)
-            throw RecipeError(child(item("normal", k), "normals"),
+            throw RecipeError(child(recipe_item_key("normal", k), "normals"),
                               std::string(source_name(sets[k].source)) +
                                   " differs from normal[0]'s " + source_name(sets[0].source) +
                                   " (the sets of a list take their normals from one source)");
@@ -761,7 +759,8 @@ Falloff parse_falloff(const Json& s, const std::string& key)
             else if (a[k] == "pins")
                 f.pins = true;
             else
-                throw RecipeError(item(child(key, "around"), k), "must be \"border\" or \"pins\"");
+                throw RecipeError(recipe_item_key(child(key, "around"), k),
+                                  "must be \"border\" or \"pins\"");
     }
     return f;
 }

@@ -19,7 +19,7 @@ using namespace meshfair::app;
 
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kHistoryWidth = 320, kHistoryHeight = 240;
 
 struct Selection
 {
@@ -35,7 +35,7 @@ Selection selection_of(const Document& d)
 // One random action through the session's input calls, as the mouse and keys make them.
 void random_action(EditorSession& s, std::mt19937& rng)
 {
-    std::uniform_real_distribution<double> x(-20, kWidth + 20), y(-20, kHeight + 20);
+    std::uniform_real_distribution<double> x(-20, kHistoryWidth + 20), y(-20, kHistoryHeight + 20);
     std::uniform_int_distribution<int> pick(0, 99);
     const int what = pick(rng);
     const Modifiers mods{.shift = pick(rng) < 30, .ctrl = pick(rng) < 20, .alt = false};
@@ -86,7 +86,7 @@ TEST_SUITE("History")
             Mesh bunny_like = test::icosphere(3);
             EditorSession s(make_document(std::move(bunny_like), "sphere.obj"), renderer);
             s.state().offscreen = true;
-            s.set_view_rect(ViewRect::whole(kWidth, kHeight));
+            s.set_view_rect(ViewRect::whole(kHistoryWidth, kHistoryHeight));
             s.camera().frame(s.document().box, s.aspect());
             std::mt19937 rng(seed);
 

@@ -19,7 +19,7 @@ using namespace meshfair::app;
 
 namespace {
 
-constexpr int kWidth = 480, kHeight = 480;
+constexpr int kToolsWidth = 480, kToolsHeight = 480;
 constexpr int kN = 10; // a 10 x 10 grid of unit quads, vertices at integer (x, y), z = 0
 
 // A session on a grid seen from the front, orthographic, the whole framebuffer its view.
@@ -30,7 +30,7 @@ struct GridSession
     explicit GridSession(Mesh mesh = test::open_grid(kN, kN))
         : session(make_document(std::move(mesh), "grid.obj"), renderer)
     {
-        session.set_view_rect(ViewRect::whole(kWidth, kHeight));
+        session.set_view_rect(ViewRect::whole(kToolsWidth, kToolsHeight));
         session.state().offscreen = true;
         Camera& c = session.camera();
         c.projection = Projection::Orthographic;
@@ -39,7 +39,7 @@ struct GridSession
     // Where a world point (z = 0) is in the view's pixels.
     ScreenPoint at(double x, double y, double z = 0) const
     {
-        const glm::dvec3 w = session.camera().project({x, y, z}, kWidth, kHeight);
+        const glm::dvec3 w = session.camera().project({x, y, z}, kToolsWidth, kToolsHeight);
         return {w.x, w.y, 0};
     }
     void drag(std::initializer_list<ScreenPoint> path, Modifiers mods = {})

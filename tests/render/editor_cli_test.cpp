@@ -28,7 +28,7 @@ Run editor(const std::string& args, const std::string& env = "env -u DISPLAY")
                              test::shell_quote(MESHFAIR_EDITOR) + " " + args);
 }
 
-std::string bunny()
+std::string bunny_argument()
 {
     return test::shell_quote((test::assets_dir() / "bunny.obj").string());
 }
@@ -41,7 +41,8 @@ TEST_SUITE("meshfair")
     {
         const fs::path dir = test::temp_dir();
         const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
-        const std::string common = "--offscreen " + bunny() + " --size 320x200 --mode flat,wire";
+        const std::string common =
+            "--offscreen " + bunny_argument() + " --size 320x200 --mode flat,wire";
         REQUIRE(editor(common + " --screenshot " + test::shell_quote(a)).code == 0);
         REQUIRE(editor(common + " --screenshot " + test::shell_quote(b)).code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
@@ -55,10 +56,10 @@ TEST_SUITE("meshfair")
         const fs::path dir = test::temp_dir();
         const std::string view = (dir / "view.json").string();
         const std::string a = (dir / "a.png").string(), b = (dir / "b.png").string();
-        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " +
+        REQUIRE(editor("--offscreen " + bunny_argument() + " --size 300x300 --screenshot " +
                        test::shell_quote(a) + " --save-view " + test::shell_quote(view))
                     .code == 0);
-        REQUIRE(editor("--offscreen " + bunny() + " --size 300x300 --screenshot " +
+        REQUIRE(editor("--offscreen " + bunny_argument() + " --size 300x300 --screenshot " +
                        test::shell_quote(b) + " --view " + test::shell_quote(view))
                     .code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
@@ -68,7 +69,8 @@ TEST_SUITE("meshfair")
     {
         const fs::path dir = test::temp_dir();
         const std::string shot = (dir / "shot.png").string();
-        const Run r = editor(bunny() + " --size 200x160 --screenshot " + test::shell_quote(shot));
+        const Run r =
+            editor(bunny_argument() + " --size 200x160 --screenshot " + test::shell_quote(shot));
         CHECK(r.code == 0);
         CHECK(r.err.find("meshfair: no display") == 0);
         CHECK(r.err.find("rendering offscreen to " + shot + " instead") != std::string::npos);
@@ -91,21 +93,22 @@ TEST_SUITE("meshfair")
 
         const fs::path bad_view = dir / "view.json";
         test::write_bytes(bad_view, "{\"distance\": 0}");
-        r = editor("--offscreen " + bunny() + " --view " + test::shell_quote(bad_view.string()) +
-                   " --screenshot " + test::shell_quote(shot));
+        r = editor("--offscreen " + bunny_argument() + " --view " +
+                   test::shell_quote(bad_view.string()) + " --screenshot " +
+                   test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err ==
               "meshfair: '" + bad_view.string() + "': view field 'distance' must be positive\n");
 
-        r = editor("--offscreen " + bunny() + " --mode sketchy --screenshot " +
+        r = editor("--offscreen " + bunny_argument() + " --mode sketchy --screenshot " +
                    test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err.find("unknown mode 'sketchy'") != std::string::npos);
-        r = editor("--offscreen " + bunny() + " --size 12x4000 --screenshot " +
+        r = editor("--offscreen " + bunny_argument() + " --size 12x4000 --screenshot " +
                    test::shell_quote(shot));
         CHECK(r.code == 2);
         CHECK(r.err.find("'12x4000' is not WxH") != std::string::npos);
-        r = editor("--offscreen " + bunny());
+        r = editor("--offscreen " + bunny_argument());
         CHECK(r.code == 2);
         CHECK(r.err == "meshfair: --offscreen needs --screenshot OUT.png\n");
         r = editor("--offscreen " + test::shell_quote((dir / "missing.obj").string()) +
@@ -118,7 +121,7 @@ TEST_SUITE("meshfair")
     TEST_CASE("a screenshot that cannot be written exits with code 3")
     {
         const fs::path dir = test::temp_dir();
-        const Run r = editor("--offscreen " + bunny() + " --size 64x64 --screenshot " +
+        const Run r = editor("--offscreen " + bunny_argument() + " --size 64x64 --screenshot " +
                              test::shell_quote((dir / "no" / "such" / "dir.png").string()));
         CHECK(r.code == 3);
         CHECK(r.err.find("dir.png': cannot create a temporary file beside it") !=

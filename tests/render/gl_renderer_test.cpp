@@ -18,7 +18,7 @@ using namespace meshfair::app;
 
 namespace {
 
-constexpr int kWidth = 400, kHeight = 200;
+constexpr int kRendererWidth = 400, kRendererHeight = 200;
 
 // Two unit quads side by side in z = 0, (0, 0) to (2, 1), seen from the front.
 struct TwoQuads
@@ -28,7 +28,7 @@ struct TwoQuads
     TwoQuads(Projection projection)
     {
         camera.projection = projection;
-        camera.frame(document.box, double(kWidth) / kHeight);
+        camera.frame(document.box, double(kRendererWidth) / kRendererHeight);
     }
 };
 
@@ -40,17 +40,17 @@ TEST_SUITE("GlRenderer")
     {
         for (const Projection projection : {Projection::Orthographic, Projection::Perspective})
         {
-            test::offscreen_context(kWidth, kHeight);
+            test::offscreen_context(kRendererWidth, kRendererHeight);
             TwoQuads s(projection);
             GlRenderer r;
             r.set_mesh(s.document.mesh, s.document.draw_data);
             const auto pixel_of = [&](glm::dvec3 p) {
-                const glm::dvec3 w = s.camera.project(p, kWidth, kHeight);
+                const glm::dvec3 w = s.camera.project(p, kRendererWidth, kRendererHeight);
                 return std::pair{int(w.x), int(w.y)};
             };
             // Inside the left quad, near its corner (0, 1): vertex 3 of the 3 x 2 grid.
             auto [x, y] = pixel_of({0.1, 0.85, 0});
-            PickResult p = r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y);
+            PickResult p = r.pick(s.camera, ViewRect::whole(kRendererWidth, kRendererHeight), x, y);
             REQUIRE(p.hit);
             CHECK(p.face == 0);
             CHECK(p.vertex == 3);
@@ -59,13 +59,14 @@ TEST_SUITE("GlRenderer")
             CHECK(std::abs(p.point.z) < 1e-3);
             // Inside the right quad, near (2, 0): vertex 2.
             std::tie(x, y) = pixel_of({1.9, 0.1, 0});
-            p = r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y);
+            p = r.pick(s.camera, ViewRect::whole(kRendererWidth, kRendererHeight), x, y);
             REQUIRE(p.hit);
             CHECK(p.face == 1);
             CHECK(p.vertex == 2);
             // The window's corner is background.
-            CHECK_FALSE(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), 0, 0).hit);
-            CHECK_FALSE(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), -1, 5)
+            CHECK_FALSE(
+                r.pick(s.camera, ViewRect::whole(kRendererWidth, kRendererHeight), 0, 0).hit);
+            CHECK_FALSE(r.pick(s.camera, ViewRect::whole(kRendererWidth, kRendererHeight), -1, 5)
                             .hit); // outside the window
         }
     }
@@ -73,8 +74,8 @@ TEST_SUITE("GlRenderer")
     TEST_CASE("a view inside a larger framebuffer picks in its own pixels")
     {
         // The view is the right 300 x 150 of a 400 x 200 framebuffer, 50 rows down.
-        test::offscreen_context(kWidth, kHeight);
-        const ViewRect rect{kWidth, kHeight, 100, 50, 300, 150};
+        test::offscreen_context(kRendererWidth, kRendererHeight);
+        const ViewRect rect{kRendererWidth, kRendererHeight, 100, 50, 300, 150};
         Document d = make_document(test::open_grid(2, 1), "two_quads.obj");
         Camera c;
         c.projection = Projection::Orthographic;
@@ -88,25 +89,26 @@ TEST_SUITE("GlRenderer")
         CHECK(p.face == 1);
         CHECK(p.point.x == doctest::Approx(1.5).epsilon(0.02));
         // The frame shows the mesh there too: that pixel of the framebuffer is the surface.
-        const Image image = r.read_pixels(kWidth, kHeight);
-        const size_t at = 4 * (size_t(rect.y + int(w.y)) * kWidth + size_t(rect.x + int(w.x)));
+        const Image image = r.read_pixels(kRendererWidth, kRendererHeight);
+        const size_t at =
+            4 * (size_t(rect.y + int(w.y)) * kRendererWidth + size_t(rect.x + int(w.x)));
         const DisplayOptions o;
         CHECK(std::abs(int(image.rgba[at]) - int(o.background[0] * 255)) > 40);
         // ...and left of the view, where nothing is drawn, the background.
-        CHECK(std::abs(int(image.rgba[4 * (size_t(100) * kWidth + 20)]) -
+        CHECK(std::abs(int(image.rgba[4 * (size_t(100) * kRendererWidth + 20)]) -
                        int(o.background[0] * 255 + 0.5f)) <= 1);
     }
 
     TEST_CASE(
         "visibility: a sphere's vertices in front of its silhouette are shown, the others not")
     {
-        test::offscreen_context(kWidth, kHeight);
+        test::offscreen_context(kRendererWidth, kRendererHeight);
         const Document sphere = make_document(test::icosphere(3), "sphere.obj");
         Camera c;
-        c.frame(sphere.box, double(kWidth) / kHeight); // front view: the eye on +z
+        c.frame(sphere.box, double(kRendererWidth) / kRendererHeight); // front view: the eye on +z
         GlRenderer r;
         r.set_mesh(sphere.mesh, sphere.draw_data);
-        const Visibility v = r.visibility(c, ViewRect::whole(kWidth, kHeight));
+        const Visibility v = r.visibility(c, ViewRect::whole(kRendererWidth, kRendererHeight));
         REQUIRE(v.vertices.size() == static_cast<size_t>(sphere.mesh.vertex_count()));
         REQUIRE(v.projected.size() == v.vertices.size());
         // Seen from distance d, a unit sphere's silhouette is the circle z = 1 / d: the eye
@@ -152,7 +154,7 @@ TEST_SUITE("GlRenderer")
 
     TEST_CASE("visibility: a vertex hidden behind a nearer face is not shown")
     {
-        test::offscreen_context(kWidth, kHeight);
+        test::offscreen_context(kRendererWidth, kRendererHeight);
         // A big quad at z = 1 in front of a small one at z = 0 (the eye on +z).
         const Document d = make_document(test::make_mesh({{-2, -2, 1},
                                                           {2, -2, 1},
@@ -165,10 +167,10 @@ TEST_SUITE("GlRenderer")
                                                          {{0, 1, 2, 3}, {4, 5, 6, 7}}),
                                          "layers.obj");
         Camera c;
-        c.frame(d.box, double(kWidth) / kHeight);
+        c.frame(d.box, double(kRendererWidth) / kRendererHeight);
         GlRenderer r;
         r.set_mesh(d.mesh, d.draw_data);
-        const Visibility v = r.visibility(c, ViewRect::whole(kWidth, kHeight));
+        const Visibility v = r.visibility(c, ViewRect::whole(kRendererWidth, kRendererHeight));
         CHECK(std::count(v.vertices.begin(), v.vertices.begin() + 4, 1) == 4);
         CHECK(std::count(v.vertices.begin() + 4, v.vertices.end(), 1) == 0);
         CHECK(v.faces == std::vector<char>{1, 0});
@@ -176,7 +178,7 @@ TEST_SUITE("GlRenderer")
 
     TEST_CASE("updating positions re-uploads without reallocating, and the picture follows")
     {
-        test::offscreen_context(kWidth, kHeight);
+        test::offscreen_context(kRendererWidth, kRendererHeight);
         TwoQuads s(Projection::Orthographic);
         GlRenderer r;
         r.set_mesh(s.document.mesh, s.document.draw_data);
@@ -185,21 +187,23 @@ TEST_SUITE("GlRenderer")
         const int allocations = r.buffer_allocations();
         CHECK(allocations == 10);
         const DisplayOptions o;
-        r.draw(s.camera, o, ViewRect::whole(kWidth, kHeight));
-        const Image before = r.read_pixels(kWidth, kHeight);
+        r.draw(s.camera, o, ViewRect::whole(kRendererWidth, kRendererHeight));
+        const Image before = r.read_pixels(kRendererWidth, kRendererHeight);
         // Move the mesh half a unit down: the top row of pixels it covered is background.
         std::vector<Scalar> moved = s.document.mesh.positions;
         for (size_t i = 1; i < moved.size(); i += 3)
             moved[i] -= 0.5;
         r.update_positions(moved);
-        r.draw(s.camera, o, ViewRect::whole(kWidth, kHeight));
-        const Image after = r.read_pixels(kWidth, kHeight);
+        r.draw(s.camera, o, ViewRect::whole(kRendererWidth, kRendererHeight));
+        const Image after = r.read_pixels(kRendererWidth, kRendererHeight);
         CHECK(r.buffer_allocations() == allocations);
         const ImageDifference d = compare_images(before, after, 8);
         CHECK(d.fraction_over_tolerance > 0.05);
         const auto [x, y] =
-            std::pair{kWidth / 2, int(s.camera.project({1, 0.9, 0}, kWidth, kHeight).y)};
-        CHECK(r.pick(s.camera, ViewRect::whole(kWidth, kHeight), x, y).hit == false);
+            std::pair{kRendererWidth / 2,
+                      int(s.camera.project({1, 0.9, 0}, kRendererWidth, kRendererHeight).y)};
+        CHECK(r.pick(s.camera, ViewRect::whole(kRendererWidth, kRendererHeight), x, y).hit ==
+              false);
         r.set_mesh(s.document.mesh, s.document.draw_data); // a new connectivity does allocate
         CHECK(r.buffer_allocations() == 2 * allocations);
     }
@@ -208,10 +212,10 @@ TEST_SUITE("GlRenderer")
         "the face area vectors go up only while flat shading shows them, and a flat "
         "frame after smooth ones shows the shape of the last update")
     {
-        test::offscreen_context(kWidth, kHeight);
+        test::offscreen_context(kRendererWidth, kRendererHeight);
         Document d = make_document(test::open_grid(6, 3), "bumps.obj");
         Camera camera;
-        camera.frame(d.box, double(kWidth) / kHeight);
+        camera.frame(d.box, double(kRendererWidth) / kRendererHeight);
         // Bumps in z: faces of many orientations, each its own flat shade.
         std::vector<Scalar> moved = d.mesh.positions;
         for (size_t i = 0; i < moved.size(); i += 3)
@@ -221,7 +225,7 @@ TEST_SUITE("GlRenderer")
         positions_to_float(moved, positions);
         face_area_vectors(moved, d.mesh, areas);
         vertex_normals(d.draw_data, areas, normals);
-        const ViewRect whole = ViewRect::whole(kWidth, kHeight);
+        const ViewRect whole = ViewRect::whole(kRendererWidth, kRendererHeight);
         DisplayOptions smooth, flat;
         flat.shading = Shading::Flat;
 
@@ -232,11 +236,11 @@ TEST_SUITE("GlRenderer")
         r.update_geometry(positions, normals, areas); // smooth shading: positions and normals
         CHECK(r.face_area_uploads() == uploads);
         r.draw(camera, smooth, whole);
-        const Image smooth_image = r.read_pixels(kWidth, kHeight);
+        const Image smooth_image = r.read_pixels(kRendererWidth, kRendererHeight);
         CHECK(r.face_area_uploads() == uploads);
         r.draw(camera, flat, whole); // turned on: the area vectors of the moved shape, once
         CHECK(r.face_area_uploads() == uploads + 1);
-        const Image flat_image = r.read_pixels(kWidth, kHeight);
+        const Image flat_image = r.read_pixels(kRendererWidth, kRendererHeight);
         r.draw(camera, flat, whole);
         CHECK(r.face_area_uploads() == uploads + 1);
         r.update_geometry(positions, normals, areas); // flat shown: uploaded with the rest
@@ -247,14 +251,14 @@ TEST_SUITE("GlRenderer")
         reference.set_mesh(d.mesh, d.draw_data);
         reference.update_positions(moved);
         reference.draw(camera, flat, whole);
-        const Image expected = reference.read_pixels(kWidth, kHeight);
+        const Image expected = reference.read_pixels(kRendererWidth, kRendererHeight);
         CHECK(compare_images(flat_image, expected, 1).pixels_over_tolerance == 0);
         CHECK(compare_images(flat_image, smooth_image, 8).fraction_over_tolerance > 0.02);
     }
 
     TEST_CASE("positions or colours of the wrong size are refused")
     {
-        test::offscreen_context(kWidth, kHeight);
+        test::offscreen_context(kRendererWidth, kRendererHeight);
         TwoQuads s(Projection::Orthographic);
         GlRenderer r;
         r.set_mesh(s.document.mesh, s.document.draw_data);

@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr int kWidth = 400, kHeight = 300;
+constexpr int kSessionWidth = 400, kSessionHeight = 300;
 
 // A noisy bunny written to a file, and a session on it.
 struct NoisyBunny
@@ -42,11 +42,11 @@ struct NoisyBunny
     EditorSession session;
     explicit NoisyBunny(const fs::path& dir)
         : path(write_noisy(dir)),
-          renderer((test::offscreen_context(kWidth, kHeight), GlRenderer())),
+          renderer((test::offscreen_context(kSessionWidth, kSessionHeight), GlRenderer())),
           session(load_document(path.string()), renderer)
     {
         session.state().offscreen = true;
-        session.set_view_rect(ViewRect::whole(kWidth, kHeight));
+        session.set_view_rect(ViewRect::whole(kSessionWidth, kSessionHeight));
         session.camera().frame(session.document().box, session.aspect());
     }
     static fs::path write_noisy(const fs::path& dir)
@@ -265,7 +265,7 @@ TEST_SUITE("Live solving")
         }();
         // Grab the first pin where it is drawn and drag it 30 pixels to the right.
         const glm::dvec3 at =
-            s.camera().project({before[0], before[1], before[2]}, kWidth, kHeight);
+            s.camera().project({before[0], before[1], before[2]}, kSessionWidth, kSessionHeight);
         s.dispatch(cmd::SetTool{ToolKind::MovePins});
         s.mouse_press(MouseButton::Left, {}, at.x, at.y);
         s.mouse_move(at.x + 10, at.y);
@@ -275,8 +275,9 @@ TEST_SUITE("Live solving")
         const ConstraintSet& pins = s.document().sets[0];
         REQUIRE(pins.targets.size() == pins.vertices.size());
         // The grabbed point moved with the cursor, in the view plane (same depth).
-        const glm::dvec3 moved = s.camera().project(
-            {pins.targets[0][0], pins.targets[0][1], pins.targets[0][2]}, kWidth, kHeight);
+        const glm::dvec3 moved =
+            s.camera().project({pins.targets[0][0], pins.targets[0][1], pins.targets[0][2]},
+                               kSessionWidth, kSessionHeight);
         CHECK(moved.x == doctest::Approx(at.x + 30).epsilon(1e-6));
         CHECK(moved.y == doctest::Approx(at.y).epsilon(1e-6));
         CHECK(moved.z == doctest::Approx(at.z).epsilon(1e-9));
@@ -343,7 +344,7 @@ TEST_SUITE("Live solving")
         REQUIRE(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
         const Vec3 c = face_centroid(s.document().mesh, s.document().mesh.positions,
                                      s.document().sets[0].faces[0]);
-        const glm::dvec3 at = s.camera().project({c[0], c[1], c[2]}, kWidth, kHeight);
+        const glm::dvec3 at = s.camera().project({c[0], c[1], c[2]}, kSessionWidth, kSessionHeight);
         s.dispatch(cmd::SetTool{ToolKind::AimNormals});
         s.mouse_press(MouseButton::Left, {}, at.x, at.y);
         for (int k = 1; k <= 4; ++k)

@@ -20,12 +20,12 @@ using namespace meshfair;
 
 namespace {
 
-Mesh parse(const std::string& text, io::ReadReport* report = nullptr)
+Mesh parse_off(const std::string& text, io::ReadReport* report = nullptr)
 {
     return test::read_as(text, io::Format::Off, report);
 }
 
-std::string error_of(const std::string& text)
+std::string off_error(const std::string& text)
 {
     return test::read_error(text, io::Format::Off);
 }
@@ -44,7 +44,7 @@ const std::string kFaces = "4 0 1 2 3\n3 1 4 2\n";
 
 Mesh square()
 {
-    return parse("OFF\n5 2 0\n" + kVertices + kFaces);
+    return parse_off("OFF\n5 2 0\n" + kVertices + kFaces);
 }
 
 } // namespace
@@ -54,7 +54,7 @@ TEST_SUITE("ReadOff")
     TEST_CASE("vertices and polygons are read in file order")
     {
         io::ReadReport report;
-        const Mesh m = parse("OFF\n5 2 0\n" + kVertices + kFaces, &report);
+        const Mesh m = parse_off("OFF\n5 2 0\n" + kVertices + kFaces, &report);
         CHECK(report.format == io::Format::Off);
         CHECK(report.encoding == io::Encoding::Ascii);
         CHECK(report.notes.empty());
@@ -79,7 +79,7 @@ TEST_SUITE("ReadOff")
         std::string text = "OFF\n" + std::to_string(std::size(values)) + " 0 0\n";
         for (const char* v : values)
             text += std::string(v) + " " + v + " " + v + "\n";
-        const Mesh m = parse(text);
+        const Mesh m = parse_off(text);
         for (size_t k = 0; k < std::size(values); ++k)
         {
             const double expected = std::strtod(values[k], nullptr);
@@ -91,14 +91,14 @@ TEST_SUITE("ReadOff")
     TEST_CASE("the counts may share the keyword's line and the edge count may be missing")
     {
         const Mesh m = square();
-        CHECK(parse("OFF 5 2 0\n" + kVertices + kFaces) == m);
-        CHECK(parse("OFF\n5 2\n" + kVertices + kFaces) == m);
-        CHECK(parse("OFF 5 2\n" + kVertices + kFaces) == m);
+        CHECK(parse_off("OFF 5 2 0\n" + kVertices + kFaces) == m);
+        CHECK(parse_off("OFF\n5 2\n" + kVertices + kFaces) == m);
+        CHECK(parse_off("OFF 5 2\n" + kVertices + kFaces) == m);
     }
 
     TEST_CASE("comments and blank lines may appear anywhere")
     {
-        const Mesh m = parse(
+        const Mesh m = parse_off(
             "# exported by hand\n\nOFF # the keyword\n  # indented comment\n5 2 12 # counts\n"
             "0 0 0\n\n1 0 0 # vertex 1\n1 1 0\n#\n0 1 0\n2 0 0#glued\n"
             "# faces\n4 0 1 2 3 # quad\n\n3 1 4 2\n# trailing comment\n\n");
@@ -116,14 +116,14 @@ TEST_SUITE("ReadOff")
         for (char& c : cr)
             if (c == '\n')
                 c = '\r';
-        CHECK(parse(crlf) == m);
-        CHECK(parse(cr) == m);
+        CHECK(parse_off(crlf) == m);
+        CHECK(parse_off(cr) == m);
     }
 
     TEST_CASE("COFF vertex colours are ignored with one note")
     {
         io::ReadReport report;
-        const Mesh m = parse(
+        const Mesh m = parse_off(
             "COFF\n5 2 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n1 1 0 0 0 255 255\n"
             "0 1 0 0.5 0.5 0.5 1\n2 0 0 10 20 30\n" +
                 kFaces,
@@ -134,9 +134,9 @@ TEST_SUITE("ReadOff")
 
     TEST_CASE("NOFF normals and every combination of ST, C and N are accepted")
     {
-        CHECK(parse("NOFF\n5 2 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0 0 0 1\n"
-                    "2 0 0 0 0 1\n" +
-                    kFaces) == square());
+        CHECK(parse_off("NOFF\n5 2 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0 0 0 1\n"
+                        "2 0 0 0 0 1\n" +
+                        kFaces) == square());
         CHECK(notes_of("NOFF\n1 0 0\n0 0 0 0 0 1\n") ==
               std::vector<std::string>{"ignored vertex normals (NOFF)"});
         CHECK(notes_of("CNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1\n") ==
@@ -154,7 +154,7 @@ TEST_SUITE("ReadOff")
     {
         io::ReadReport report;
         const Mesh m =
-            parse("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2 255 0 0 0.5\n", &report);
+            parse_off("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2 255 0 0 0.5\n", &report);
         CHECK(m == square());
         CHECK(report.notes == std::vector<std::string>{"ignored the colours of 1 face (first "
                                                        "at t.off:9:1)"});
@@ -174,7 +174,7 @@ TEST_SUITE("ReadOff")
     TEST_CASE("repeated consecutive indices are collapsed and reported")
     {
         io::ReadReport report;
-        const Mesh m = parse("OFF\n5 2 0\n" + kVertices + "5 0 1 1 2 3\n4 1 4 2 1\n", &report);
+        const Mesh m = parse_off("OFF\n5 2 0\n" + kVertices + "5 0 1 1 2 3\n4 1 4 2 1\n", &report);
         CHECK(m == square());
         CHECK(report.notes ==
               std::vector<std::string>{"collapsed 2 consecutive repeated vertex indices in 2 "
@@ -183,86 +183,86 @@ TEST_SUITE("ReadOff")
 
     TEST_CASE("zero counts give an empty mesh and vertices without faces a point cloud")
     {
-        const Mesh empty = parse("OFF\n0 0 0\n");
+        const Mesh empty = parse_off("OFF\n0 0 0\n");
         CHECK(empty.vertex_count() == 0);
         CHECK(empty.face_count() == 0);
         io::ReadReport report;
-        const Mesh cloud = parse("OFF\n2 0 0\n0 0 0\n1 2 3\n", &report);
+        const Mesh cloud = parse_off("OFF\n2 0 0\n0 0 0\n1 2 3\n", &report);
         CHECK(cloud.vertex_count() == 2);
         CHECK(report.notes.back().find("point cloud") != std::string::npos);
     }
 
     TEST_CASE("malformed headers are refused with the place and the reason")
     {
-        CHECK(error_of("") == "t.off: empty file");
-        CHECK(error_of("# only a comment\n\n") ==
+        CHECK(off_error("") == "t.off: empty file");
+        CHECK(off_error("# only a comment\n\n") ==
               "t.off: no OFF header (the file holds only comments and blank lines)");
-        CHECK(error_of("PLY\n3 1 0\n") ==
+        CHECK(off_error("PLY\n3 1 0\n") ==
               "t.off:1:1: expected an OFF header keyword ([ST][C][N]OFF), found 'PLY'");
-        CHECK(error_of("off\n0 0 0\n") ==
+        CHECK(off_error("off\n0 0 0\n") ==
               "t.off:1:1: expected an OFF header keyword ([ST][C][N]OFF), found 'off'");
-        CHECK(error_of("CCOFF\n0 0 0\n") ==
+        CHECK(off_error("CCOFF\n0 0 0\n") ==
               "t.off:1:1: expected an OFF header keyword ([ST][C][N]OFF), found 'CCOFF'");
-        CHECK(error_of("  4OFF\n0 0 0\n") ==
+        CHECK(off_error("  4OFF\n0 0 0\n") ==
               "t.off:1:3: '4OFF': 4-D vertices are not supported (MeshFair reads 3-D OFF)");
-        CHECK(error_of("nOFF\n3\n0 0 0\n") ==
+        CHECK(off_error("nOFF\n3\n0 0 0\n") ==
               "t.off:1:1: 'nOFF': vertices of any dimension "
               "are not supported (MeshFair reads 3-D OFF)");
-        CHECK(error_of("OFF BINARY\n") ==
+        CHECK(off_error("OFF BINARY\n") ==
               "t.off:1:5: binary OFF ('OFF BINARY') is not supported; convert it to ASCII OFF");
-        CHECK(error_of("OFF\n") ==
+        CHECK(off_error("OFF\n") ==
               "t.off:1:4: the file ends before the counts 'nv nf ne' that follow the header");
-        CHECK(error_of("OFF\n# none\n5\n") == "t.off:3:1: missing face count");
-        CHECK(error_of("OFF\n5 x 0\n") == "t.off:2:3: face count 'x' is not an integer");
-        CHECK(error_of("OFF\n5.0 2 0\n") == "t.off:2:1: vertex count '5.0' is not an integer");
-        CHECK(error_of("OFF\n-1 2 0\n") == "t.off:2:1: vertex count -1 is negative");
-        CHECK(error_of("OFF\n0 -2 0\n") == "t.off:2:3: face count -2 is negative");
-        CHECK(error_of("OFF\n0 0 -1\n") == "t.off:2:5: edge count -1 is negative");
-        CHECK(error_of("OFF 0 0 0 0\n") ==
+        CHECK(off_error("OFF\n# none\n5\n") == "t.off:3:1: missing face count");
+        CHECK(off_error("OFF\n5 x 0\n") == "t.off:2:3: face count 'x' is not an integer");
+        CHECK(off_error("OFF\n5.0 2 0\n") == "t.off:2:1: vertex count '5.0' is not an integer");
+        CHECK(off_error("OFF\n-1 2 0\n") == "t.off:2:1: vertex count -1 is negative");
+        CHECK(off_error("OFF\n0 -2 0\n") == "t.off:2:3: face count -2 is negative");
+        CHECK(off_error("OFF\n0 0 -1\n") == "t.off:2:5: edge count -1 is negative");
+        CHECK(off_error("OFF 0 0 0 0\n") ==
               "t.off:1:11: unexpected '0' after the counts 'nv nf ne'");
     }
 
     TEST_CASE("counts that cannot fit in the rest of the file fail fast without allocating")
     {
         const auto start = std::chrono::steady_clock::now();
-        CHECK(error_of("OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+        CHECK(off_error("OFF\n1000000000000 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
               "t.off:2:1: header declares 1000000000000 vertices and 1 face but only 26 bytes "
               "follow (a vertex line takes at least 6 bytes, a face line 8)");
-        CHECK(error_of("OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
+        CHECK(off_error("OFF\n3 2000000000 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n") ==
               "t.off:2:1: header declares 3 vertices and 2000000000 faces but only 26 bytes "
               "follow (a vertex line takes at least 6 bytes, a face line 8)");
-        CHECK(error_of("OFF\n9223372036854775807 9223372036854775807\n") ==
+        CHECK(off_error("OFF\n9223372036854775807 9223372036854775807\n") ==
               "t.off:2:1: header declares 9223372036854775807 vertices and 9223372036854775807 "
               "faces but only 0 bytes follow (a vertex line takes at least 6 bytes, a face "
               "line 8)");
         // One byte short of the smallest possible body; the last line has no newline.
-        CHECK(error_of("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1") ==
+        CHECK(off_error("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1") ==
               "t.off:2:1: header declares 3 vertices and 1 face but only 23 bytes follow (a "
               "vertex line takes at least 6 bytes, a face line 8)");
-        CHECK(parse("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2").face_count() == 1);
+        CHECK(parse_off("OFF\n3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2").face_count() == 1);
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
     }
 
     TEST_CASE("counts that promise more than the file holds name where it ends")
     {
-        CHECK(error_of("OFF\n8 0 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# end\n1 1 1 1 1 1 1\n"
-                       "1 1\n") == "t.off:10:1: vertex has no z coordinate");
-        CHECK(error_of("OFF\n8 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# 3 more lines\n"
-                       "# to make room\n# for the counts\n") ==
+        CHECK(off_error("OFF\n8 0 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# end\n1 1 1 1 1 1 1\n"
+                        "1 1\n") == "t.off:10:1: vertex has no z coordinate");
+        CHECK(off_error("OFF\n8 1 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n2 2 2\n# 3 more lines\n"
+                        "# to make room\n# for the counts\n") ==
               "t.off:10:17: expected 8 vertices, the file ends after 5");
-        CHECK(error_of("OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n# short\n# file\n") ==
+        CHECK(off_error("OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 1\n# short\n# file\n") ==
               "t.off:9:7: expected 4 faces, the file ends after 2");
     }
 
     TEST_CASE("data after the last face is refused")
     {
-        CHECK(error_of("OFF\n5 2 0\n" + kVertices + kFaces + "\n# ok\n3 0 1 2\n") ==
+        CHECK(off_error("OFF\n5 2 0\n" + kVertices + kFaces + "\n# ok\n3 0 1 2\n") ==
               "t.off:12:1: unexpected data after the last face (the header declares 5 "
               "vertices and 2 faces)");
-        CHECK(error_of("OFF\n1 0 0\n0 0 0\n1 1 1\n") ==
+        CHECK(off_error("OFF\n1 0 0\n0 0 0\n1 1 1\n") ==
               "t.off:4:1: unexpected data after the last vertex (the header declares 1 vertex "
               "and 0 faces)");
-        CHECK(error_of("OFF 0 0\n  x\n") ==
+        CHECK(off_error("OFF 0 0\n  x\n") ==
               "t.off:2:3: unexpected data after the counts (the header declares 0 vertices and "
               "0 faces)");
     }
@@ -272,21 +272,22 @@ TEST_SUITE("ReadOff")
         // The padding comment keeps the short lines from failing the size check first.
         const std::string head = "OFF\n3 0 0\n0 0 0\n";
         const std::string tail = "0 1 0\n# padding\n";
-        CHECK(error_of(head + "1 nan 0\n" + tail) == "t.off:4:3: y coordinate 'nan' is not finite");
-        CHECK(error_of(head + "1 0 -inf\n" + tail) ==
+        CHECK(off_error(head + "1 nan 0\n" + tail) ==
+              "t.off:4:3: y coordinate 'nan' is not finite");
+        CHECK(off_error(head + "1 0 -inf\n" + tail) ==
               "t.off:4:5: z coordinate '-inf' is not finite");
-        CHECK(error_of(head + "1e400 0 0\n" + tail) ==
+        CHECK(off_error(head + "1e400 0 0\n" + tail) ==
               "t.off:4:1: x coordinate '1e400' is out of the range of a double");
-        CHECK(error_of(head + "abc 0 0\n" + tail) ==
+        CHECK(off_error(head + "abc 0 0\n" + tail) ==
               "t.off:4:1: x coordinate 'abc' is not a number");
-        CHECK(error_of(head + "1 0 0 red\n" + tail) ==
+        CHECK(off_error(head + "1 0 0 red\n" + tail) ==
               "t.off:4:7: vertex value 'red' is not a number");
-        CHECK(error_of(head + "1 0\n" + tail) == "t.off:4:1: vertex has no z coordinate");
-        CHECK(error_of("NOFF\n1 0 0\n0 0 0 0 1\n") ==
+        CHECK(off_error(head + "1 0\n" + tail) == "t.off:4:1: vertex has no z coordinate");
+        CHECK(off_error("NOFF\n1 0 0\n0 0 0 0 1\n") ==
               "t.off:3:1: vertex has 5 values but NOFF needs at least 6 (x y z nx ny nz)");
-        CHECK(error_of("STCOFF\n1 0 0\n0 0 0 1 1 1 0\n") ==
+        CHECK(off_error("STCOFF\n1 0 0\n0 0 0 1 1 1 0\n") ==
               "t.off:3:1: vertex has 7 values but STCOFF needs at least 8 (x y z r g b s t)");
-        CHECK(error_of(std::string("OFF\n1 0 0\n0 \0 0\n", 16)) ==
+        CHECK(off_error(std::string("OFF\n1 0 0\n0 \0 0\n", 16)) ==
               "t.off:3:3: NUL byte in a text file");
     }
 
@@ -294,38 +295,38 @@ TEST_SUITE("ReadOff")
     {
         const std::string head = "OFF\n5 1 0\n" + kVertices;
         const std::string tail = "# padding\n";
-        CHECK(error_of(head + "0\n" + tail) ==
+        CHECK(off_error(head + "0\n" + tail) ==
               "t.off:8:1: face has 0 vertices (a face needs at least 3)");
-        CHECK(error_of(head + "1 0\n" + tail) ==
+        CHECK(off_error(head + "1 0\n" + tail) ==
               "t.off:8:1: face has 1 vertex (a face needs at least 3)");
-        CHECK(error_of(head + " 2 0 1\n" + tail) ==
+        CHECK(off_error(head + " 2 0 1\n" + tail) ==
               "t.off:8:2: face has 2 vertices (a face needs at least 3)");
-        CHECK(error_of(head + "-3 0 1 2\n" + tail) ==
+        CHECK(off_error(head + "-3 0 1 2\n" + tail) ==
               "t.off:8:1: face vertex count -3 is negative");
-        CHECK(error_of(head + "3.0 0 1 2\n" + tail) ==
+        CHECK(off_error(head + "3.0 0 1 2\n" + tail) ==
               "t.off:8:1: face vertex count '3.0' is not an integer");
-        CHECK(error_of(head + "4 0 1 2\n" + tail) ==
+        CHECK(off_error(head + "4 0 1 2\n" + tail) ==
               "t.off:8:1: face declares 4 vertices but lists 3");
-        CHECK(error_of(head + "1000000000000 0 1 2\n" + tail) ==
+        CHECK(off_error(head + "1000000000000 0 1 2\n" + tail) ==
               "t.off:8:1: face declares 1000000000000 vertices but lists 3");
-        CHECK(error_of(head + "3 0 1 5\n" + tail) ==
+        CHECK(off_error(head + "3 0 1 5\n" + tail) ==
               "t.off:8:7: vertex index 5 is out of range (the file has 5 vertices, numbered "
               "from 0)");
-        CHECK(error_of(head + "3 0 -1 2\n" + tail) ==
+        CHECK(off_error(head + "3 0 -1 2\n" + tail) ==
               "t.off:8:5: vertex index -1 is negative (OFF indices start at 0)");
-        CHECK(error_of(head + "3 0 1 2.5\n" + tail) ==
+        CHECK(off_error(head + "3 0 1 2.5\n" + tail) ==
               "t.off:8:7: vertex index '2.5' is not an integer");
-        CHECK(error_of(head + "3 0 1 2 red\n" + tail) ==
+        CHECK(off_error(head + "3 0 1 2 red\n" + tail) ==
               "t.off:8:9: face colour value 'red' is not a number");
-        CHECK(error_of(head + "3 0 1 1\n" + tail) ==
+        CHECK(off_error(head + "3 0 1 1\n" + tail) ==
               "t.off:8:1: face has 2 distinct vertices (a face needs at least 3)");
-        CHECK(error_of(head + "4 0 1 0 2\n" + tail) ==
+        CHECK(off_error(head + "4 0 1 0 2\n" + tail) ==
               "t.off:8:1: face uses vertex 0 at two corners that are not adjacent");
     }
 
     TEST_CASE("a file that ends in the middle of a line is read like one that does not")
     {
-        CHECK(parse("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2") == square());
+        CHECK(parse_off("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2") == square());
     }
 }
 
@@ -346,7 +347,7 @@ TEST_SUITE("WriteOff")
         CHECK(out ==
               "OFF\n4 2 0\n0 0.1 -0\n1e+300 -2.5 0.3333333333333333\n5e-324 3 0\n1 1 1\n"
               "4 0 1 2 3\n3 3 2 1\n");
-        const Mesh back = parse(out);
+        const Mesh back = parse_off(out);
         CHECK(back == m);
         CHECK(std::signbit(back.positions[2]));
     }
@@ -356,7 +357,7 @@ TEST_SUITE("WriteOff")
         Mesh m = test::mixed_polygons();
         test::perturb(m, 0.37, 11);
         const std::string data = io::write_mesh_data(m, io::Format::Off);
-        const Mesh back = parse(data);
+        const Mesh back = parse_off(data);
         REQUIRE(back.positions.size() == m.positions.size());
         CHECK(std::memcmp(back.positions.data(), m.positions.data(),
                           m.positions.size() * sizeof(double)) == 0);
@@ -370,9 +371,9 @@ TEST_SUITE("WriteOff")
     {
         Mesh cloud;
         cloud.add_vertex(1, 2, 3);
-        CHECK(parse(io::write_mesh_data(cloud, io::Format::Off)) == cloud);
+        CHECK(parse_off(io::write_mesh_data(cloud, io::Format::Off)) == cloud);
         CHECK(io::write_mesh_data(Mesh{}, io::Format::Off) == "OFF\n0 0 0\n");
-        CHECK(parse("OFF\n0 0 0\n") == Mesh{});
+        CHECK(parse_off("OFF\n0 0 0\n") == Mesh{});
     }
 
     TEST_CASE("a file written to disk reads back the same")

@@ -28,12 +28,12 @@ using io::Encoding;
 constexpr Encoding kEncodings[] = {Encoding::Ascii, Encoding::BinaryLittleEndian,
                                    Encoding::BinaryBigEndian};
 
-Mesh parse(const std::string& data, io::ReadReport* report = nullptr)
+Mesh parse_ply(const std::string& data, io::ReadReport* report = nullptr)
 {
     return test::read_as(data, io::Format::Ply, report);
 }
 
-std::string error_of(const std::string& data)
+std::string ply_error(const std::string& data)
 {
     return test::read_error(data, io::Format::Ply);
 }
@@ -170,8 +170,8 @@ const std::string kFace0 = " (face 0, property vertex_indices): ";
 
 std::string binary_triangle_error(const Row& face)
 {
-    return error_of(kBinaryHeader + body(Encoding::BinaryLittleEndian,
-                                         {xyz(0, 0, 0), xyz(1, 0, 0), xyz(0, 1, 0), face}));
+    return ply_error(kBinaryHeader + body(Encoding::BinaryLittleEndian,
+                                          {xyz(0, 0, 0), xyz(1, 0, 0), xyz(0, 1, 0), face}));
 }
 
 std::string at_byte(size_t offset, const std::string& rest)
@@ -195,7 +195,7 @@ TEST_SUITE("ReadPly")
         {
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
-            CHECK(parse(ply(encoding, kTwoTriangles, kVertexRows + kFaceRows), &report) ==
+            CHECK(parse_ply(ply(encoding, kTwoTriangles, kVertexRows + kFaceRows), &report) ==
                   two_triangles());
             CHECK(report.format == io::Format::Ply);
             CHECK(report.encoding == encoding);
@@ -215,7 +215,7 @@ TEST_SUITE("ReadPly")
         std::string text = header(Encoding::Ascii, vertex_decl(7, "double"));
         for (const char* v : values)
             text += std::string(v) + " " + v + " " + v + "\n";
-        const Mesh m = parse(text);
+        const Mesh m = parse_ply(text);
         for (size_t k = 0; k < std::size(values); ++k)
         {
             const double expected = std::strtod(values[k], nullptr);
@@ -231,7 +231,7 @@ TEST_SUITE("ReadPly")
             Bytes b{encoding == Encoding::BinaryBigEndian, {}};
             for (const float v : values)
                 b.put(v).put(v).put(-v);
-            const Mesh m = parse(header(encoding, vertex_decl(6, "float32")) + b.data);
+            const Mesh m = parse_ply(header(encoding, vertex_decl(6, "float32")) + b.data);
             for (size_t k = 0; k < std::size(values); ++k)
             {
                 const double expected = static_cast<double>(values[k]);
@@ -240,7 +240,7 @@ TEST_SUITE("ReadPly")
             }
         }
         // ASCII float properties keep the decimal's double value, as strtod reads it.
-        const Mesh m = parse(header(Encoding::Ascii, vertex_decl(1)) + "0.1 3.4028235e38 -7\n");
+        const Mesh m = parse_ply(header(Encoding::Ascii, vertex_decl(1)) + "0.1 3.4028235e38 -7\n");
         CHECK(m.position(0) == Vec3{0.1, 3.4028235e38, -7});
     }
 
@@ -268,7 +268,7 @@ TEST_SUITE("ReadPly")
         {
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
-            CHECK(parse(ply(encoding, declarations, rows), &report) == expected);
+            CHECK(parse_ply(ply(encoding, declarations, rows), &report) == expected);
             CHECK(report.notes ==
                   std::vector<std::string>{"skipped vertex properties 'nx', 'ny', 'nz', 'red', "
                                            "'green', 'blue', 'texcoord'",
@@ -294,7 +294,7 @@ TEST_SUITE("ReadPly")
         {
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
-            CHECK(parse(ply(encoding, declarations, rows), &report) == two_triangles());
+            CHECK(parse_ply(ply(encoding, declarations, rows), &report) == two_triangles());
             CHECK(report.notes ==
                   std::vector<std::string>{"skipped 4 elements: 'material' (2 rows), 'edge' (2 "
                                            "rows), 'nothing' (5 rows), 'tristrips' (1 row)"});
@@ -330,9 +330,10 @@ TEST_SUITE("ReadPly")
                     CAPTURE(count_type);
                     CAPTURE(item_type);
                     CAPTURE(io::encoding_name(encoding));
-                    CHECK(parse(ply(encoding,
-                                    vertex_decl(300, "int") + face_decl(2, count_type, item_type),
-                                    rows)) == m);
+                    CHECK(
+                        parse_ply(ply(encoding,
+                                      vertex_decl(300, "int") + face_decl(2, count_type, item_type),
+                                      rows)) == m);
                 }
             }
     }
@@ -342,7 +343,8 @@ TEST_SUITE("ReadPly")
         const std::string declarations =
             "element face 2\nproperty list uchar uint vertex_index\n" + vertex_decl(4);
         for (const Encoding encoding : kEncodings)
-            CHECK(parse(ply(encoding, declarations, kFaceRows + kVertexRows)) == two_triangles());
+            CHECK(parse_ply(ply(encoding, declarations, kFaceRows + kVertexRows)) ==
+                  two_triangles());
     }
 
     TEST_CASE("a file without a face element is a point cloud")
@@ -350,13 +352,13 @@ TEST_SUITE("ReadPly")
         for (const Encoding encoding : kEncodings)
         {
             io::ReadReport report;
-            const Mesh m = parse(ply(encoding, vertex_decl(4), kVertexRows), &report);
+            const Mesh m = parse_ply(ply(encoding, vertex_decl(4), kVertexRows), &report);
             CHECK(m.vertex_count() == 4);
             CHECK(m.face_count() == 0);
             CHECK(report.notes ==
                   std::vector<std::string>{"no faces: read as a point cloud of 4 vertices"});
         }
-        CHECK(parse("ply\nformat ascii 1.0\ncomment nothing\nend_header\n") == Mesh{});
+        CHECK(parse_ply("ply\nformat ascii 1.0\ncomment nothing\nend_header\n") == Mesh{});
     }
 
     TEST_CASE("CRLF and CR-only headers are accepted, with binary data right after them")
@@ -364,7 +366,7 @@ TEST_SUITE("ReadPly")
         std::string crlf;
         for (const char c : ply(Encoding::Ascii, kTwoTriangles, kVertexRows + kFaceRows))
             crlf += c == '\n' ? std::string("\r\n") : std::string(1, c);
-        CHECK(parse("\xEF\xBB\xBF" + crlf) == two_triangles());
+        CHECK(parse_ply("\xEF\xBB\xBF" + crlf) == two_triangles());
 
         // The body starts with byte 10 (LF): it is data, not the end of a CRLF.
         const std::string declarations =
@@ -378,13 +380,13 @@ TEST_SUITE("ReadPly")
             std::string head;
             for (const char c : header(Encoding::BinaryLittleEndian, declarations))
                 head += c == '\n' ? end : std::string(1, c);
-            CHECK(parse(head + data).position(0) == Vec3{1, 2, 3});
+            CHECK(parse_ply(head + data).position(0) == Vec3{1, 2, 3});
         }
     }
 
     TEST_CASE("comments, obj_info and blank lines are ignored")
     {
-        const Mesh m = parse(
+        const Mesh m = parse_ply(
             "ply\ncomment made by hand\nformat ascii 1.0\nobj_info x\nelement vertex 3\n"
             "comment between properties\nproperty float x\nproperty float y\nproperty float "
             "z\n\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
@@ -399,10 +401,10 @@ TEST_SUITE("ReadPly")
                                            list("uchar", "int", {0, 2, 3, 0})};
         const std::string note = "collapsed 2 consecutive repeated vertex indices in 2 faces ";
         io::ReadReport report;
-        CHECK(parse(ply(Encoding::Ascii, kTwoTriangles, rows), &report) == two_triangles());
+        CHECK(parse_ply(ply(Encoding::Ascii, kTwoTriangles, rows), &report) == two_triangles());
         CHECK(report.notes == std::vector<std::string>{note + "(first at t.ply:14:1)"});
         const std::string data = ply(Encoding::BinaryBigEndian, kTwoTriangles, rows);
-        CHECK(parse(data, &report) == two_triangles());
+        CHECK(parse_ply(data, &report) == two_triangles());
         CHECK(report.notes == std::vector<std::string>{note + "(first at t.ply: byte " +
                                                        std::to_string(data.size() - 2 * 17) +
                                                        " (face 0, property vertex_indices))"});
@@ -411,19 +413,19 @@ TEST_SUITE("ReadPly")
     TEST_CASE("header counts the data cannot hold are refused before allocating")
     {
         const auto start = std::chrono::steady_clock::now();
-        CHECK(error_of("ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float "
-                       "x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n") ==
+        CHECK(ply_error("ply\nformat ascii 1.0\nelement vertex 1000000000000\nproperty float "
+                        "x\nproperty float y\nproperty float z\nend_header\n0 0 0\n1 1 1\n") ==
               "t.ply:3:16: header declares 1000000000000 vertices but only 12 bytes follow");
-        CHECK(error_of(header(Encoding::BinaryBigEndian,
-                              vertex_decl(0) + "element face 1000000000000\nproperty list uchar "
-                                               "int vertex_indices\n") +
-                       std::string(12, '\0')) ==
+        CHECK(ply_error(header(Encoding::BinaryBigEndian,
+                               vertex_decl(0) + "element face 1000000000000\nproperty list uchar "
+                                                "int vertex_indices\n") +
+                        std::string(12, '\0')) ==
               "t.ply:7:14: header declares 1000000000000 faces but only 12 bytes follow");
-        CHECK(error_of(header(Encoding::BinaryLittleEndian,
-                              "element edge 4\nproperty int a\nproperty list uint int b\n") +
-                       std::string(31, '\0')) ==
+        CHECK(ply_error(header(Encoding::BinaryLittleEndian,
+                               "element edge 4\nproperty int a\nproperty list uint int b\n") +
+                        std::string(31, '\0')) ==
               "t.ply:3:14: header declares 4 rows of element 'edge' but only 31 bytes follow");
-        CHECK(error_of(header(Encoding::BinaryLittleEndian, "element nothing 3000000000\n")) ==
+        CHECK(ply_error(header(Encoding::BinaryLittleEndian, "element nothing 3000000000\n")) ==
               "t.ply:3:17: element 'nothing' has 3000000000 rows (MeshFair supports at most "
               "2147483647)");
         CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(1));
@@ -435,62 +437,64 @@ TEST_SUITE("ReadPly")
         const std::string f = a + vertex_decl(0) + "element face 0\n";
         const std::string hint =
             " (expected ascii, binary_little_endian or binary_big_endian, version 1.0)";
-        CHECK(error_of("") == "t.ply: empty file");
-        CHECK(error_of("PLY\n" + a.substr(4)) ==
+        CHECK(ply_error("") == "t.ply: empty file");
+        CHECK(ply_error("PLY\n" + a.substr(4)) ==
               "t.ply:1:1: not a PLY file (the first line must be 'ply')");
-        CHECK(error_of("ply\nformat binary 1.0\n") ==
+        CHECK(ply_error("ply\nformat binary 1.0\n") ==
               "t.ply:2:8: unknown PLY format 'binary 1.0'" + hint);
-        CHECK(error_of("ply\nformat ascii 2.0 \n") ==
+        CHECK(ply_error("ply\nformat ascii 2.0 \n") ==
               "t.ply:2:8: unknown PLY format 'ascii 2.0'" + hint);
-        CHECK(error_of(a + "format ascii 1.0\n") == "t.ply:3:1: second format line");
-        CHECK(error_of("ply\nelement vertex 0\n") == "t.ply:2:1: element before the format line");
-        CHECK(error_of("ply\ncomment\nend_header\n") ==
+        CHECK(ply_error(a + "format ascii 1.0\n") == "t.ply:3:1: second format line");
+        CHECK(ply_error("ply\nelement vertex 0\n") == "t.ply:2:1: element before the format line");
+        CHECK(ply_error("ply\ncomment\nend_header\n") ==
               "t.ply:3:1: no format line before end_header");
-        CHECK(error_of(v + "property float x\n") ==
+        CHECK(ply_error(v + "property float x\n") ==
               "t.ply:4:17: no end_header (the file ends inside the header)");
-        CHECK(error_of("ply\nformat binary_little_endian 1.0\n" + vertex_decl(1) +
-                       std::string("\x01\x00\x00\x00", 4)) ==
+        CHECK(ply_error("ply\nformat binary_little_endian 1.0\n" + vertex_decl(1) +
+                        std::string("\x01\x00\x00\x00", 4)) ==
               "t.ply:7:2: NUL byte in a text file (inside the PLY header; is end_header missing?)");
-        CHECK(error_of(a + "end_header extra\n") == "t.ply:3:12: unexpected text after end_header");
-        CHECK(error_of(a + "element vertex\n") ==
+        CHECK(ply_error(a + "end_header extra\n") ==
+              "t.ply:3:12: unexpected text after end_header");
+        CHECK(ply_error(a + "element vertex\n") ==
               "t.ply:3:1: an element line must be 'element NAME COUNT'");
-        CHECK(error_of(a + "element vertex -1\n") == "t.ply:3:16: element count -1 is negative");
-        CHECK(error_of(a + "element vertex 2.5\n") ==
+        CHECK(ply_error(a + "element vertex -1\n") == "t.ply:3:16: element count -1 is negative");
+        CHECK(ply_error(a + "element vertex 2.5\n") ==
               "t.ply:3:16: element count '2.5' is not an integer");
-        CHECK(error_of(a + "property float x\n") == "t.ply:3:1: property before the first element");
-        CHECK(error_of(v + "property int64 x\n") == "t.ply:4:10: unknown property type 'int64'");
-        CHECK(error_of(v + "property float\n") ==
+        CHECK(ply_error(a + "property float x\n") ==
+              "t.ply:3:1: property before the first element");
+        CHECK(ply_error(v + "property int64 x\n") == "t.ply:4:10: unknown property type 'int64'");
+        CHECK(ply_error(v + "property float\n") ==
               "t.ply:4:1: a property line must be 'property TYPE NAME'");
-        CHECK(error_of(v + "property list uchar int\n") ==
+        CHECK(ply_error(v + "property list uchar int\n") ==
               "t.ply:4:1: a list property line must be 'property list COUNT_TYPE ITEM_TYPE NAME'");
-        CHECK(error_of(v + "property list float int vertex_indices\n") ==
+        CHECK(ply_error(v + "property list float int vertex_indices\n") ==
               "t.ply:4:15: list count type 'float' is not an integer type");
-        CHECK(error_of(v + "property float x\nproperty double x\n") ==
+        CHECK(ply_error(v + "property float x\nproperty double x\n") ==
               "t.ply:5:17: element 'vertex' already has a property 'x'");
-        CHECK(error_of(v + "property float x\nproperty float z\nend_header\n") ==
+        CHECK(ply_error(v + "property float x\nproperty float z\nend_header\n") ==
               "t.ply:3:1: vertex element has no property 'y'");
-        CHECK(error_of(v + "property float y\nproperty float z\nend_header\n") ==
+        CHECK(ply_error(v + "property float y\nproperty float z\nend_header\n") ==
               "t.ply:3:1: vertex element has no property 'x'");
-        CHECK(error_of(v + "property float x\nproperty float y\nend_header\n") ==
+        CHECK(ply_error(v + "property float x\nproperty float y\nend_header\n") ==
               "t.ply:3:1: vertex element has no property 'z'");
-        CHECK(error_of(v + "property float x\nproperty float y\nproperty list uchar float "
-                           "z\nend_header\n") ==
+        CHECK(ply_error(v + "property float x\nproperty float y\nproperty list uchar float "
+                            "z\nend_header\n") ==
               "t.ply:6:1: vertex property 'z' is a list, not a coordinate");
-        CHECK(error_of(a + vertex_decl(0) + "element vertex 0\n") ==
+        CHECK(ply_error(a + vertex_decl(0) + "element vertex 0\n") ==
               "t.ply:7:9: second 'vertex' element (a PLY mesh has at most one)");
-        CHECK(error_of(a + vertex_decl(0) + face_decl(0) + face_decl(0)) ==
+        CHECK(ply_error(a + vertex_decl(0) + face_decl(0) + face_decl(0)) ==
               "t.ply:9:9: second 'face' element (a PLY mesh has at most one)");
-        CHECK(error_of(f + "property int vertex_indices\nend_header\n") ==
+        CHECK(ply_error(f + "property int vertex_indices\nend_header\n") ==
               "t.ply:8:1: face property 'vertex_indices' is not a list");
-        CHECK(error_of(f + "property list uchar float vertex_indices\nend_header\n") ==
+        CHECK(ply_error(f + "property list uchar float vertex_indices\nend_header\n") ==
               "t.ply:8:1: face property 'vertex_indices' has item type 'float' (vertex indices "
               "must be integers)");
-        CHECK(error_of(f + "property list uchar int verts\nend_header\n") ==
+        CHECK(ply_error(f + "property list uchar int verts\nend_header\n") ==
               "t.ply:7:1: face element has no list property 'vertex_indices' (or 'vertex_index')");
-        CHECK(error_of(f + "property list uchar int vertex_index\nproperty list uchar int "
-                           "vertex_indices\nend_header\n") ==
+        CHECK(ply_error(f + "property list uchar int vertex_index\nproperty list uchar int "
+                            "vertex_indices\nend_header\n") ==
               "t.ply:8:1: face element has both 'vertex_indices' and 'vertex_index'");
-        CHECK(error_of(v + "vertex 1 2 3\n") == "t.ply:4:1: unknown header keyword 'vertex'");
+        CHECK(ply_error(v + "vertex 1 2 3\n") == "t.ply:4:1: unknown header keyword 'vertex'");
     }
 
     TEST_CASE("ASCII body errors name the line and column")
@@ -498,10 +502,10 @@ TEST_SUITE("ReadPly")
         // Three vertices (body lines 10 to 12) and one face (line 13).
         const std::string h = header(Encoding::Ascii, vertex_decl(3, "double") + face_decl(1));
         const auto face_error = [&](const std::string& face) {
-            return error_of(h + "0 0 0\n1 0 0\n0 1 0\n" + face);
+            return ply_error(h + "0 0 0\n1 0 0\n0 1 0\n" + face);
         };
         const auto vertex_error = [&](const std::string& vertex) {
-            return error_of(h + "0 0 0\n" + vertex + "0 1 0\n3 0 1 2\n");
+            return ply_error(h + "0 0 0\n" + vertex + "0 1 0\n3 0 1 2\n");
         };
         CHECK(vertex_error("1 nan 0\n") == "t.ply:11:3: y coordinate 'nan' is not finite");
         CHECK(vertex_error("1 0 -inf\n") == "t.ply:11:5: z coordinate '-inf' is not finite");
@@ -533,17 +537,18 @@ TEST_SUITE("ReadPly")
               "t.ply:13:1: face uses vertex 0 at two corners that are not adjacent");
         CHECK(face_error("3 0 1 2\n\n  \n3 0 1 2\n") ==
               "t.ply:16:1: unexpected data after the last element");
-        CHECK(error_of(h + "0.000000 0 0\n1.000000 0 0\n") ==
+        CHECK(ply_error(h + "0.000000 0 0\n1.000000 0 0\n") ==
               "t.ply:11:13: file ends before vertex 2 (the header declares 3 vertices)");
         // One vertex (line 8) with other types.
-        CHECK(error_of(header(Encoding::Ascii, vertex_decl(1)) + "0 1e39 0\n") ==
+        CHECK(ply_error(header(Encoding::Ascii, vertex_decl(1)) + "0 1e39 0\n") ==
               "t.ply:8:3: y coordinate '1e39' does not fit in float");
-        CHECK(error_of(header(Encoding::Ascii, vertex_decl(1, "uchar")) + "0 256 0\n") ==
+        CHECK(ply_error(header(Encoding::Ascii, vertex_decl(1, "uchar")) + "0 256 0\n") ==
               "t.ply:8:3: y coordinate 256 does not fit in uchar");
         const std::string feature =
             header(Encoding::Ascii, vertex_decl(1) + "property list char int feature\n");
-        CHECK(error_of(feature + "0 0 0 -1\n") == "t.ply:9:7: 'feature' list count -1 is negative");
-        CHECK(error_of(feature + "0 0 0 2 4 x\n") ==
+        CHECK(ply_error(feature + "0 0 0 -1\n") ==
+              "t.ply:9:7: 'feature' list count -1 is negative");
+        CHECK(ply_error(feature + "0 0 0 2 4 x\n") ==
               "t.ply:9:11: 'feature' value 'x' is not an integer");
     }
 
@@ -569,13 +574,13 @@ TEST_SUITE("ReadPly")
         Bytes b;
         for (const float x : {0.0f, 0.0f, 0.0f, 1.0f, std::numeric_limits<float>::quiet_NaN()})
             b.put(x);
-        CHECK(error_of(kBinaryHeader + b.data + std::string(17, '\0')) ==
+        CHECK(ply_error(kBinaryHeader + b.data + std::string(17, '\0')) ==
               at_byte(16, " (vertex 1, property y): vertex 1 has a non-finite y coordinate (nan)"));
         b = {};
         b.put<std::uint8_t>(3).put(0).put(1).put(2147483648u);
-        CHECK(error_of(header(Encoding::BinaryLittleEndian,
-                              vertex_decl(3) + face_decl(1, "uchar", "uint32")) +
-                       std::string(36, '\0') + b.data)
+        CHECK(ply_error(header(Encoding::BinaryLittleEndian,
+                               vertex_decl(3) + face_decl(1, "uchar", "uint32")) +
+                        std::string(36, '\0') + b.data)
                   .ends_with("face 0 uses vertex index 2147483648 but the file declares 3 "
                              "vertices"));
 
@@ -585,7 +590,7 @@ TEST_SUITE("ReadPly")
         b = {};
         b.put<std::uint8_t>(3).put(0).put(1).put(2);
         b.data += std::string(39, '\0');
-        CHECK(error_of(faces_first + b.data) ==
+        CHECK(ply_error(faces_first + b.data) ==
               "t.ply: byte " + std::to_string(faces_first.size() + 49) +
                   " (vertex 3, property x): file ends inside this value (needs 4 bytes, 3 left)");
 
@@ -596,7 +601,7 @@ TEST_SUITE("ReadPly")
             body(Encoding::BinaryLittleEndian,
                  kVertexRows + std::vector<Row>{tri(0, 1, 2) + Row{{"ushort", 9}},
                                                 tri(0, 2, 3) + Row{{"uchar", 9}}});
-        CHECK(error_of(material + cut) ==
+        CHECK(ply_error(material + cut) ==
               "t.ply: byte " + std::to_string(material.size() + 48 + 15 + 13) +
                   " (face 1, property m): file ends inside this element (needs 2 more bytes, 1 "
                   "left)");
@@ -606,9 +611,9 @@ TEST_SUITE("ReadPly")
             header(Encoding::BinaryBigEndian, "element edge 2\nproperty list ushort double c\n");
         b = {true, {}};
         b.put<std::uint16_t>(1).put(1.0).put<std::uint16_t>(300).put(2.0);
-        CHECK(error_of(edges + b.data) == "t.ply: byte " + std::to_string(edges.size() + 10) +
-                                              " (edge 1, property c): 'c' list count 300 needs "
-                                              "2400 bytes, more than the 8 bytes left");
+        CHECK(ply_error(edges + b.data) == "t.ply: byte " + std::to_string(edges.size() + 10) +
+                                               " (edge 1, property c): 'c' list count 300 needs "
+                                               "2400 bytes, more than the 8 bytes left");
     }
 
     TEST_CASE("a big-endian body declared little-endian is refused")
@@ -616,18 +621,18 @@ TEST_SUITE("ReadPly")
         const std::string data =
             swap_order(ply(Encoding::BinaryBigEndian, kTwoTriangles, kVertexRows + kFaceRows));
         const size_t faces = data.find("end_header\n") + 11 + 48;
-        CHECK(error_of(data) == "t.ply: byte " + std::to_string(faces + 5) + kFace0 +
-                                    "face 0 uses vertex index 16777216 but the file declares 4 "
-                                    "vertices");
+        CHECK(ply_error(data) == "t.ply: byte " + std::to_string(faces + 5) + kFace0 +
+                                     "face 0 uses vertex index 16777216 but the file declares 4 "
+                                     "vertices");
         // With a uint list count, the swapped count runs past the data instead.
         const std::string wide =
             swap_order(ply(Encoding::BinaryBigEndian, vertex_decl(4) + face_decl(2, "uint"),
                            kVertexRows + std::vector<Row>{list("uint", "int", {0, 1, 2}),
                                                           list("uint", "int", {0, 2, 3})}));
-        CHECK(error_of(wide) == "t.ply: byte " +
-                                    std::to_string(wide.find("end_header\n") + 11 + 48) + kFace0 +
-                                    "'vertex_indices' list count 50331648 needs 201326592 "
-                                    "bytes, more than the 28 bytes left");
+        CHECK(ply_error(wide) == "t.ply: byte " +
+                                     std::to_string(wide.find("end_header\n") + 11 + 48) + kFace0 +
+                                     "'vertex_indices' list count 50331648 needs 201326592 "
+                                     "bytes, more than the 28 bytes left");
     }
 }
 
@@ -713,7 +718,7 @@ TEST_SUITE("WritePly")
                 std::string out;
                 io::write_ply(m, encoding, out);
                 CHECK(out.find(face_decl(0) + "end_header\n") != std::string::npos);
-                CHECK(parse(out) == m);
+                CHECK(parse_ply(out) == m);
             }
     }
 }

@@ -24,12 +24,12 @@ using namespace meshfair;
 
 namespace {
 
-Mesh parse(const std::string& data, io::ReadReport* report = nullptr)
+Mesh parse_stl(const std::string& data, io::ReadReport* report = nullptr)
 {
     return test::read_as(data, io::Format::Stl, report);
 }
 
-std::string error_of(const std::string& data)
+std::string stl_error(const std::string& data)
 {
     return test::read_error(data, io::Format::Stl);
 }
@@ -72,7 +72,7 @@ struct BinaryStl
 };
 
 // Two triangles sharing the edge (1 0 0)-(0 1 0).
-std::string two_triangles(std::string header = "binary test")
+std::string two_triangles_stl(std::string header = "binary test")
 {
     return BinaryStl(2, std::move(header))
         .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0})
@@ -149,7 +149,7 @@ TEST_SUITE("ReadStl")
     TEST_CASE("binary triangles are welded in order of first appearance")
     {
         io::ReadReport report;
-        const Mesh m = parse(two_triangles(), &report);
+        const Mesh m = parse_stl(two_triangles_stl(), &report);
         CHECK(report.format == io::Format::Stl);
         CHECK(report.encoding == io::Encoding::BinaryLittleEndian);
         REQUIRE(m.vertex_count() == 4);
@@ -163,36 +163,36 @@ TEST_SUITE("ReadStl")
 
     TEST_CASE("a binary file whose header starts with 'solid' is still binary")
     {
-        const Mesh expected = parse(two_triangles());
+        const Mesh expected = parse_stl(two_triangles_stl());
         io::ReadReport report;
-        CHECK(parse(two_triangles("solid exported by some CAD tool"), &report) == expected);
+        CHECK(parse_stl(two_triangles_stl("solid exported by some CAD tool"), &report) == expected);
         CHECK(report.encoding == io::Encoding::BinaryLittleEndian);
         // Even with a text-like body after the header.
-        CHECK(parse(two_triangles("\n  solid x\nfacet normal 0 0 1\n")) == expected);
+        CHECK(parse_stl(two_triangles_stl("\n  solid x\nfacet normal 0 0 1\n")) == expected);
     }
 
     TEST_CASE("ASCII facets are welded like binary ones")
     {
         io::ReadReport report;
-        const Mesh m = parse(kAsciiTwoTriangles, &report);
+        const Mesh m = parse_stl(kAsciiTwoTriangles, &report);
         CHECK(report.encoding == io::Encoding::Ascii);
-        CHECK(m == parse(two_triangles()));
+        CHECK(m == parse_stl(two_triangles_stl()));
         CHECK(report.notes ==
               std::vector<std::string>{"welded 6 corners into 4 vertices by exact position"});
     }
 
     TEST_CASE("-0.0 and +0.0 weld into one vertex that keeps the first value")
     {
-        const Mesh a = parse(BinaryStl(2)
-                                 .triangle({-0.0f, 0, 0, 1, 0, 0, 0, 1, 0})
-                                 .triangle({1, 0, 0, 0, -0.0f, 0, 0, 0, 1})
-                                 .bytes);
+        const Mesh a = parse_stl(BinaryStl(2)
+                                     .triangle({-0.0f, 0, 0, 1, 0, 0, 0, 1, 0})
+                                     .triangle({1, 0, 0, 0, -0.0f, 0, 0, 0, 1})
+                                     .bytes);
         CHECK(a.vertex_count() == 4);
         CHECK(corners(a, 1) == std::vector<Index>{1, 0, 3});
         CHECK(std::signbit(a.positions[0]));
         const Mesh b =
-            parse("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
-                  ascii_facet("vertex -0 -0 -0\nvertex 0 1 0\nvertex 0 0 1\n") + "endsolid\n");
+            parse_stl("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
+                      ascii_facet("vertex -0 -0 -0\nvertex 0 1 0\nvertex 0 0 1\n") + "endsolid\n");
         CHECK(b.vertex_count() == 4);
         CHECK(corners(b, 1) == std::vector<Index>{0, 2, 3});
         CHECK(!std::signbit(b.positions[0]));
@@ -201,20 +201,20 @@ TEST_SUITE("ReadStl")
     TEST_CASE("positions that differ in the last bit stay apart")
     {
         const Mesh m =
-            parse("solid\n" + ascii_facet("vertex 0.1 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
-                  ascii_facet("vertex 0.10000000000000002 0 0\nvertex 0 1 0\n"
-                              "vertex 1 0 0\n") +
-                  "endsolid\n");
+            parse_stl("solid\n" + ascii_facet("vertex 0.1 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
+                      ascii_facet("vertex 0.10000000000000002 0 0\nvertex 0 1 0\n"
+                                  "vertex 1 0 0\n") +
+                      "endsolid\n");
         CHECK(m.vertex_count() == 4);
         CHECK(m.positions[9] == 0.10000000000000002);
     }
 
     TEST_CASE("a loop with more than 3 vertices is kept as one polygon")
     {
-        const Mesh m = parse("solid quad\n" +
-                             ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
-                                         "vertex 0 1 0\n") +
-                             "endsolid quad\n");
+        const Mesh m = parse_stl("solid quad\n" +
+                                 ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
+                                             "vertex 0 1 0\n") +
+                                 "endsolid quad\n");
         REQUIRE(m.face_count() == 1);
         CHECK(corners(m, 0) == std::vector<Index>{0, 1, 2, 3});
     }
@@ -225,7 +225,7 @@ TEST_SUITE("ReadStl")
         const std::string second = "solid b\n" +
                                    ascii_facet("vertex 5 5 5\nvertex 1 0 0\nvertex 6 5 5\n") +
                                    "endsolid b\n";
-        const Mesh m = parse(kAsciiTwoTriangles + second, &report);
+        const Mesh m = parse_stl(kAsciiTwoTriangles + second, &report);
         REQUIRE(m.face_count() == 3);
         CHECK(m.vertex_count() == 6);
         CHECK(corners(m, 2) == std::vector<Index>{4, 1, 5});
@@ -236,22 +236,22 @@ TEST_SUITE("ReadStl")
 
     TEST_CASE("keywords in any case, tokens across lines, CRLF and nan normals are accepted")
     {
-        const Mesh m = parse(
+        const Mesh m = parse_stl(
             "\r\n  SOLID Part 1 (mm)\r\nFacet Normal nan -nan NaN\r\nOUTER\r\nloop vertex 0\r\n0 0 "
             "vertex 1 0 0 vertex 0 1 0 ENDLOOP ENDFACET\r\n"
             "facet normal 0 0 1 outer loop\r\n\tvertex 1 0 0\r\n\tvertex 1 1 0\r\n"
             "\tvertex 0 1 0\r\nendloop endfacet EndSolid Part 1 (mm)\r\n\r\n");
-        CHECK(m == parse(two_triangles()));
-        CHECK(parse("\xEF\xBB\xBF" + kAsciiTwoTriangles) == m);
+        CHECK(m == parse_stl(two_triangles_stl()));
+        CHECK(parse_stl("\xEF\xBB\xBF" + kAsciiTwoTriangles) == m);
     }
 
     TEST_CASE("a solid without facets, or binary STL without triangles, is an empty mesh")
     {
         io::ReadReport report;
-        CHECK(parse(BinaryStl(0).bytes, &report) == Mesh{});
+        CHECK(parse_stl(BinaryStl(0).bytes, &report) == Mesh{});
         CHECK(report.notes ==
               std::vector<std::string>{"no vertices: the file holds an empty mesh"});
-        CHECK(parse("solid empty\nendsolid empty\n", &report) == Mesh{});
+        CHECK(parse_stl("solid empty\nendsolid empty\n", &report) == Mesh{});
         CHECK(report.notes ==
               std::vector<std::string>{"no vertices: the file holds an empty mesh"});
     }
@@ -259,22 +259,22 @@ TEST_SUITE("ReadStl")
     TEST_CASE("non-zero attribute bytes are ignored with a note")
     {
         io::ReadReport report;
-        parse(BinaryStl(2)
-                  .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, 0x7C00)
-                  .triangle({1, 0, 0, 1, 1, 0, 0, 1, 0})
-                  .bytes,
-              &report);
+        parse_stl(BinaryStl(2)
+                      .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, 0x7C00)
+                      .triangle({1, 0, 0, 1, 1, 0, 0, 1, 0})
+                      .bytes,
+                  &report);
         CHECK(report.notes.back() ==
               "ignored the attribute bytes of 1 triangle (some exporters store colours there)");
     }
 
     TEST_CASE("ASCII coordinates are read exactly as strtod reads them")
     {
-        const Mesh m = parse("solid\n" +
-                             ascii_facet("vertex 0.3 -2.7182818284590451 1.0000000000000002\n"
-                                         "vertex 4.9406564584124654e-324 1e308 +7\n"
-                                         "vertex 0.30000000000000004 0 0\n") +
-                             "endsolid\n");
+        const Mesh m = parse_stl("solid\n" +
+                                 ascii_facet("vertex 0.3 -2.7182818284590451 1.0000000000000002\n"
+                                             "vertex 4.9406564584124654e-324 1e308 +7\n"
+                                             "vertex 0.30000000000000004 0 0\n") +
+                                 "endsolid\n");
         const char* values[] = {"0.3",
                                 "-2.7182818284590451",
                                 "1.0000000000000002",
@@ -293,33 +293,33 @@ TEST_SUITE("ReadStl")
 
     TEST_CASE("files that are neither ASCII nor well-sized binary STL are refused")
     {
-        CHECK(error_of("") == "t.stl: empty file");
-        CHECK(error_of("\n \t\n") ==
+        CHECK(stl_error("") == "t.stl: empty file");
+        CHECK(stl_error("\n \t\n") ==
               "t.stl: file too short for a binary STL header (4 bytes, "
               "needs 84); the file does not start with 'solid', so it is "
               "not ASCII STL");
-        CHECK(error_of("facet normal 0 0 1\n") ==
+        CHECK(stl_error("facet normal 0 0 1\n") ==
               "t.stl: file too short for a binary STL header (19 bytes, needs 84); the file does "
               "not start with 'solid', so it is not ASCII STL");
-        std::string truncated = two_triangles();
+        std::string truncated = two_triangles_stl();
         truncated.pop_back();
-        CHECK(error_of(truncated) ==
+        CHECK(stl_error(truncated) ==
               "t.stl: byte 80 (header, property triangle count): binary STL header declares 2 "
               "triangles (184 bytes) but the file has 183 bytes; the file does not start with "
               "'solid', so it is not ASCII STL");
-        CHECK(error_of(two_triangles() + "x") ==
+        CHECK(stl_error(two_triangles_stl() + "x") ==
               "t.stl: byte 80 (header, property triangle count): binary STL header declares 2 "
               "triangles (184 bytes) but the file has 185 bytes; the file does not start with "
               "'solid', so it is not ASCII STL");
         // A lying count must not make the reader allocate for it.
-        CHECK(error_of(BinaryStl(4000000000u).bytes) ==
+        CHECK(stl_error(BinaryStl(4000000000u).bytes) ==
               "t.stl: byte 80 (header, property triangle count): binary STL header declares "
               "4000000000 triangles (200000000084 bytes) but the file has 84 bytes; the file "
               "does not start with 'solid', so it is not ASCII STL");
         // A truncated binary file whose header starts with "solid" is not taken for text.
-        std::string solid = two_triangles("solid part");
+        std::string solid = two_triangles_stl("solid part");
         solid.resize(150);
-        CHECK(error_of(solid) ==
+        CHECK(stl_error(solid) ==
               "t.stl: byte 80 (header, property triangle count): binary STL header declares 2 "
               "triangles (184 bytes) but the file has 150 bytes; the file holds NUL bytes, so "
               "it is not ASCII STL");
@@ -329,12 +329,12 @@ TEST_SUITE("ReadStl")
     {
         const float nan = std::numeric_limits<float>::quiet_NaN();
         const float inf = std::numeric_limits<float>::infinity();
-        CHECK(error_of(BinaryStl(2)
-                           .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0})
-                           .triangle({1, 0, 0, 1, 1, 0, 0, nan, 0})
-                           .bytes) ==
+        CHECK(stl_error(BinaryStl(2)
+                            .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0})
+                            .triangle({1, 0, 0, 1, 1, 0, 0, nan, 0})
+                            .bytes) ==
               "t.stl: byte 174 (triangle 1, property vertex 2 y): coordinate is NaN");
-        CHECK(error_of(BinaryStl(1).triangle({-inf, 0, 0, 1, 0, 0, 0, 1, 0}).bytes) ==
+        CHECK(stl_error(BinaryStl(1).triangle({-inf, 0, 0, 1, 0, 0, 0, 1, 0}).bytes) ==
               "t.stl: byte 96 (triangle 0, property vertex 0 x): coordinate is infinite");
         // The normal is ignored, whatever it holds.
         BinaryStl nan_normal(1);
@@ -343,24 +343,25 @@ TEST_SUITE("ReadStl")
         for (float v : {0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f})
             nan_normal.append(v);
         nan_normal.append(std::uint16_t{0});
-        CHECK(parse(nan_normal.bytes).face_count() == 1);
+        CHECK(parse_stl(nan_normal.bytes).face_count() == 1);
     }
 
     TEST_CASE("degenerate facets are refused, not dropped")
     {
-        CHECK(error_of(BinaryStl(2)
-                           .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0})
-                           .triangle({1, 0, 0, 1, 0, 0, 0, 1, 0})
-                           .bytes) ==
+        CHECK(stl_error(BinaryStl(2)
+                            .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0})
+                            .triangle({1, 0, 0, 1, 0, 0, 0, 1, 0})
+                            .bytes) ==
               "t.stl: byte 134 (triangle 1): face has 2 distinct vertices (a face needs at "
               "least 3) once equal positions are welded");
-        CHECK(error_of("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
-                       ascii_facet("vertex 0 0 0\nvertex -0 0 0\nvertex 0 0 0\n") + "endsolid\n") ==
+        CHECK(stl_error("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
+                        ascii_facet("vertex 0 0 0\nvertex -0 0 0\nvertex 0 0 0\n") +
+                        "endsolid\n") ==
               "t.stl:9:1: facet 1: face has 1 distinct vertex (a face needs at least 3) once "
               "equal positions are welded");
-        CHECK(error_of("solid\n" +
-                       ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 0 0\nvertex 0 1 0\n") +
-                       "endsolid\n") ==
+        CHECK(stl_error("solid\n" +
+                        ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 0 0\nvertex 0 1 0\n") +
+                        "endsolid\n") ==
               "t.stl:2:1: facet 0: face uses vertex 0 at two corners that are not adjacent once "
               "equal positions are welded");
     }
@@ -368,11 +369,11 @@ TEST_SUITE("ReadStl")
     TEST_CASE("repeated consecutive corners of a polygon are collapsed and reported")
     {
         io::ReadReport report;
-        const Mesh m = parse("solid\n" +
-                                 ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 0 0\n"
-                                             "vertex 0 1 0\n") +
-                                 "endsolid\n",
-                             &report);
+        const Mesh m = parse_stl("solid\n" +
+                                     ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 0 0\n"
+                                                 "vertex 0 1 0\n") +
+                                     "endsolid\n",
+                                 &report);
         CHECK(corners(m, 0) == std::vector<Index>{0, 1, 2});
         CHECK(report.notes.front() ==
               "collapsed 1 consecutive repeated vertex indices in 1 faces (first at t.stl:2:1)");
@@ -381,35 +382,35 @@ TEST_SUITE("ReadStl")
     TEST_CASE("malformed ASCII STL names the line, the column and what was expected")
     {
         const std::string facet = ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n");
-        CHECK(error_of("solid x\n" + facet) == "t.stl:8:9: file ends inside solid (no endsolid)");
-        CHECK(error_of("solid x\n") == "t.stl:1:8: file ends inside solid (no endsolid)");
-        CHECK(error_of("solid x\nfacet normal 0 0 1\n outer loop\nvertex 0 0 0\n") ==
+        CHECK(stl_error("solid x\n" + facet) == "t.stl:8:9: file ends inside solid (no endsolid)");
+        CHECK(stl_error("solid x\n") == "t.stl:1:8: file ends inside solid (no endsolid)");
+        CHECK(stl_error("solid x\nfacet normal 0 0 1\n outer loop\nvertex 0 0 0\n") ==
               "t.stl:4:13: file ends inside facet 0 (no endfacet)");
-        CHECK(error_of("solid x\nfacet normal 0 0 1\nvertex 0 0 0\n") ==
+        CHECK(stl_error("solid x\nfacet normal 0 0 1\nvertex 0 0 0\n") ==
               "t.stl:3:1: expected 'outer', found 'vertex'");
-        CHECK(error_of("solid x\nfacet 0 0 1\n") == "t.stl:2:7: expected 'normal', found '0'");
-        CHECK(error_of("solid x\n" + facet + "vertex 1 1 1\n") ==
+        CHECK(stl_error("solid x\nfacet 0 0 1\n") == "t.stl:2:7: expected 'normal', found '0'");
+        CHECK(stl_error("solid x\n" + facet + "vertex 1 1 1\n") ==
               "t.stl:9:1: expected 'facet' or 'endsolid', found 'vertex'");
-        CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nendfacet\n") ==
+        CHECK(stl_error("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nendfacet\n") ==
               "t.stl:5:1: expected 'vertex' or 'endloop', found 'endfacet'");
-        CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                       "endloop\nendfacet\nendsolid x\n") ==
+        CHECK(stl_error("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                        "endloop\nendfacet\nendsolid x\n") ==
               "t.stl:6:1: facet 0 has 2 vertices (a facet needs at least 3)");
-        CHECK(error_of("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
-                       "vertex 0 1 0\nendloop\nendloop\n") ==
+        CHECK(stl_error("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
+                        "vertex 0 1 0\nendloop\nendloop\n") ==
               "t.stl:8:1: expected 'endfacet', found 'endloop'");
-        CHECK(error_of("solid x\n" + facet + "endsolid x\nfacet normal 0 0 1\n") ==
+        CHECK(stl_error("solid x\n" + facet + "endsolid x\nfacet normal 0 0 1\n") ==
               "t.stl:10:1: expected 'solid' or the end of the file, found 'facet'");
-        CHECK(error_of("solid x\nfacet normal 0 0 up\n") ==
+        CHECK(stl_error("solid x\nfacet normal 0 0 up\n") ==
               "t.stl:2:18: normal component 'up' is not a number");
     }
 
     TEST_CASE("bad ASCII coordinates are refused with line and column")
     {
         const auto with_vertex = [](const std::string& v) {
-            return error_of("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
-                            "facet normal 0 0 1\nouter loop\nvertex 0 0 0\n" + v +
-                            "\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
+            return stl_error("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n") +
+                             "facet normal 0 0 1\nouter loop\nvertex 0 0 0\n" + v +
+                             "\nvertex 0 1 0\nendloop\nendfacet\nendsolid\n");
         };
         CHECK(with_vertex("vertex 1 0 abc") == "t.stl:12:12: z coordinate 'abc' is not a number");
         CHECK(with_vertex("vertex 1 nan 0") == "t.stl:12:10: y coordinate 'nan' is not finite");
@@ -432,7 +433,7 @@ TEST_SUITE("WriteStl")
         io::write_stl(m, io::Encoding::Ascii, out);
         CHECK(out.starts_with("solid meshfair\n  facet normal "));
         CHECK(out.ends_with("    endloop\n  endfacet\nendsolid meshfair\n"));
-        const Mesh back = parse(out);
+        const Mesh back = parse_stl(out);
         const Mesh expected = in_order_of_first_use(m);
         CHECK(back.vertex_count() == m.vertex_count());
         REQUIRE(back.positions.size() == expected.positions.size());
@@ -454,7 +455,7 @@ TEST_SUITE("WriteStl")
             std::string out;
             io::write_stl(m, e, out);
             CHECK(out.size() == 84 + 50 * static_cast<size_t>(m.face_count()));
-            CHECK(parse(out) == in_order_of_first_use(m));
+            CHECK(parse_stl(out) == in_order_of_first_use(m));
         }
     }
 
@@ -472,7 +473,7 @@ TEST_SUITE("WriteStl")
                     x = static_cast<float>(x);
             std::string out;
             io::write_stl(input, e, out);
-            CHECK(parse(out) == in_order_of_first_use(fan_triangulated(input)));
+            CHECK(parse_stl(out) == in_order_of_first_use(fan_triangulated(input)));
         }
     }
 
@@ -517,8 +518,8 @@ TEST_SUITE("WriteStl")
         io::write_stl(Mesh{}, io::Encoding::BinaryLittleEndian, binary);
         CHECK(ascii == "solid meshfair\nendsolid meshfair\n");
         CHECK(binary.size() == 84);
-        CHECK(parse(ascii) == Mesh{});
-        CHECK(parse(binary) == Mesh{});
+        CHECK(parse_stl(ascii) == Mesh{});
+        CHECK(parse_stl(binary) == Mesh{});
     }
 
     TEST_CASE("coordinates beyond float32 are refused for binary STL only")
@@ -531,6 +532,6 @@ TEST_SUITE("WriteStl")
                              "binary STL; write ASCII STL instead",
                              InvalidInputError);
         io::write_stl(m, io::Encoding::Ascii, out);
-        CHECK(parse(out).positions[3 * 1 + 1] == 1e300);
+        CHECK(parse_stl(out).positions[3 * 1 + 1] == 1e300);
     }
 }

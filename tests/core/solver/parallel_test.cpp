@@ -18,31 +18,25 @@ using namespace meshfair;
 
 namespace {
 
-// Restores the default thread count when a test case ends, whatever happens.
-struct ThreadCountGuard
-{
-    ~ThreadCountGuard() { set_thread_count(0); }
-};
-
 bool same_bits(const std::vector<Scalar>& a, const std::vector<Scalar>& b)
 {
     return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Scalar)) == 0;
 }
 
-struct Run
+struct ThreadRun
 {
     std::vector<Scalar> positions;
     std::vector<Scalar> energies; // total after each step
     std::vector<Scalar> lambdas;
 };
 
-Run run_steps(const Mesh& mesh, const Topology& topology, const Recipe& recipe, int threads)
+ThreadRun run_steps(const Mesh& mesh, const Topology& topology, const Recipe& recipe, int threads)
 {
     set_thread_count(threads);
     Mesh x = mesh;
     Session session(x, topology, recipe);
     session.apply_hard_targets(x.positions);
-    Run r;
+    ThreadRun r;
     for (int k = 0; k < 4; ++k)
     {
         r.lambdas.push_back(session.step(x.positions).lambda);
@@ -81,7 +75,7 @@ TEST_SUITE("Parallel")
 {
     TEST_CASE("parallel_for really uses the threads it is given, and no more")
     {
-        ThreadCountGuard guard;
+        test::ThreadCountGuard guard;
         const Index n = 16 * kParallelThreshold;
         std::vector<int> who(static_cast<size_t>(n), -1);
         for (const int threads : {1, 2, 3})
@@ -105,7 +99,7 @@ TEST_SUITE("Parallel")
 
     TEST_CASE("deterministic_sum: the same bits for any thread count, close to the exact sum")
     {
-        ThreadCountGuard guard;
+        test::ThreadCountGuard guard;
         std::mt19937_64 random(5);
         std::uniform_real_distribution<double> value(-1e3, 1e3);
         for (const Index n : {0, 1, 4095, 4097, 100'000, 5'000'001})
@@ -133,7 +127,7 @@ TEST_SUITE("Parallel")
 
     TEST_CASE("the solver gives the same bits for 1, 2, 3 and 4 threads")
     {
-        ThreadCountGuard guard;
+        test::ThreadCountGuard guard;
         Mesh m = test::icosphere(6); // 40,962 vertices: every loop runs in parallel
         test::perturb(m, 0.003, 11);
         const Topology t = build_topology(m);
@@ -182,12 +176,12 @@ TEST_SUITE("Parallel")
             const char* name = entry.first;
             const Recipe* recipe = entry.second;
             CAPTURE(name);
-            const Run one = run_steps(m, t, *recipe, 1);
+            const ThreadRun one = run_steps(m, t, *recipe, 1);
             CHECK(!same_bits(one.positions, m.positions)); // something moved
             for (const int threads : {2, 3, 4})
             {
                 CAPTURE(threads);
-                const Run many = run_steps(m, t, *recipe, threads);
+                const ThreadRun many = run_steps(m, t, *recipe, threads);
                 CHECK(same_bits(many.positions, one.positions));
                 CHECK(same_bits(many.energies, one.energies));
                 CHECK(same_bits(many.lambdas, one.lambdas));

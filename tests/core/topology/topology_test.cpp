@@ -209,19 +209,13 @@ void check_against_paper(const Mesh& m)
     CHECK(t.face_neighbors == p.face_neighbors);
 }
 
-// Restores the default thread count when a test case ends.
-struct ThreadCountGuard
-{
-    ~ThreadCountGuard() { set_thread_count(0); }
-};
-
 } // namespace
 
 TEST_SUITE("Topology")
 {
     TEST_CASE("edges, F(e) and the dual graph are numbered exactly as the paper's get/insert")
     {
-        ThreadCountGuard guard;
+        test::ThreadCountGuard guard;
         Mesh folded; // two quads sharing two regular edges: one dual edge
         for (int k = 0; k < 5; ++k)
             folded.add_vertex(k, k * k, 0);
