@@ -38,7 +38,7 @@ Scalar segment_distance(const Vec3& p, const Vec3& a, const Vec3& b)
     const Vec3 ab = b - a;
     const Scalar length2 = dot(ab, ab);
     const Scalar t = length2 > 0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-    return norm(p - Vec3{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]});
+    return norm(p - (a + t * ab));
 }
 
 } // namespace
@@ -83,9 +83,7 @@ Scalar point_triangle_distance(const Vec3& p, const Vec3& a, const Vec3& b, cons
         return segment_distance(p, b, c); // edge region bc
     const Scalar denom = 1 / (va + vb + vc);
     const Scalar v = vb * denom, w = vc * denom;
-    const Vec3 q{a[0] + ab[0] * v + ac[0] * w, a[1] + ab[1] * v + ac[1] * w,
-                 a[2] + ab[2] * v + ac[2] * w};
-    return norm(p - q);
+    return norm(p - (a + v * ab + w * ac));
 }
 
 SurfaceDistance::SurfaceDistance(const Mesh& mesh, std::span<const Scalar> x)

@@ -22,23 +22,23 @@ public:
     explicit IndexList(std::vector<Index> indices)
         : indices_(std::move(indices)), size_(static_cast<Index>(indices_.size()))
     {
-        identity_ = true;
-        for (Index k = 0; k < size_ && identity_; ++k)
-            identity_ = indices_[k] == k;
-        if (identity_)
+        bool in_order = true;
+        for (Index k = 0; k < size_ && in_order; ++k)
+            in_order = indices_[k] == k;
+        if (in_order)
             std::vector<Index>().swap(indices_); // freed, not only emptied
     }
 
     std::size_t size() const { return static_cast<std::size_t>(size_); }
     bool empty() const { return size_ == 0; }
     //! True when the k-th element is k for every k (no list is stored).
-    bool identity() const { return identity_; }
+    bool identity() const { return indices_.empty(); }
     Index operator[](std::size_t k) const
     {
-        return identity_ ? static_cast<Index>(k) : indices_[k];
+        return identity() ? static_cast<Index>(k) : indices_[k];
     }
     //! The stored indices, or nullptr when identity() (the k-th element is k).
-    const Index* data() const { return identity_ ? nullptr : indices_.data(); }
+    const Index* data() const { return identity() ? nullptr : indices_.data(); }
     class Iterator
     {
     public:
@@ -65,9 +65,8 @@ public:
     Iterator end() const { return {this, size_}; }
 
 private:
-    std::vector<Index> indices_; //!< empty when identity_
+    std::vector<Index> indices_; //!< empty exactly when the list is 0, 1, ..., size_ - 1
     Index size_ = 0;
-    bool identity_ = true;
 };
 
 } // namespace meshfair

@@ -26,8 +26,7 @@ LocalityRun::Renumbered LocalityRun::renumber(Mesh mesh, const Recipe& recipe)
     LocalityOrder order = locality_order(mesh);
     Mesh renumbered = reorder_mesh(std::exchange(mesh, Mesh{}), order);
     Recipe renumbered_recipe = renumber_recipe(recipe, order.vertex_index, order.face_index);
-    return {std::move(renumbered), without_inverses(std::move(order)),
-            std::move(renumbered_recipe)};
+    return {std::move(renumbered), std::move(order), std::move(renumbered_recipe)};
 }
 
 LocalityRun::LocalityRun(Mesh mesh, const Recipe& recipe)

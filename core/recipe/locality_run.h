@@ -67,7 +67,8 @@ public:
     Topology take_topology() &&;
 
 private:
-    //! The file's mesh and recipe renumbered, with the order's inverses already dropped.
+    //! The file's mesh and recipe renumbered, and the order (its inverses are dropped by
+    //! the constructor that takes it, before the topology is built).
     struct Renumbered
     {
         Mesh mesh;

@@ -489,22 +489,10 @@ void Session::set_centroid_targets(std::span<const Scalar> targets)
     fixed_constant_valid_ = false;
 }
 
-const std::vector<Index>& Session::soft_vertices() const
-{
-    static const std::vector<Index> none;
-    return soft_ ? soft_->vertices() : none;
-}
-
 const std::vector<std::string>& Session::notes() const
 {
     static const std::vector<std::string> none;
     return volume_ ? volume_->notes() : none;
-}
-
-const IndexList& Session::centroid_faces() const
-{
-    static const IndexList none;
-    return centroid_ ? centroid_->faces() : none;
 }
 
 void Session::check_size(std::span<const Scalar> x, const char* what) const
@@ -530,12 +518,12 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
     {
         // Each constrained face's residual once per step, for the faces a free vertex
         // reads; its n_f corners then add it.
-        // nullptr: every face, in order (IndexList keeps no list of them).
-        const Index* faces =
-            centroid_active_.empty() ? centroid_->faces().data() : centroid_active_.data();
+        // faces nullptr: every face, in order (IndexList keeps no list of them).
+        const bool all_active = centroid_active_.empty();
+        const Index* faces = all_active ? centroid_->faces().data() : centroid_active_.data();
         Scalar* residual = centroid_residual_.data();
-        const Index count = static_cast<Index>(centroid_active_.empty() ? centroid_->faces().size()
-                                                                        : centroid_active_.size());
+        const Index count =
+            static_cast<Index>(all_active ? centroid_->faces().size() : centroid_active_.size());
         if constexpr (Energy)
             energy.centroid = deterministic_block_sums<Scalar>(count, [&](Index begin, Index end) {
                 return centroid_->face_residuals(x, faces, begin, end, residual);

@@ -156,8 +156,6 @@ public:
     TermEnergies energy() const { return energy(x_); }
 
     std::span<const Index> free_vertices() const { return free_; }
-    const std::vector<Index>& soft_vertices() const;
-    const IndexList& centroid_faces() const;
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.
     std::span<const Scalar> normals() const { return normals_; }
     //! E_U before and after each normal-smoothing iteration (normals "smoothed"); with
