@@ -128,6 +128,7 @@ int main(int argc, char** argv)
     Series record{"undo record at release (compare, keep the masks)", {}};
     Series undo{"undo", {}};
     Series raster{"draw (llvmpipe rasterization)", {}};
+    Series kept{"draw, nothing changed since (the view kept and copied)", {}};
     Series ids{"ID buffer render + read back (Renderer::visibility)", {}};
     std::size_t brushed = 0, rectangled = 0, through = 0;
     const auto count = [](const SelectionMask& m) {
@@ -177,6 +178,11 @@ int main(int argc, char** argv)
                 session.draw();
                 (void)renderer.read_pixels(1, 1); // waits for the frame
             }));
+            // A frame of the interface alone (a panel hovered, a slider of it dragged).
+            kept.ms.push_back(timed([&] {
+                session.draw();
+                (void)renderer.read_pixels(1, 1);
+            }));
             rectangle(rect_release[kind]);
             rectangled = std::max(rectangled, count(kind == 0 ? session.document().selected_vertices
                                                               : session.document().selected_faces));
@@ -199,7 +205,7 @@ int main(int argc, char** argv)
         print(press_same[kind]);
     }
     for (const Series* s : {&move, &upload, &record, &rect_press, &rect_release[0],
-                            &rect_release[1], &rect_through, &undo, &raster, &ids})
+                            &rect_release[1], &rect_through, &undo, &raster, &kept, &ids})
         print(*s);
     const double frame = move.median() + upload.median();
     std::printf(

@@ -93,6 +93,7 @@ namespace meshfair::gl {
     X(PFNGLFRAMEBUFFERTEXTURE2DPROC, FramebufferTexture2D)         \
     X(PFNGLFRAMEBUFFERRENDERBUFFERPROC, FramebufferRenderbuffer)   \
     X(PFNGLCHECKFRAMEBUFFERSTATUSPROC, CheckFramebufferStatus)     \
+    X(PFNGLBLITFRAMEBUFFERPROC, BlitFramebuffer)                   \
     X(PFNGLGENRENDERBUFFERSPROC, GenRenderbuffers)                 \
     X(PFNGLDELETERENDERBUFFERSPROC, DeleteRenderbuffers)           \
     X(PFNGLBINDRENDERBUFFERPROC, BindRenderbuffer)                 \
@@ -193,6 +194,7 @@ extern Functions g_functions;
 #define glFramebufferTexture2D MESHFAIR_GL_CALL(FramebufferTexture2D)
 #define glFramebufferRenderbuffer MESHFAIR_GL_CALL(FramebufferRenderbuffer)
 #define glCheckFramebufferStatus MESHFAIR_GL_CALL(CheckFramebufferStatus)
+#define glBlitFramebuffer MESHFAIR_GL_CALL(BlitFramebuffer)
 #define glGenRenderbuffers MESHFAIR_GL_CALL(GenRenderbuffers)
 #define glDeleteRenderbuffers MESHFAIR_GL_CALL(DeleteRenderbuffers)
 #define glBindRenderbuffer MESHFAIR_GL_CALL(BindRenderbuffer)

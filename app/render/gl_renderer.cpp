@@ -98,6 +98,8 @@ struct GlRenderer::Gl
     GLsizei selected_point_count = 0;
     GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
     int pick_width = 0, pick_height = 0;
+    GLuint view_framebuffer = 0, view_color = 0, view_depth = 0; // the 3D view, kept
+    int view_width = 0, view_height = 0;
 
     Gl()
     {
@@ -171,6 +173,9 @@ struct GlRenderer::Gl
         glDeleteFramebuffers(1, &pick_framebuffer);
         glDeleteRenderbuffers(1, &pick_ids);
         glDeleteRenderbuffers(1, &pick_depth);
+        glDeleteFramebuffers(1, &view_framebuffer);
+        glDeleteRenderbuffers(1, &view_color);
+        glDeleteRenderbuffers(1, &view_depth);
     }
 
     void bind_face_textures() const
@@ -207,6 +212,33 @@ struct GlRenderer::Gl
         pick_width = width;
         pick_height = height;
     }
+
+    // The kept view's framebuffer, (re)made at the size asked for: 8-bit RGBA and a 24-bit
+    // depth, as the windows and OSMesa buffers the view is copied to, so that what is drawn
+    // there is what drawing directly drew.
+    void prepare_view_target(int width, int height)
+    {
+        if (view_framebuffer != 0 && width == view_width && height == view_height)
+            return;
+        if (view_framebuffer == 0)
+        {
+            glGenFramebuffers(1, &view_framebuffer);
+            glGenRenderbuffers(1, &view_color);
+            glGenRenderbuffers(1, &view_depth);
+        }
+        glBindRenderbuffer(GL_RENDERBUFFER, view_color);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
+        glBindRenderbuffer(GL_RENDERBUFFER, view_depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, view_framebuffer);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  view_color);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, view_depth);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RenderError("the view's framebuffer is incomplete");
+        view_width = width;
+        view_height = height;
+    }
 };
 
 GlRenderer::GlRenderer() : gl_(std::make_unique<Gl>())
@@ -218,6 +250,7 @@ GlRenderer::~GlRenderer() = default;
 
 void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
 {
+    ++content_version_; // the view drawn last no longer shows it
     connectivity_.positions.clear();
     connectivity_.face_offsets = mesh.face_offsets;
     connectivity_.face_vertices = mesh.face_vertices;
@@ -258,6 +291,7 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
 
 void GlRenderer::update_positions(std::span<const Scalar> positions)
 {
+    ++content_version_; // the view drawn last no longer shows it
     if (positions.size() != positions_.size())
         throw RenderError("GlRenderer::update_positions: " + std::to_string(positions.size()) +
                           " coordinates for a mesh of " + std::to_string(positions_.size()));
@@ -271,6 +305,7 @@ void GlRenderer::update_positions(std::span<const Scalar> positions)
 void GlRenderer::update_geometry(std::span<const float> positions, std::span<const float> normals,
                                  std::span<const float> face_areas)
 {
+    ++content_version_; // the view drawn last no longer shows it
     if (positions.size() != positions_.size() || normals.size() != normals_.size() ||
         face_areas.size() != face_areas_.size())
         throw RenderError("GlRenderer::update_geometry: " + std::to_string(positions.size()) +
@@ -311,6 +346,7 @@ void GlRenderer::upload_face_areas(std::span<const float> face_areas)
 
 void GlRenderer::set_vertex_colors(std::span<const float> rgb)
 {
+    ++content_version_; // the view drawn last no longer shows it
     has_colors_ = !rgb.empty();
     if (has_colors_ && rgb.size() != positions_.size())
         throw RenderError("GlRenderer::set_vertex_colors: " + std::to_string(rgb.size()) +
@@ -321,6 +357,7 @@ void GlRenderer::set_vertex_colors(std::span<const float> rgb)
 
 void GlRenderer::set_selection(std::span<const char> vertices, std::span<const char> faces)
 {
+    ++content_version_; // the view drawn last no longer shows it
     if (vertices.size() != vertex_count_ || faces.size() != face_count_)
         throw RenderError("GlRenderer::set_selection: " + std::to_string(vertices.size()) +
                           " vertex and " + std::to_string(faces.size()) +
@@ -346,6 +383,7 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
 
 void GlRenderer::set_glyphs(std::span<const GlyphGroup> groups)
 {
+    ++content_version_; // the view drawn last no longer shows it
     std::vector<float> points;
     glyphs_.clear();
     for (const GlyphGroup& g : groups)
@@ -366,10 +404,47 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
 {
     const int width = std::max(rect.width, 1), height = std::max(rect.height, 1);
     const double aspect = double(width) / height;
-    const glm::mat4 view = glm::mat4(camera.view_matrix());
-    const glm::mat4 projection = glm::mat4(camera.projection_matrix(aspect));
+    const glm::dmat4 view = camera.view_matrix();
+    const glm::dmat4 projection = camera.projection_matrix(aspect);
+    GLint target = 0; // the window's or OSMesa's framebuffer, or whatever the caller bound
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &target);
+    // The whole target in the background colour, as before the view was kept: whatever the
+    // interface draws around and over the view starts from it.
+    glDisable(GL_SCISSOR_TEST);
+    glClearColor(o.background[0], o.background[1], o.background[2], 1.0f);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    // Most frames of an editor change nothing in the view (a panel hovered, a slider of
+    // the interface dragged, the half-second redraw): the mesh is rasterized again only
+    // when its data, the camera, the display options or the view's size changed, else the
+    // view drawn last is copied. On a million-triangle mesh in software that is a frame
+    // of a few milliseconds instead of a third of a second.
+    const bool same = drawn_.valid && drawn_.version == content_version_ && drawn_.options == o &&
+                      drawn_.width == width && drawn_.height == height && drawn_.view == view &&
+                      drawn_.projection == projection;
+    if (!same)
+    {
+        gl_->prepare_view_target(width, height);
+        glBindFramebuffer(GL_FRAMEBUFFER, gl_->view_framebuffer);
+        render_view(glm::mat4(view), glm::mat4(projection), camera, o, width, height);
+        drawn_ = {true, content_version_, o, width, height, view, projection};
+        ++view_renders_;
+    }
     // GL counts rows from the bottom.
-    glViewport(rect.x, rect.framebuffer_height - rect.y - height, width, height);
+    const int bottom = rect.framebuffer_height - rect.y - height;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->view_framebuffer);
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
+    glBlitFramebuffer(0, 0, width, height, rect.x, bottom, rect.x + width, bottom + height,
+                      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(target));
+    glViewport(rect.x, bottom, width, height);
+    check("draw");
+}
+
+void GlRenderer::render_view(const glm::mat4& view, const glm::mat4& projection,
+                             const Camera& camera, const DisplayOptions& o, int width, int height)
+{
+    glViewport(0, 0, width, height);
     glClearColor(o.background[0], o.background[1], o.background[2], 1.0f);
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -482,7 +557,6 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     }
     glBindVertexArray(0);
     glUseProgram(0);
-    check("draw");
 }
 
 Image GlRenderer::read_pixels(int width, int height)

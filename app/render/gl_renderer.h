@@ -40,9 +40,16 @@ public:
     int buffer_allocations() const { return buffer_allocations_; }
     //! How many times the face area vectors went to the GPU (for tests).
     int face_area_uploads() const { return face_area_uploads_; }
+    //! How many draws rasterized the view; the others copied the view drawn last, since
+    //! nothing it shows had changed (for tests).
+    int view_renders() const { return view_renders_; }
 
 private:
     struct Gl; // the GL objects, defined where GL is included
+    //! Rasterizes the view (the surface, edges, points and glyphs) into the bound
+    //! framebuffer, `width` x `height` from its corner.
+    void render_view(const glm::mat4& view, const glm::mat4& projection, const Camera& camera,
+                     const DisplayOptions& options, int width, int height);
     //! Draws the ID buffer of a `width` x `height` view into the pick framebuffer, left bound.
     void render_ids(const Camera& camera, int width, int height);
     //! Re-uploads the positions, normals and face area vectors (unless empty) in place (no
@@ -71,6 +78,19 @@ private:
     // vectors), and whether the GPU's area vectors belong to its positions.
     bool flat_drawn_ = false, face_areas_current_ = true;
     size_t color_bytes_ = 0, glyph_bytes_ = 0; // what the colour and glyph buffers hold
+    // Bumped by every change of what the view shows (mesh, positions, colours, selection,
+    // glyphs); the view is kept with the version and the parameters it was drawn with.
+    std::uint64_t content_version_ = 0;
+    struct DrawnView
+    {
+        bool valid = false;
+        std::uint64_t version = 0;
+        DisplayOptions options;
+        int width = 0, height = 0;
+        glm::dmat4 view{1.0}, projection{1.0};
+    };
+    DrawnView drawn_;
+    int view_renders_ = 0;
 };
 
 } // namespace meshfair::app

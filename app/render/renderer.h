@@ -36,6 +36,8 @@ struct DisplayOptions
     std::array<float, 3> background{0.17f, 0.18f, 0.20f};
     float edge_width_px = 1.0f;
     float point_size_px = 4.0f;
+
+    bool operator==(const DisplayOptions&) const = default;
 };
 
 //! \brief Where the 3D view lies in the framebuffer: a rectangle in pixels, (x, y) its
@@ -49,6 +51,8 @@ struct ViewRect
 
     //! The whole framebuffer.
     static ViewRect whole(int width, int height) { return {width, height, 0, 0, width, height}; }
+
+    bool operator==(const ViewRect&) const = default;
 };
 
 //! What is under a pixel: the face, the nearest of the drawn triangle's corners on

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/render/gl_functions.h"
 #include "app/render/render_error.h"
 #include "tests/helpers.h"
 #include "tests/render/render_support.h"
@@ -254,6 +255,106 @@ TEST_SUITE("GlRenderer")
         const Image expected = reference.read_pixels(kRendererWidth, kRendererHeight);
         CHECK(compare_images(flat_image, expected, 1).pixels_over_tolerance == 0);
         CHECK(compare_images(flat_image, smooth_image, 8).fraction_over_tolerance > 0.02);
+    }
+
+    TEST_CASE(
+        "the view is rasterized again only when what it shows changed, and a kept "
+        "view is the picture a fresh renderer draws")
+    {
+        test::offscreen_context(kRendererWidth, kRendererHeight);
+        Document d = make_document(test::open_grid(6, 3), "bumps.obj");
+        // Everything a view shows, changed one part at a time below.
+        struct Shown
+        {
+            std::vector<Scalar> positions;
+            std::vector<char> vertices, faces; // selected
+            std::vector<float> colors;
+            std::vector<GlyphGroup> glyphs;
+            DisplayOptions options;
+            Camera camera;
+            ViewRect rect{kRendererWidth, kRendererHeight, 100, 50, 300, 150};
+        } shown;
+        shown.positions = d.mesh.positions;
+        for (size_t i = 0; i < shown.positions.size(); i += 3)
+            shown.positions[i + 2] =
+                0.3 * std::sin(2.0 * shown.positions[i]) * std::cos(3.0 * shown.positions[i + 1]);
+        shown.vertices.assign(static_cast<size_t>(d.mesh.vertex_count()), 0);
+        shown.faces.assign(static_cast<size_t>(d.mesh.face_count()), 0);
+        shown.camera.frame(d.box, 2.0);
+        const auto give = [&](GlRenderer& r) {
+            r.update_positions(shown.positions);
+            r.set_selection(shown.vertices, shown.faces);
+            r.set_vertex_colors(shown.colors);
+            r.set_glyphs(shown.glyphs);
+        };
+        // A renderer that has drawn nothing: it rasterizes whatever it is given.
+        const auto fresh_picture = [&] {
+            GlRenderer fresh;
+            fresh.set_mesh(d.mesh, d.draw_data);
+            give(fresh);
+            fresh.draw(shown.camera, shown.options, shown.rect);
+            return fresh.read_pixels(kRendererWidth, kRendererHeight);
+        };
+
+        GlRenderer r;
+        r.set_mesh(d.mesh, d.draw_data);
+        give(r);
+        r.draw(shown.camera, shown.options, shown.rect);
+        CHECK(r.view_renders() == 1);
+        const Image first = r.read_pixels(kRendererWidth, kRendererHeight);
+        CHECK(compare_images(first, fresh_picture(), 0).pixels_over_tolerance == 0);
+        // Nothing changed: copied, the same pixels, also over a framebuffer drawn over since.
+        glClearColor(1, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        r.draw(shown.camera, shown.options, shown.rect);
+        CHECK(r.view_renders() == 1);
+        CHECK(compare_images(r.read_pixels(kRendererWidth, kRendererHeight), first, 0)
+                  .pixels_over_tolerance == 0);
+
+        // Each change: drawn again (once), and the picture is a fresh renderer's.
+        const auto changed = [&](const char* what, bool redrawn, auto&& change) {
+            const std::string name = what;
+            CAPTURE(name);
+            const int renders = r.view_renders();
+            const Image before = r.read_pixels(kRendererWidth, kRendererHeight);
+            change();
+            r.draw(shown.camera, shown.options, shown.rect);
+            CHECK(r.view_renders() == renders + (redrawn ? 1 : 0));
+            const Image now = r.read_pixels(kRendererWidth, kRendererHeight);
+            CHECK(compare_images(now, fresh_picture(), 0).pixels_over_tolerance == 0);
+            CHECK(compare_images(now, before, 8).pixels_over_tolerance > 0);
+            r.draw(shown.camera, shown.options, shown.rect); // and then kept
+            CHECK(r.view_renders() == renders + (redrawn ? 1 : 0));
+        };
+        changed("positions", true, [&] {
+            for (size_t i = 1; i < shown.positions.size(); i += 3)
+                shown.positions[i] -= 0.4;
+            r.update_positions(shown.positions);
+        });
+        changed("selection", true, [&] {
+            std::fill(shown.faces.begin(), shown.faces.begin() + 6, 1);
+            r.set_selection(shown.vertices, shown.faces);
+        });
+        changed("colours", true, [&] {
+            shown.colors.assign(shown.positions.size(), 0.0f);
+            for (size_t k = 0; k < shown.colors.size(); k += 3)
+                shown.colors[k] = 1.0f;
+            shown.options.vertex_colors = true;
+            r.set_vertex_colors(shown.colors);
+        });
+        changed("glyphs", true, [&] {
+            GlyphGroup dots;
+            dots.points = {1.0f, 0.5f, 0.5f, 4.0f, 0.5f, 0.5f};
+            dots.color = {0, 1, 0};
+            dots.size_px = 12;
+            shown.glyphs = {dots};
+            r.set_glyphs(shown.glyphs);
+        });
+        changed("display options", true, [&] { shown.options.wireframe = true; });
+        changed("camera", true, [&] { shown.camera.distance *= 1.5; });
+        changed("view size", true, [&] { shown.rect.width = 250; });
+        // Moved in the window at the same size: the kept view is copied to its new place.
+        changed("view place", false, [&] { shown.rect.x = 20; });
     }
 
     TEST_CASE("positions or colours of the wrong size are refused")
