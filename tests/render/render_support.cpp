@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <utility>
 
 #include "app/editor/editor_ui.h"
 #include "app/editor/history.h"
@@ -19,9 +20,17 @@ namespace fs = std::filesystem;
 
 void offscreen_context(int width, int height)
 {
-    static std::unique_ptr<app::OsmesaContext> context;
+    // Destroyed by an exit handler registered after the context is made, so that it runs
+    // before Mesa's own (registered while the context is made, which stops Mesa's work
+    // queues): destroyed after those, the context can wait forever for a job of a stopped
+    // queue (a shader cache write), which under load hung 2 in 30 runs of a test that
+    // compiles many renderers.
+    static app::OsmesaContext* context = nullptr;
     if (!context)
-        context = std::make_unique<app::OsmesaContext>(width, height);
+    {
+        context = new app::OsmesaContext(width, height);
+        std::atexit([] { delete std::exchange(context, nullptr); });
+    }
     else if (context->width() != width || context->height() != height)
         context->resize(width, height);
     else

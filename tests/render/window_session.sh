@@ -11,7 +11,9 @@
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     export MESHFAIR_IN_XVFB=1
-    exec xvfb-run -a -s "-screen 0 1280x800x24" "$0" "$@"
+    # A display and an X authority of its own (from :130 up), so that the window tests can
+    # run at the same time.
+    exec xvfb-run -a -n 130 -f "${4%/}.Xauthority" -s "-screen 0 1280x800x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
 name=session
