@@ -68,6 +68,53 @@ void set_matrices(const gl::Program& p, const glm::mat4& view, const glm::mat4& 
     glUniformMatrix4fv(p["u_projection"], 1, GL_FALSE, glm::value_ptr(projection));
 }
 
+// A framebuffer of a colour and a 24-bit depth renderbuffer, (re)made at the size asked
+// for: the ID buffer's, and the kept view's.
+struct RenderTarget
+{
+    GLenum color_format;
+    const char* name; // for the error
+    GLuint framebuffer = 0, color = 0, depth = 0;
+    int width = 0, height = 0;
+
+    RenderTarget(GLenum format, const char* what) : color_format(format), name(what) {}
+    RenderTarget(const RenderTarget&) = delete;
+    RenderTarget& operator=(const RenderTarget&) = delete;
+    ~RenderTarget()
+    {
+        glDeleteFramebuffers(1, &framebuffer);
+        glDeleteRenderbuffers(1, &color);
+        glDeleteRenderbuffers(1, &depth);
+    }
+
+    //! Sized `w` x `h` and bound (GL_FRAMEBUFFER).
+    void prepare(int w, int h)
+    {
+        if (framebuffer != 0 && w == width && h == height)
+        {
+            glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+            return;
+        }
+        if (framebuffer == 0)
+        {
+            glGenFramebuffers(1, &framebuffer);
+            glGenRenderbuffers(1, &color);
+            glGenRenderbuffers(1, &depth);
+        }
+        glBindRenderbuffer(GL_RENDERBUFFER, color);
+        glRenderbufferStorage(GL_RENDERBUFFER, color_format, w, h);
+        glBindRenderbuffer(GL_RENDERBUFFER, depth);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, w, h);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw RenderError(std::string("the ") + name + "'s framebuffer is incomplete");
+        width = w;
+        height = h;
+    }
+};
+
 } // namespace
 
 struct GlRenderer::Gl
@@ -96,10 +143,11 @@ struct GlRenderer::Gl
     GLuint vertex_selected = 0;                          // one byte per vertex (the tint)
     GLuint glyph_vao = 0, glyph_points = 0;              // the glyphs' points, all groups
     GLsizei selected_point_count = 0;
-    GLuint pick_framebuffer = 0, pick_ids = 0, pick_depth = 0;
-    int pick_width = 0, pick_height = 0;
-    GLuint view_framebuffer = 0, view_color = 0, view_depth = 0; // the 3D view, kept
-    int view_width = 0, view_height = 0;
+    RenderTarget pick{GL_RG32UI, "ID buffer"}; // face and vertex ids, 1-based
+    // The 3D view, kept between frames: 8-bit RGBA and a 24-bit depth, as the windows and
+    // OSMesa buffers it is copied to, so that what is drawn there is what drawing directly
+    // drew.
+    RenderTarget view{GL_RGBA8, "view"};
 
     Gl()
     {
@@ -170,12 +218,6 @@ struct GlRenderer::Gl
         glDeleteTextures(1, &triangle_face_texture);
         glDeleteTextures(1, &face_area_texture);
         glDeleteTextures(1, &face_selected_texture);
-        glDeleteFramebuffers(1, &pick_framebuffer);
-        glDeleteRenderbuffers(1, &pick_ids);
-        glDeleteRenderbuffers(1, &pick_depth);
-        glDeleteFramebuffers(1, &view_framebuffer);
-        glDeleteRenderbuffers(1, &view_color);
-        glDeleteRenderbuffers(1, &view_depth);
     }
 
     void bind_face_textures() const
@@ -187,57 +229,6 @@ struct GlRenderer::Gl
         glActiveTexture(GL_TEXTURE2);
         glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
         glActiveTexture(GL_TEXTURE0);
-    }
-
-    // The ID buffer's framebuffer, (re)made at the size asked for.
-    void prepare_pick_target(int width, int height)
-    {
-        if (pick_framebuffer != 0 && width == pick_width && height == pick_height)
-            return;
-        if (pick_framebuffer == 0)
-        {
-            glGenFramebuffers(1, &pick_framebuffer);
-            glGenRenderbuffers(1, &pick_ids);
-            glGenRenderbuffers(1, &pick_depth);
-        }
-        glBindRenderbuffer(GL_RENDERBUFFER, pick_ids);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RG32UI, width, height);
-        glBindRenderbuffer(GL_RENDERBUFFER, pick_depth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glBindFramebuffer(GL_FRAMEBUFFER, pick_framebuffer);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, pick_ids);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, pick_depth);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw RenderError("the ID buffer's framebuffer is incomplete");
-        pick_width = width;
-        pick_height = height;
-    }
-
-    // The kept view's framebuffer, (re)made at the size asked for: 8-bit RGBA and a 24-bit
-    // depth, as the windows and OSMesa buffers the view is copied to, so that what is drawn
-    // there is what drawing directly drew.
-    void prepare_view_target(int width, int height)
-    {
-        if (view_framebuffer != 0 && width == view_width && height == view_height)
-            return;
-        if (view_framebuffer == 0)
-        {
-            glGenFramebuffers(1, &view_framebuffer);
-            glGenRenderbuffers(1, &view_color);
-            glGenRenderbuffers(1, &view_depth);
-        }
-        glBindRenderbuffer(GL_RENDERBUFFER, view_color);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-        glBindRenderbuffer(GL_RENDERBUFFER, view_depth);
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        glBindFramebuffer(GL_FRAMEBUFFER, view_framebuffer);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                  view_color);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, view_depth);
-        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            throw RenderError("the view's framebuffer is incomplete");
-        view_width = width;
-        view_height = height;
     }
 };
 
@@ -424,15 +415,14 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
                       drawn_.projection == projection;
     if (!same)
     {
-        gl_->prepare_view_target(width, height);
-        glBindFramebuffer(GL_FRAMEBUFFER, gl_->view_framebuffer);
+        gl_->view.prepare(width, height);
         render_view(glm::mat4(view), glm::mat4(projection), camera, o, width, height);
         drawn_ = {true, content_version_, o, width, height, view, projection};
         ++view_renders_;
     }
     // GL counts rows from the bottom.
     const int bottom = rect.framebuffer_height - rect.y - height;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->view_framebuffer);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->view.framebuffer);
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(target));
     glBlitFramebuffer(0, 0, width, height, rect.x, bottom, rect.x + width, bottom + height,
                       GL_COLOR_BUFFER_BIT, GL_NEAREST);
@@ -574,8 +564,7 @@ Image GlRenderer::read_pixels(int width, int height)
 
 void GlRenderer::render_ids(const Camera& camera, int width, int height)
 {
-    gl_->prepare_pick_target(width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, gl_->pick_framebuffer);
+    gl_->pick.prepare(width, height);
     glViewport(0, 0, width, height);
     const GLuint background[4] = {0, 0, 0, 0};
     glClearBufferuiv(GL_COLOR, 0, background);
