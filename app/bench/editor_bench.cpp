@@ -18,6 +18,8 @@
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
+#include "app/editor/editor_ui.h"
+#include "app/editor/interface_context.h"
 #include "app/editor/live_solver.h"
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
@@ -129,6 +131,12 @@ int main(int argc, char** argv)
     Series undo{"undo", {}};
     Series raster{"draw (llvmpipe rasterization)", {}};
     Series kept{"draw, nothing changed since (the view kept and copied)", {}};
+    Series kept_frame{
+        "interface frame, nothing changed in the view (panels laid out and "
+        "drawn, the view copied)",
+        {}};
+    InterfaceContext layer;
+    EditorUi interface;
     Series ids{"ID buffer render + read back (Renderer::visibility)", {}};
     std::size_t brushed = 0, rectangled = 0, through = 0;
     const auto count = [](const SelectionMask& m) {
@@ -183,6 +191,14 @@ int main(int argc, char** argv)
                 session.draw();
                 (void)renderer.read_pixels(1, 1);
             }));
+            // The whole frame such an event costs: the interface built and drawn over it.
+            kept_frame.ms.push_back(timed([&] {
+                interface.prepare_offscreen(layer, session.document(), session.state(),
+                                            session.camera(), width, height);
+                session.draw();
+                layer.draw();
+                (void)renderer.read_pixels(1, 1);
+            }));
             rectangle(rect_release[kind]);
             rectangled = std::max(rectangled, count(kind == 0 ? session.document().selected_vertices
                                                               : session.document().selected_faces));
@@ -204,8 +220,9 @@ int main(int argc, char** argv)
         print(press_moved[kind]);
         print(press_same[kind]);
     }
-    for (const Series* s : {&move, &upload, &record, &rect_press, &rect_release[0],
-                            &rect_release[1], &rect_through, &undo, &raster, &kept, &ids})
+    for (const Series* s :
+         {&move, &upload, &record, &rect_press, &rect_release[0], &rect_release[1], &rect_through,
+          &undo, &raster, &kept, &kept_frame, &ids})
         print(*s);
     const double frame = move.median() + upload.median();
     std::printf(

@@ -410,14 +410,14 @@ void GlRenderer::draw(const Camera& camera, const DisplayOptions& o, const ViewR
     // when its data, the camera, the display options or the view's size changed, else the
     // view drawn last is copied. On a million-triangle mesh in software that is a frame
     // of a few milliseconds instead of a third of a second.
-    const bool same = drawn_.valid && drawn_.version == content_version_ && drawn_.options == o &&
-                      drawn_.width == width && drawn_.height == height && drawn_.view == view &&
-                      drawn_.projection == projection;
+    const bool same = view_renders_ > 0 && drawn_.version == content_version_ &&
+                      drawn_.options == o && drawn_.width == width && drawn_.height == height &&
+                      drawn_.view == view && drawn_.projection == projection;
     if (!same)
     {
         gl_->view.prepare(width, height);
         render_view(glm::mat4(view), glm::mat4(projection), camera, o, width, height);
-        drawn_ = {true, content_version_, o, width, height, view, projection};
+        drawn_ = {content_version_, o, width, height, view, projection};
         ++view_renders_;
     }
     // GL counts rows from the bottom.

@@ -81,9 +81,8 @@ private:
     // Bumped by every change of what the view shows (mesh, positions, colours, selection,
     // glyphs); the view is kept with the version and the parameters it was drawn with.
     std::uint64_t content_version_ = 0;
-    struct DrawnView
+    struct DrawnView // valid once view_renders_ > 0
     {
-        bool valid = false;
         std::uint64_t version = 0;
         DisplayOptions options;
         int width = 0, height = 0;

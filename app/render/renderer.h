@@ -51,8 +51,6 @@ struct ViewRect
 
     //! The whole framebuffer.
     static ViewRect whole(int width, int height) { return {width, height, 0, 0, width, height}; }
-
-    bool operator==(const ViewRect&) const = default;
 };
 
 //! What is under a pixel: the face, the nearest of the drawn triangle's corners on
