@@ -280,7 +280,15 @@ void Session::precompute()
                 centroid_active_.push_back(f);
             else
                 centroid_inactive_.push_back(f);
-        if (centroid_active_.size() == centroid_->faces().size())
+        // In the mesh's order: a list given in another numbering (a file's, renumbered for
+        // locality) would read faces, corners and positions all over memory, which made
+        // the pass slower than the whole sweep. A face's residual does not depend on the
+        // order; the energy's sum does, by rounding only.
+        std::ranges::sort(centroid_active_);
+        std::ranges::sort(centroid_inactive_);
+        const IndexList& listed = centroid_->faces();
+        if (centroid_active_.size() == listed.size() &&
+            (listed.identity() || std::is_sorted(listed.data(), listed.data() + listed.size())))
             centroid_active_ = {};
     }
     // The point the homogeneous terms' vertex parts are taken about (EdgeTerm::vertex_part):

@@ -255,9 +255,11 @@ private:
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
     //! 3 #F: this step's centroid residuals, for the fused step with centroids
     std::vector<Scalar> centroid_residual_;
-    //! The constrained faces with a free vertex when not all have one; else empty
+    //! The constrained faces with a free vertex, ascending; empty when that is every
+    //! constrained face and the term lists them ascending (the pass reads its list)
     std::vector<Index> centroid_active_;
-    //! The constrained faces without a free vertex (fused steps; their energy is constant)
+    //! The constrained faces without a free vertex, ascending (fused steps; their energy
+    //! is constant)
     std::vector<Index> centroid_inactive_;
     //! Fixed vertices with a free neighbour, ascending: their parts of the energy change
     //! with the free positions (fused steps)
