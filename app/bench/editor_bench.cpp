@@ -322,24 +322,34 @@ int main(int argc, char** argv)
         LocalityRun run(internal_mesh, doc.order, recipe);
         const double precompute = ms_since(t);
         std::vector<Scalar> published(doc.mesh.positions.size());
-        DisplayGeometry g{std::vector<float>(published.size()),
-                          std::vector<float>(published.size()),
-                          std::vector<float>(3 * static_cast<size_t>(doc.mesh.face_count()))};
-        // The solver's thread: a step (its sweep gives the plot's energy), the positions published,
-        // and the display geometry (floats, face area vectors, vertex normals). The interface's
-        // thread: the upload.
+        // As LiveSolver::restart: a display run whose frames recompute and upload only the
+        // part the steps move.
+        t = Clock::now();
+        const auto changing = std::make_shared<const ChangingPart>(
+            changing_part(run.mesh(), doc.draw_data.vertex_face_offsets, doc.draw_data.vertex_faces,
+                          run.session().free_vertices()));
+        const double changing_ms = ms_since(t);
+        const std::uint64_t display_run = new_display_run();
+        DisplayGeometry g;
+        // The solver's thread: a step (its sweep gives the plot's energy), the positions
+        // published, and the display geometry. The interface's thread: the upload. The run's
+        // first frame computes and uploads everything; the others only the changing part.
         Series step{"solver step, with the plot's energy from its sweep", {}},
             energy{"energy in a pass of its own (only when a run stops)", {}},
-            back{"positions published (copy)", {}}, floats{"positions to float", {}},
-            areas{"face area vectors", {}}, normals{"vertex normals", {}},
+            back{"positions published (copy)", {}},
+            display{
+                "display geometry of the changing part (floats, face area vectors, vertex "
+                "normals)",
+                {}},
             worker{"solver's thread, per frame (sum)", {}},
-            gpu{"interface's thread: upload (update_geometry)", {}},
+            gpu{"interface's thread: upload of the changing part (update_geometry)", {}},
             required{"iteration + normal update + upload", {}},
             peer{"peer: STREAM triad over three position-sized arrays", {}};
+        double first_display = 0, first_upload = 0;
         // The peer, timed in the same frames: the machine's memory speed of the moment, so
         // that the frame's parts can be read as ratios when the machine is shared.
         bench::TriadBandwidth triad(published.size());
-        for (int f = 0; f < frames; ++f)
+        for (int f = 0; f <= frames; ++f)
         {
             TermEnergies plotted; // LiveSolver::run_steps: the energy the step starts from
             const double a = timed([&] { run.session().step(plotted); });
@@ -348,28 +358,42 @@ int main(int argc, char** argv)
                 const std::span<const Scalar> x = run.session().positions();
                 std::copy(x.begin(), x.end(), published.begin());
             });
-            const double d = timed([&] { positions_to_float(published, g.positions); });
-            const double e = timed([&] { face_area_vectors(published, doc.mesh, g.face_areas); });
-            const double h = timed([&] { vertex_normals(doc.draw_data, g.face_areas, g.normals); });
+            const double d = timed([&] {
+                update_display_geometry(published, doc.mesh, doc.draw_data.vertex_face_offsets,
+                                        doc.draw_data.vertex_faces, display_run, changing, g);
+            });
             const double u = timed([&] {
-                renderer.update_geometry(g.positions, g.normals, g.face_areas);
+                renderer.update_geometry(g);
                 (void)renderer.read_pixels(1, 1); // the upload has reached the GPU side
             });
+            if (f == 0)
+            {
+                first_display = d;
+                first_upload = u;
+                continue;
+            }
             const double bytes = 24.0 * double(published.size());
             peer.ms.push_back(1e3 * bytes / triad.measure(1));
             step.ms.push_back(a);
             energy.ms.push_back(b);
             back.ms.push_back(c);
-            floats.ms.push_back(d);
-            areas.ms.push_back(e);
-            normals.ms.push_back(h);
-            worker.ms.push_back(a + c + d + e + h);
+            display.ms.push_back(d);
+            worker.ms.push_back(a + c + d);
             gpu.ms.push_back(u);
-            required.ms.push_back(a + d + e + h + u);
+            required.ms.push_back(a + d + u);
         }
+        std::printf(
+            "| %s | the changing part (once per run): %d and %d vertex and face ranges, "
+            "%.0f %% of the vertices | %.2f | |\n",
+            name, static_cast<int>(changing->vertices.begin.size()),
+            static_cast<int>(changing->faces.begin.size()),
+            100.0 * changing->vertices.count() / doc.mesh.vertex_count(), changing_ms);
+        std::printf("| %s | a run's first frame: display geometry of the whole mesh | %.2f | |\n",
+                    name, first_display);
+        std::printf("| %s | a run's first frame: upload of the whole mesh | %.2f | |\n", name,
+                    first_upload);
         std::printf("| %s | precomputation (once per recipe) | %.0f | |\n", name, precompute);
-        for (const Series* x :
-             {&step, &energy, &back, &floats, &areas, &normals, &worker, &gpu, &required, &peer})
+        for (const Series* x : {&step, &energy, &back, &display, &worker, &gpu, &required, &peer})
             std::printf("| %s | %s | %.2f | %.2f |\n", name, x->name.c_str(), x->median(),
                         x->max());
         std::printf("| %s | iteration + normal update + upload / peer | %.1fx | |\n", name,

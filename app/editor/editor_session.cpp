@@ -188,8 +188,7 @@ void EditorSession::update()
     const bool was_playing = solver_.playing();
     if (solver_.update())
     {
-        const DisplayGeometry& g = solver_.display();
-        renderer_.update_geometry(g.positions, g.normals, g.face_areas);
+        renderer_.update_geometry(solver_.display());
         synced_.positions = document_.versions.positions; // uploaded, normals and all
     }
     if (state_.heat_map && solver_.take_heat(heat_))

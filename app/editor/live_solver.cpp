@@ -135,6 +135,7 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     session.set_positions(x);
     known_energy_.reset(); // new positions at the same step count
     energy_due_ = false;
+    display_run_ = new_display_run(); // pins may move outside the changing part
     back_.assign(session.positions().begin(), session.positions().end());
     compute_display(back_, run_->mesh());
     std::swap(back_, published_);
@@ -155,13 +156,8 @@ void LiveSolver::wait_idle()
 
 void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
 {
-    DisplayGeometry& g = display_back_;
-    g.positions.resize(x.size());
-    g.normals.resize(x.size());
-    g.face_areas.resize(3 * static_cast<size_t>(mesh.face_count()));
-    positions_to_float(x, g.positions);
-    face_area_vectors(x, mesh, g.face_areas);
-    vertex_normals(vertex_face_offsets_, vertex_faces_, g.face_areas, g.normals);
+    update_display_geometry(x, mesh, vertex_face_offsets_, vertex_faces_, display_run_, changing_,
+                            display_back_);
 }
 
 bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry, int& steps)
@@ -449,6 +445,11 @@ void LiveSolver::worker()
                 energy = run->energy();
                 vertex_face_offsets_ = std::move(r.vertex_face_offsets);
                 vertex_faces_ = std::move(r.vertex_faces);
+                // Frames of this run recompute and upload only what its steps move.
+                display_run_ = new_display_run();
+                changing_ = std::make_shared<const ChangingPart>(
+                    changing_part(run->mesh(), vertex_face_offsets_, vertex_faces_,
+                                  run->session().free_vertices()));
                 // Published only when a pin moved: the interface shows the start otherwise,
                 // and the next steps publish their own (a brush dab steps at once).
                 if (moved)

@@ -11,6 +11,7 @@
 #include <thread>
 #include <vector>
 
+#include "app/render/mesh_draw_data.h"
 #include "core/recipe/locality_run.h"
 
 namespace meshfair::app {
@@ -20,14 +21,6 @@ struct EnergySample
 {
     int step = 0;
     TermEnergies energy;
-};
-
-//! \brief What the view draws of a frame, computed on the solver's thread so that the
-//! interface only uploads it: float positions, vertex normals (3 #V) and face area vectors
-//! (3 #F), as Renderer::update_geometry takes them.
-struct DisplayGeometry
-{
-    std::vector<float> positions, normals, face_areas;
 };
 
 //! What the solver has done, for the solver panel.
@@ -140,7 +133,12 @@ private:
     std::vector<Scalar> back_;      // file order, being written (while busy_)
     DisplayGeometry display_published_, display_back_;
     std::vector<Index> vertex_face_offsets_, vertex_faces_; // of the run (set at a restart)
-    //! The display geometry of `x` into display_back_ (outside the lock, while busy_).
+    //! The display geometry's run (a new one at each restart and when pins move: positions
+    //! outside the free vertices change) and the part of it the steps change.
+    std::uint64_t display_run_ = 0;
+    std::shared_ptr<const ChangingPart> changing_;
+    //! The display geometry of `x` into display_back_ (outside the lock, while busy_): its
+    //! changing part only when display_back_ holds a frame of the same display run.
     void compute_display(std::span<const Scalar> x, const Mesh& mesh);
     bool fresh_ = false; // published_ not yet taken
     std::vector<EnergySample> energies_;

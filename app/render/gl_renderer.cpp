@@ -283,6 +283,7 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
 void GlRenderer::update_positions(std::span<const Scalar> positions)
 {
     ++content_version_; // the view drawn last no longer shows it
+    geometry_run_ = 0;  // not a solver frame
     if (positions.size() != positions_.size())
         throw RenderError("GlRenderer::update_positions: " + std::to_string(positions.size()) +
                           " coordinates for a mesh of " + std::to_string(positions_.size()));
@@ -293,23 +294,67 @@ void GlRenderer::update_positions(std::span<const Scalar> positions)
     check("update_positions");
 }
 
-void GlRenderer::update_geometry(std::span<const float> positions, std::span<const float> normals,
-                                 std::span<const float> face_areas)
+void GlRenderer::update_geometry(const DisplayGeometry& g)
 {
     ++content_version_; // the view drawn last no longer shows it
-    if (positions.size() != positions_.size() || normals.size() != normals_.size() ||
-        face_areas.size() != face_areas_.size())
-        throw RenderError("GlRenderer::update_geometry: " + std::to_string(positions.size()) +
-                          " coordinates, " + std::to_string(normals.size()) + " normal and " +
-                          std::to_string(face_areas.size()) + " face values for a mesh of " +
+    if (g.positions.size() != positions_.size() || g.normals.size() != normals_.size() ||
+        g.face_areas.size() != face_areas_.size())
+        throw RenderError("GlRenderer::update_geometry: " + std::to_string(g.positions.size()) +
+                          " coordinates, " + std::to_string(g.normals.size()) + " normal and " +
+                          std::to_string(g.face_areas.size()) + " face values for a mesh of " +
                           std::to_string(positions_.size() / 3) + " vertices and " +
                           std::to_string(face_areas_.size() / 3) + " faces");
     // The positions are kept for visibility(); the GPU gets the arrays as given, the face
     // area vectors only while flat shading reads them (they are half the bytes of a frame's
     // upload): else draw() brings them up to date when flat shading is turned on.
-    std::copy(positions.begin(), positions.end(), positions_.begin());
-    face_areas_current_ = false; // until uploaded with these positions
-    upload_geometry(positions_, normals, flat_drawn_ ? face_areas : std::span<const float>{});
+    if (g.run == 0 || g.run != geometry_run_ || g.changing == nullptr)
+    {
+        std::copy(g.positions.begin(), g.positions.end(), positions_.begin());
+        face_areas_current_ = false; // until uploaded with these positions
+        upload_geometry(
+            positions_, g.normals,
+            flat_drawn_ ? std::span<const float>(g.face_areas) : std::span<const float>{});
+        geometry_bytes_ +=
+            (g.positions.size() + g.normals.size() + (flat_drawn_ ? g.face_areas.size() : 0)) *
+            sizeof(float);
+    }
+    else
+    {
+        // A frame of the run shown: only its changing part differs from what the GPU has.
+        const auto upload_ranges = [&](GLenum target, GLuint buffer, const IndexRanges& r,
+                                       std::span<const float> values) {
+            glBindBuffer(target, buffer);
+            for (size_t k = 0; k < r.begin.size(); ++k)
+            {
+                const size_t first = 3 * static_cast<size_t>(r.begin[k]);
+                const size_t count = 3 * static_cast<size_t>(r.end[k] - r.begin[k]);
+                glBufferSubData(target, static_cast<GLintptr>(first * sizeof(float)),
+                                static_cast<GLsizeiptr>(count * sizeof(float)),
+                                values.data() + first);
+                geometry_bytes_ += count * sizeof(float);
+            }
+        };
+        const IndexRanges& vertices = g.changing->vertices;
+        for (size_t k = 0; k < vertices.begin.size(); ++k)
+            std::copy(g.positions.begin() + 3 * static_cast<std::ptrdiff_t>(vertices.begin[k]),
+                      g.positions.begin() + 3 * static_cast<std::ptrdiff_t>(vertices.end[k]),
+                      positions_.begin() + 3 * static_cast<std::ptrdiff_t>(vertices.begin[k]));
+        upload_ranges(GL_ARRAY_BUFFER, gl_->positions, vertices, positions_);
+        upload_ranges(GL_ARRAY_BUFFER, gl_->normals, vertices, g.normals);
+        if (flat_drawn_ && face_areas_current_)
+        {
+            upload_ranges(GL_TEXTURE_BUFFER, gl_->face_area, g.changing->faces, g.face_areas);
+            ++face_area_uploads_;
+        }
+        else if (flat_drawn_)
+        {
+            upload_face_areas(g.face_areas);
+            geometry_bytes_ += g.face_areas.size() * sizeof(float);
+        }
+        else
+            face_areas_current_ = false;
+    }
+    geometry_run_ = g.run;
     check("update_geometry");
 }
 

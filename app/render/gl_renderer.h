@@ -25,8 +25,7 @@ public:
 
     void set_mesh(const Mesh& mesh, const MeshDrawData& data) override;
     void update_positions(std::span<const Scalar> positions) override;
-    void update_geometry(std::span<const float> positions, std::span<const float> normals,
-                         std::span<const float> face_areas) override;
+    void update_geometry(const DisplayGeometry& geometry) override;
     void set_vertex_colors(std::span<const float> rgb) override;
     void set_selection(std::span<const char> vertices, std::span<const char> faces) override;
     void set_glyphs(std::span<const GlyphGroup> groups) override;
@@ -40,6 +39,9 @@ public:
     int buffer_allocations() const { return buffer_allocations_; }
     //! How many times the face area vectors went to the GPU (for tests).
     int face_area_uploads() const { return face_area_uploads_; }
+    //! The bytes of positions, normals and face area vectors update_geometry sent to the GPU
+    //! so far (for tests: a run's frames send only its changing part).
+    std::size_t geometry_bytes_uploaded() const { return geometry_bytes_; }
     //! How many draws rasterized the view; the others copied the view drawn last, since
     //! nothing it shows had changed (for tests).
     int view_renders() const { return view_renders_; }
@@ -77,6 +79,10 @@ private:
     // Whether the last draw was flat-shaded (update_geometry then uploads the face area
     // vectors), and whether the GPU's area vectors belong to its positions.
     bool flat_drawn_ = false, face_areas_current_ = true;
+    // The display run whose frame the GPU's positions and normals are (0: another source),
+    // and the bytes update_geometry uploaded.
+    std::uint64_t geometry_run_ = 0;
+    std::size_t geometry_bytes_ = 0;
     size_t color_bytes_ = 0, glyph_bytes_ = 0; // what the colour and glyph buffers hold
     // Bumped by every change of what the view shows (mesh, positions, colours, selection,
     // glyphs); the view is kept with the version and the parameters it was drawn with.

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -56,5 +57,54 @@ inline void vertex_normals(const MeshDrawData& data, std::span<const float> face
 
 //! Positions as floats for the GPU, converted on the threads.
 void positions_to_float(std::span<const Scalar> positions, std::span<float> out);
+
+//! \brief Ascending, disjoint index ranges [begin[k], end[k]) of vertices or of faces, with
+//! the count of indices before each range (for splitting them over the threads).
+struct IndexRanges
+{
+    std::vector<Index> begin, end, before;
+    //! The indices in all ranges.
+    Index count() const { return before.empty() ? 0 : before.back() + (end.back() - begin.back()); }
+};
+
+//! \brief The part of the display geometry a solver run can change (Session moves only its
+//! free vertices): the vertices whose position or normal can change (the free vertices and
+//! every corner of a face around one) and the faces whose area vector can (those around a
+//! free vertex). Ranges closer than a few dozen indices are merged, and more when there
+//! would be hundreds of them: recomputing and uploading some unchanged elements costs less
+//! than a range of its own (an upload call each). A region the artist selected, in the
+//! document's locality numbering, is a few ranges.
+struct ChangingPart
+{
+    IndexRanges vertices, faces;
+};
+//! The changing part for `free_vertices` (ascending) of `mesh` (its faces; its positions
+//! are not read), whose faces around each vertex are given as in MeshDrawData.
+ChangingPart changing_part(const Mesh& mesh, std::span<const Index> vertex_face_offsets,
+                           std::span<const Index> vertex_faces,
+                           std::span<const Index> free_vertices);
+
+//! \brief What the view draws of a solver frame, computed on the solver's thread so that the
+//! interface only uploads it: float positions and unit vertex normals (3 #V) and face area
+//! vectors (3 #F). Frames of one run (`run` != 0, from new_display_run) differ only in the
+//! run's `changing` part (null: anywhere), which is all a frame recomputes and uploads.
+struct DisplayGeometry
+{
+    std::vector<float> positions, normals, face_areas;
+    std::uint64_t run = 0;
+    std::shared_ptr<const ChangingPart> changing;
+};
+
+//! A run number no other run of this process has (never 0).
+std::uint64_t new_display_run();
+
+//! \brief `g` for the positions `x`: only the changing part when `g` already holds a frame of
+//! `run`, else everything (and `g` becomes a frame of `run`, changing in `changing`). The
+//! same values as a computation of everything (each element's own expression).
+//! \pre outside `changing`, x is what g's earlier frame of `run` was computed from.
+void update_display_geometry(std::span<const Scalar> x, const Mesh& mesh,
+                             std::span<const Index> vertex_face_offsets,
+                             std::span<const Index> vertex_faces, std::uint64_t run,
+                             std::shared_ptr<const ChangingPart> changing, DisplayGeometry& g);
 
 } // namespace meshfair::app

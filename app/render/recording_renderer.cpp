@@ -24,11 +24,10 @@ void RecordingRenderer::update_positions(std::span<const Scalar> positions)
     positions_.assign(positions.begin(), positions.end());
 }
 
-void RecordingRenderer::update_geometry(std::span<const float> positions, std::span<const float>,
-                                        std::span<const float>)
+void RecordingRenderer::update_geometry(const DisplayGeometry& geometry)
 {
     ++calls_.update_geometry;
-    positions_.assign(positions.begin(), positions.end());
+    positions_.assign(geometry.positions.begin(), geometry.positions.end());
 }
 
 void RecordingRenderer::set_vertex_colors(std::span<const float>)

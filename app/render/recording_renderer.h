@@ -19,8 +19,7 @@ class RecordingRenderer final : public Renderer
 public:
     void set_mesh(const Mesh& mesh, const MeshDrawData& data) override;
     void update_positions(std::span<const Scalar> positions) override;
-    void update_geometry(std::span<const float> positions, std::span<const float> normals,
-                         std::span<const float> face_areas) override;
+    void update_geometry(const DisplayGeometry& geometry) override;
     void set_vertex_colors(std::span<const float> rgb) override;
     void set_selection(std::span<const char> vertices, std::span<const char> faces) override;
     void set_glyphs(std::span<const GlyphGroup> groups) override;

@@ -107,9 +107,9 @@ public:
     virtual void update_positions(std::span<const Scalar> positions) = 0;
     //! \brief New positions with their normals already computed (by the solver's thread):
     //! floats, 3 #V positions and vertex normals and 3 #F face area vectors. Uploads only
-    //! (the area vectors only while flat shading shows them).
-    virtual void update_geometry(std::span<const float> positions, std::span<const float> normals,
-                                 std::span<const float> face_areas) = 0;
+    //! (the area vectors only while flat shading shows them), and when the geometry shown is
+    //! a frame of the same run (nothing else given since), only the run's changing part.
+    virtual void update_geometry(const DisplayGeometry& geometry) = 0;
     //! RGB in [0, 1], 3 #V floats; empty clears the overlay.
     virtual void set_vertex_colors(std::span<const float> rgb) = 0;
     //! \brief Shows a selection: selected faces tinted orange, selected vertices as orange

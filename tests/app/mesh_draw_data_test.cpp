@@ -181,4 +181,100 @@ TEST_SUITE("MeshDrawData")
         CHECK(n[last + 1] == 0.0f);
         CHECK(n[last + 2] == 0.0f);
     }
+
+    TEST_CASE("the changing part holds every face around a free vertex and every corner of those")
+    {
+        for (const Mesh& m : {test::icosphere(4), test::open_grid(40, 30), test::quad_cube(),
+                              test::nonmanifold_fan()})
+        {
+            const MeshDrawData d = draw_data(m);
+            std::vector<Index> free;
+            for (Index v = 0; v < m.vertex_count(); ++v)
+                if (v % 7 < 3 || v % 1000 == 999) // runs and lone vertices
+                    free.push_back(v);
+            const ChangingPart part = changing_part(m, d.vertex_face_offsets, d.vertex_faces, free);
+            const auto in = [](const IndexRanges& r, Index i) {
+                for (size_t k = 0; k < r.begin.size(); ++k)
+                    if (r.begin[k] <= i && i < r.end[k])
+                        return true;
+                return false;
+            };
+            for (const IndexRanges* r : {&part.vertices, &part.faces})
+            {
+                CHECK(r->begin.size() <= 256);
+                Index count = 0;
+                for (size_t k = 0; k < r->begin.size(); ++k)
+                {
+                    CHECK(r->begin[k] < r->end[k]);
+                    if (k > 0)
+                        CHECK(r->end[k - 1] < r->begin[k]); // merged when they touch
+                    CHECK(r->before[k] == count);
+                    count += r->end[k] - r->begin[k];
+                }
+                CHECK(r->count() == count);
+            }
+            for (const Index v : free)
+            {
+                CHECK(in(part.vertices, v));
+                for (Index k = d.vertex_face_offsets[v]; k < d.vertex_face_offsets[v + 1]; ++k)
+                {
+                    const Index f = d.vertex_faces[k];
+                    CHECK(in(part.faces, f));
+                    for (const Index corner : m.face(f))
+                        CHECK(in(part.vertices, corner));
+                }
+            }
+        }
+        // Nothing free: nothing changes.
+        const Mesh grid = test::open_grid(3, 3);
+        const MeshDrawData d = draw_data(grid);
+        const ChangingPart none = changing_part(grid, d.vertex_face_offsets, d.vertex_faces, {});
+        CHECK(none.vertices.count() == 0);
+        CHECK(none.faces.count() == 0);
+    }
+
+    TEST_CASE("a run's frames recompute only the changing part, to the bits of a whole computation")
+    {
+        Mesh m = test::icosphere(5); // above the parallel threshold
+        test::perturb(m, 0.01, 11);
+        const MeshDrawData d = draw_data(m);
+        std::vector<Index> free; // a cap and a scatter, as a region and a pinned set leave
+        for (Index v = 0; v < m.vertex_count(); ++v)
+            if (m.positions[3 * v + 2] > 0.3 || v % 11 == 0)
+                free.push_back(v);
+        const auto part = std::make_shared<const ChangingPart>(
+            changing_part(m, d.vertex_face_offsets, d.vertex_faces, free));
+        const auto whole = [&](const std::vector<Scalar>& x) {
+            DisplayGeometry g;
+            update_display_geometry(x, m, d.vertex_face_offsets, d.vertex_faces, 0, nullptr, g);
+            return g;
+        };
+        const std::uint64_t run = new_display_run();
+        CHECK(run != 0);
+        CHECK(new_display_run() != run);
+        DisplayGeometry g;
+        std::vector<Scalar> x = m.positions;
+        for (int frame = 0; frame < 4; ++frame)
+        {
+            CAPTURE(frame);
+            for (const Index v : free) // the free vertices move, nothing else
+                for (int a = 0; a < 3; ++a)
+                    x[3 * v + a] += 0.001 * std::sin(1.0 + frame + v + a);
+            set_thread_count(frame % 2 == 0 ? 2 : 1);
+            update_display_geometry(x, m, d.vertex_face_offsets, d.vertex_faces, run, part, g);
+            const DisplayGeometry expected = whole(x);
+            CHECK(g.run == run);
+            CHECK(g.positions == expected.positions);
+            CHECK(g.normals == expected.normals);
+            CHECK(g.face_areas == expected.face_areas);
+        }
+        set_thread_count(0);
+        // A frame of another run is computed whole, whatever g held.
+        std::vector<Scalar> moved = x;
+        moved[0] += 0.01; // a pin moved: outside the changing part
+        update_display_geometry(moved, m, d.vertex_face_offsets, d.vertex_faces, new_display_run(),
+                                part, g);
+        CHECK(g.positions == whole(moved).positions);
+        CHECK(g.normals == whole(moved).normals);
+    }
 }

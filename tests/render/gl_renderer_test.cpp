@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 #include "app/render/gl_functions.h"
 #include "app/render/render_error.h"
@@ -221,11 +222,9 @@ TEST_SUITE("GlRenderer")
         std::vector<Scalar> moved = d.mesh.positions;
         for (size_t i = 0; i < moved.size(); i += 3)
             moved[i + 2] = 0.3 * std::sin(2.0 * moved[i]) * std::cos(3.0 * moved[i + 1]);
-        std::vector<float> positions(moved.size()), normals(moved.size()),
-            areas(3 * static_cast<size_t>(d.mesh.face_count()));
-        positions_to_float(moved, positions);
-        face_area_vectors(moved, d.mesh, areas);
-        vertex_normals(d.draw_data, areas, normals);
+        DisplayGeometry frame; // of no run: uploaded whole
+        update_display_geometry(moved, d.mesh, d.draw_data.vertex_face_offsets,
+                                d.draw_data.vertex_faces, 0, nullptr, frame);
         const ViewRect whole = ViewRect::whole(kRendererWidth, kRendererHeight);
         DisplayOptions smooth, flat;
         flat.shading = Shading::Flat;
@@ -234,7 +233,7 @@ TEST_SUITE("GlRenderer")
         r.set_mesh(d.mesh, d.draw_data);
         r.draw(camera, smooth, whole);
         const int uploads = r.face_area_uploads();
-        r.update_geometry(positions, normals, areas); // smooth shading: positions and normals
+        r.update_geometry(frame); // smooth shading: positions and normals
         CHECK(r.face_area_uploads() == uploads);
         r.draw(camera, smooth, whole);
         const Image smooth_image = r.read_pixels(kRendererWidth, kRendererHeight);
@@ -244,7 +243,7 @@ TEST_SUITE("GlRenderer")
         const Image flat_image = r.read_pixels(kRendererWidth, kRendererHeight);
         r.draw(camera, flat, whole);
         CHECK(r.face_area_uploads() == uploads + 1);
-        r.update_geometry(positions, normals, areas); // flat shown: uploaded with the rest
+        r.update_geometry(frame); // flat shown: uploaded with the rest
         CHECK(r.face_area_uploads() == uploads + 2);
 
         // The same picture as a renderer given the moved shape whole, and not the smooth one.
@@ -255,6 +254,76 @@ TEST_SUITE("GlRenderer")
         const Image expected = reference.read_pixels(kRendererWidth, kRendererHeight);
         CHECK(compare_images(flat_image, expected, 1).pixels_over_tolerance == 0);
         CHECK(compare_images(flat_image, smooth_image, 8).fraction_over_tolerance > 0.02);
+    }
+
+    TEST_CASE("a run's frames upload only its changing part and show what a whole upload shows")
+    {
+        test::offscreen_context(kRendererWidth, kRendererHeight);
+        Document d = make_document(test::open_grid(24, 12), "grid.obj");
+        Camera camera;
+        camera.frame(d.box, double(kRendererWidth) / kRendererHeight);
+        const ViewRect whole = ViewRect::whole(kRendererWidth, kRendererHeight);
+        // A quarter of the vertices in the document's (locality) numbering, as a region.
+        std::vector<Index> free(static_cast<size_t>(d.mesh.vertex_count() / 4));
+        std::iota(free.begin(), free.end(), 0);
+        const auto part = std::make_shared<const ChangingPart>(
+            changing_part(d.mesh, d.draw_data.vertex_face_offsets, d.draw_data.vertex_faces, free));
+        const size_t nv = static_cast<size_t>(d.mesh.vertex_count());
+        REQUIRE(part->vertices.count() < static_cast<Index>(nv / 2));
+        const std::uint64_t run = new_display_run();
+        std::vector<Scalar> x = d.mesh.positions;
+        DisplayGeometry g;
+        const auto frame = [&](double height) { // the free vertices rise, nothing else moves
+            for (const Index v : free)
+                x[3 * v + 2] = height * std::sin(3.0 * x[3 * v]) * std::cos(2.0 * x[3 * v + 1]);
+            update_display_geometry(x, d.mesh, d.draw_data.vertex_face_offsets,
+                                    d.draw_data.vertex_faces, run, part, g);
+        };
+        const auto reference_image = [&](const DisplayOptions& options) {
+            GlRenderer reference;
+            reference.set_mesh(d.mesh, d.draw_data);
+            reference.update_positions(x);
+            reference.draw(camera, options, whole);
+            return reference.read_pixels(kRendererWidth, kRendererHeight);
+        };
+        DisplayOptions smooth, flat;
+        flat.shading = Shading::Flat;
+
+        GlRenderer r;
+        r.set_mesh(d.mesh, d.draw_data);
+        r.draw(camera, smooth, whole);
+        frame(0.2); // the run's first frame: everything
+        r.update_geometry(g);
+        CHECK(r.geometry_bytes_uploaded() == 2 * 3 * nv * sizeof(float));
+        frame(0.4); // the next: the changing vertices' positions and normals only
+        size_t bytes = r.geometry_bytes_uploaded();
+        r.update_geometry(g);
+        CHECK(r.geometry_bytes_uploaded() - bytes ==
+              2 * 3 * static_cast<size_t>(part->vertices.count()) * sizeof(float));
+        r.draw(camera, smooth, whole);
+        const Image smooth_image = r.read_pixels(kRendererWidth, kRendererHeight);
+        CHECK(compare_images(smooth_image, reference_image(smooth), 1).pixels_over_tolerance == 0);
+
+        // Flat shading: its area vectors go up whole when turned on, then in part.
+        r.draw(camera, flat, whole);
+        frame(0.6);
+        r.update_geometry(g);
+        r.draw(camera, flat, whole);
+        const Image flat_image = r.read_pixels(kRendererWidth, kRendererHeight);
+        CHECK(compare_images(flat_image, reference_image(flat), 1).pixels_over_tolerance == 0);
+        CHECK(compare_images(flat_image, smooth_image, 8).fraction_over_tolerance > 0.01);
+
+        // Positions from elsewhere (an undo): the run's next frame goes up whole again.
+        r.update_positions(d.mesh.positions);
+        frame(0.8);
+        bytes = r.geometry_bytes_uploaded();
+        r.update_geometry(g);
+        CHECK(r.geometry_bytes_uploaded() - bytes ==
+              (2 * 3 * nv + 3 * static_cast<size_t>(d.mesh.face_count())) * sizeof(float));
+        r.draw(camera, flat, whole);
+        CHECK(
+            compare_images(r.read_pixels(kRendererWidth, kRendererHeight), reference_image(flat), 1)
+                .pixels_over_tolerance == 0);
     }
 
     TEST_CASE(

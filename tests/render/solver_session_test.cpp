@@ -249,6 +249,86 @@ TEST_SUITE("Live solving")
         CHECK(solver.status().steps == 12);
     }
 
+    TEST_CASE("every frame's display geometry is that of its positions, recomputed in part")
+    {
+        // The solver's frames recompute only what a run's steps can move (its free vertices
+        // and the faces around them); each must still equal the whole computation from the
+        // positions taken, for every kind of recipe, and after the pins move.
+        Mesh m = test::icosphere(4); // above the parallel threshold
+        test::perturb(m, 0.02, 5);
+        const Document doc = make_document(m, "sphere.obj");
+        const Mesh& base = doc.mesh; // in the document's numbering, as the editor runs
+        const Index nv = base.vertex_count();
+        Region half;
+        for (Index v = 0; v < nv / 2; ++v)
+            half.vertices.push_back(v);
+        std::vector<std::pair<const char*, Recipe>> recipes;
+        recipes.push_back({"plain", Recipe{}});
+        Recipe region;
+        region.region = half;
+        recipes.push_back({"region", region});
+        Recipe volume = region;
+        volume.volume = KeepVolume{};
+        recipes.push_back({"region, volume kept", volume});
+        Recipe taubin = region;
+        taubin.method = Method::Taubin;
+        recipes.push_back({"region, Taubin", taubin});
+        Recipe falloff = region;
+        falloff.falloff = Falloff{};
+        recipes.push_back({"region, falloff", falloff});
+        // Pins: one beside free vertices, and one amid pins (no free neighbour: outside
+        // the changing part when it moves).
+        const Topology t = build_topology(base);
+        Recipe pinned;
+        pinned.region = half;
+        pinned.hard = HardVertices{{nv / 3}, {}};
+        for (const Index v : {nv - 1}) // far from the region, in the locality numbering
+        {
+            pinned.hard->vertices.push_back(v);
+            for (const Index j : t.neighbors(v))
+                pinned.hard->vertices.push_back(j);
+        }
+        pinned.soft = SoftVertices{{false, {5, 9}}, 0.3, {}};
+        pinned.centroid = CentroidConstraints{{false, {0, 7}}, 1.0, {}, CentroidDenominator::Paper};
+        pinned.normal = NormalConstraints{{false, {3, 11}}, 1.0, NormalSource::Initial, {}};
+        recipes.push_back({"pins and constraints", pinned});
+        for (const auto& [name, recipe] : recipes)
+        {
+            CAPTURE(name);
+            LiveSolver solver;
+            solver.restart(base, doc.order, recipe, {}, doc.draw_data.vertex_face_offsets,
+                           doc.draw_data.vertex_faces);
+            solver.wait_idle();
+            std::vector<Scalar> x;
+            DisplayGeometry g;
+            const auto check_frame = [&] {
+                int steps = -1;
+                REQUIRE(solver.take(x, g, steps));
+                DisplayGeometry whole;
+                update_display_geometry(x, base, doc.draw_data.vertex_face_offsets,
+                                        doc.draw_data.vertex_faces, 0, nullptr, whole);
+                CHECK(g.positions == whole.positions);
+                CHECK(g.normals == whole.normals);
+                CHECK(g.face_areas == whole.face_areas);
+            };
+            solver.set_playing(true, 4);
+            for (int frames = 0; frames < 4 && solver.wait_published(); ++frames)
+                check_frame();
+            solver.wait_idle();
+            if (recipe.hard)
+            {
+                std::vector<Scalar> targets;
+                for (const Index v : recipe.hard->vertices)
+                    for (int a = 0; a < 3; ++a)
+                        targets.push_back(base.positions[3 * v + a] + 0.05);
+                solver.move_hard_targets(targets); // outside the free vertices
+                check_frame();
+                solver.step_now(2);
+                check_frame();
+            }
+        }
+    }
+
     TEST_CASE("pins dragged in the view plane move their targets without a precomputation")
     {
         const fs::path dir = test::temp_dir();
