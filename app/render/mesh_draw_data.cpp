@@ -255,7 +255,11 @@ void update_display_geometry(std::span<const Scalar> x, const Mesh& mesh,
                              std::shared_ptr<const ChangingPart> changing, DisplayGeometry& g)
 {
     const size_t face_values = 3 * static_cast<size_t>(mesh.face_count());
-    if (run != 0 && g.run == run && changing != nullptr && g.positions.size() == x.size() &&
+    // A part that is every vertex (plain smoothing of the whole mesh) takes the whole
+    // computation's loops.
+    const bool part =
+        changing != nullptr && static_cast<size_t>(changing->vertices.count()) < x.size() / 3;
+    if (run != 0 && g.run == run && part && g.positions.size() == x.size() &&
         g.normals.size() == x.size() && g.face_areas.size() == face_values)
     {
         floats_of(x, changing->vertices, g.positions);
