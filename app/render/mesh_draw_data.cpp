@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
 
 #include "core/solver/parallel.h"
 
@@ -155,15 +156,18 @@ IndexRanges ranges_of(const std::vector<char>& flags)
     constexpr size_t kMaxRanges = 256;
     IndexRanges r;
     const auto n = static_cast<Index>(flags.size());
+    const char* data = flags.data();
     for (Index i = 0; i < n;)
     {
-        if (!flags[i])
+        if (!data[i])
         {
-            ++i;
+            // The next set flag, a word at a time over unset ones.
+            const void* set = std::memchr(data + i, 1, static_cast<size_t>(n - i));
+            i = set == nullptr ? n : static_cast<Index>(static_cast<const char*>(set) - data);
             continue;
         }
         Index j = i;
-        while (j < n && flags[j])
+        while (j < n && data[j])
             ++j;
         r.begin.push_back(i);
         r.end.push_back(j);
@@ -227,19 +231,35 @@ ChangingPart changing_part(const Mesh& mesh, std::span<const Index> vertex_face_
                            std::span<const Index> vertex_faces,
                            std::span<const Index> free_vertices)
 {
-    std::vector<char> faces(static_cast<size_t>(mesh.face_count()), 0);
-    for (const Index v : free_vertices)
-        for (Index k = vertex_face_offsets[v]; k < vertex_face_offsets[v + 1]; ++k)
-            faces[vertex_faces[k]] = 1;
     // The vertex count from the faces around each vertex: a solver run's mesh has lent
     // its positions to the session.
-    std::vector<char> vertices(vertex_face_offsets.empty() ? 0 : vertex_face_offsets.size() - 1, 0);
+    const size_t nv = vertex_face_offsets.empty() ? 0 : vertex_face_offsets.size() - 1;
+    std::vector<char> faces(static_cast<size_t>(mesh.face_count()), 0);
+    std::vector<char> vertices(nv, 0);
     for (const Index v : free_vertices)
         vertices[v] = 1;
-    for (Index f = 0; f < mesh.face_count(); ++f)
-        if (faces[f])
-            for (const Index v : mesh.face(f))
-                vertices[v] = 1;
+    // A small region (a brush's dab restarts the run) lists the faces as it meets them
+    // and costs its own size; a large one marks them and passes over every face once.
+    const bool small = free_vertices.size() < nv / 8;
+    std::vector<Index> met;
+    for (const Index v : free_vertices)
+        for (Index k = vertex_face_offsets[v]; k < vertex_face_offsets[v + 1]; ++k)
+        {
+            const Index f = vertex_faces[k];
+            if (small && !faces[f])
+                met.push_back(f);
+            faces[f] = 1;
+        }
+    const auto mark_corners = [&](Index f) {
+        for (const Index v : mesh.face(f))
+            vertices[v] = 1;
+    };
+    if (small)
+        std::ranges::for_each(met, mark_corners);
+    else
+        for (Index f = 0; f < mesh.face_count(); ++f)
+            if (faces[f])
+                mark_corners(f);
     return {ranges_of(vertices), ranges_of(faces)};
 }
 

@@ -31,6 +31,45 @@ std::set<std::pair<std::uint32_t, std::uint32_t>> edge_set(const std::vector<std
     return s;
 }
 
+// The ranges of `part` are ascending, disjoint, at most 256, counted right, and hold every
+// free vertex, every face around one and every corner of those faces.
+void check_changing_part(const Mesh& m, const MeshDrawData& d, const std::vector<Index>& free)
+{
+    CAPTURE(free.size());
+    const ChangingPart part = changing_part(m, d.vertex_face_offsets, d.vertex_faces, free);
+    const auto in = [](const IndexRanges& r, Index i) {
+        for (size_t k = 0; k < r.begin.size(); ++k)
+            if (r.begin[k] <= i && i < r.end[k])
+                return true;
+        return false;
+    };
+    for (const IndexRanges* r : {&part.vertices, &part.faces})
+    {
+        CHECK(r->begin.size() <= 256);
+        Index count = 0;
+        for (size_t k = 0; k < r->begin.size(); ++k)
+        {
+            CHECK(r->begin[k] < r->end[k]);
+            if (k > 0)
+                CHECK(r->end[k - 1] < r->begin[k]); // merged when they touch
+            CHECK(r->before[k] == count);
+            count += r->end[k] - r->begin[k];
+        }
+        CHECK(r->count() == count);
+    }
+    for (const Index v : free)
+    {
+        CHECK(in(part.vertices, v));
+        for (Index k = d.vertex_face_offsets[v]; k < d.vertex_face_offsets[v + 1]; ++k)
+        {
+            const Index f = d.vertex_faces[k];
+            CHECK(in(part.faces, f));
+            for (const Index corner : m.face(f))
+                CHECK(in(part.vertices, corner));
+        }
+    }
+}
+
 } // namespace
 
 TEST_SUITE("MeshDrawData")
@@ -188,42 +227,18 @@ TEST_SUITE("MeshDrawData")
                               test::nonmanifold_fan()})
         {
             const MeshDrawData d = draw_data(m);
-            std::vector<Index> free;
+            // Runs and lone vertices (a large part: its faces marked), and a few vertices
+            // (a brush's region: its faces listed as met).
+            std::vector<Index> many, few;
             for (Index v = 0; v < m.vertex_count(); ++v)
-                if (v % 7 < 3 || v % 1000 == 999) // runs and lone vertices
-                    free.push_back(v);
-            const ChangingPart part = changing_part(m, d.vertex_face_offsets, d.vertex_faces, free);
-            const auto in = [](const IndexRanges& r, Index i) {
-                for (size_t k = 0; k < r.begin.size(); ++k)
-                    if (r.begin[k] <= i && i < r.end[k])
-                        return true;
-                return false;
-            };
-            for (const IndexRanges* r : {&part.vertices, &part.faces})
             {
-                CHECK(r->begin.size() <= 256);
-                Index count = 0;
-                for (size_t k = 0; k < r->begin.size(); ++k)
-                {
-                    CHECK(r->begin[k] < r->end[k]);
-                    if (k > 0)
-                        CHECK(r->end[k - 1] < r->begin[k]); // merged when they touch
-                    CHECK(r->before[k] == count);
-                    count += r->end[k] - r->begin[k];
-                }
-                CHECK(r->count() == count);
+                if (v % 7 < 3 || v % 1000 == 999)
+                    many.push_back(v);
+                if (v % 50 == 7)
+                    few.push_back(v);
             }
-            for (const Index v : free)
-            {
-                CHECK(in(part.vertices, v));
-                for (Index k = d.vertex_face_offsets[v]; k < d.vertex_face_offsets[v + 1]; ++k)
-                {
-                    const Index f = d.vertex_faces[k];
-                    CHECK(in(part.faces, f));
-                    for (const Index corner : m.face(f))
-                        CHECK(in(part.vertices, corner));
-                }
-            }
+            for (const std::vector<Index>* free : {&many, &few})
+                check_changing_part(m, d, *free);
         }
         // Nothing free: nothing changes.
         const Mesh grid = test::open_grid(3, 3);
