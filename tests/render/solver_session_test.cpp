@@ -292,8 +292,10 @@ TEST_SUITE("Live solving")
         pinned.centroid = CentroidConstraints{{false, {0, 7}}, 1.0, {}, CentroidDenominator::Paper};
         pinned.normal = NormalConstraints{{false, {3, 11}}, 1.0, NormalSource::Initial, {}};
         recipes.push_back({"pins and constraints", pinned});
-        for (const auto& [name, recipe] : recipes)
+        for (const auto& named : recipes)
         {
+            const char* name = named.first; // (clang 14 cannot capture a structured binding)
+            const Recipe& recipe = named.second;
             CAPTURE(name);
             LiveSolver solver;
             solver.restart(base, doc.order, recipe, {}, doc.draw_data.vertex_face_offsets,
