@@ -91,24 +91,62 @@ phase() {
     phase_start=$SECONDS
 }
 phase "setup and release build"
-# 1. Unit, adversarial and save tests in the release build.
+# Each build after the first starts beside the tests before it, at the lowest priority:
+# those tests wait for windows, for the processes they kill and for each other, and leave
+# a quarter of both cores idle, which the build takes without taking a core a test wants;
+# clang-tidy takes the core the last round of fuzzing leaves idle. Each runs in a process
+# group of its own (stopped if the script stops) with its output in a log, printed when it
+# ends (and when it fails).
+logs="$build/ci-logs"
+mkdir -p "$logs"
+declare -A beside=()
+start_beside() { # start_beside NAME COMMAND...
+    local name=$1
+    shift
+    setsid nice -n 19 "$@" >"$logs/$name.log" 2>&1 &
+    beside[$name]=$!
+}
+finish_beside() { # finish_beside NAME: waits for it, prints its log, fails with it
+    local name=$1 status=0
+    wait "${beside[$name]}" || status=$?
+    unset "beside[$name]"
+    cat "$logs/$name.log"
+    if [ "$status" != 0 ]; then
+        echo "$name failed (exit $status)" >&2
+        exit "$status"
+    fi
+}
+stop_beside() {
+    local pid
+    for pid in "${beside[@]}"; do
+        kill -- "-$pid" 2>/dev/null || true
+    done
+}
+trap stop_beside EXIT
+# 1. Unit, adversarial and save tests in the release build (the sanitizer build beside).
+start_beside sanitizer-build ./.ci/sanitize.sh build
 (cd "$build" && ctest --output-on-failure -j"$(nproc)")
 phase "release tests"
 echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror
 phase "formatting"
-# 2. The same tests built with clang, ASan + UBSan and libstdc++ assertions.
-./.ci/sanitize.sh build
-phase "sanitizer build"
+# 2. The same tests built with clang, ASan + UBSan and libstdc++ assertions (the fuzz
+# targets' build beside them).
+finish_beside sanitizer-build
+phase "sanitizer build (the rest)"
+start_beside fuzz-build ./.ci/fuzz.sh --build
 ./.ci/sanitize.sh test
 phase "sanitizer tests"
-# 3. clang-tidy (bugprone-*) on core/, with clang's compile commands.
-./.ci/tidy.sh
-phase "clang-tidy"
-# 4. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each
-# (as many targets at a time as there are cores).
+finish_beside fuzz-build
+phase "fuzz build (the rest)"
+# 3. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each
+# (as many targets at a time as there are cores); 4. clang-tidy (bugprone-*) on core/, with
+# clang's compile commands, beside them.
+start_beside clang-tidy ./.ci/tidy.sh
 ./.ci/fuzz.sh
-phase "fuzz build and campaigns"
+phase "fuzz campaigns"
+finish_beside clang-tidy
+phase "clang-tidy (the rest)"
 echo "Time by phase:"
 printf '  %s\n' "${times[@]}"
 echo "All tests passed (release, sanitizers, fuzzing), core/ is lint-clean and every source file is formatted."
