@@ -13,7 +13,7 @@ SoftVertexTerm::SoftVertexTerm(Index vertex_count, std::vector<Index> vertices, 
                                std::span<const Scalar> targets, std::span<const Scalar> weights)
     : mu_(mu),
       has_weights_(!weights.empty()),
-      vertices_(std::move(vertices)),
+      vertices_(IndexList(std::move(vertices))),
       own_target_(3 * static_cast<size_t>(vertex_count), 0),
       target_(own_target_)
 {

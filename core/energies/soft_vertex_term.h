@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/index_list.h"
 #include "core/types.h"
 
 namespace meshfair {
@@ -48,7 +49,8 @@ public:
     {
         return has_weights_ ? weight_[i] : (listed_[i] ? mu_ : Scalar(0));
     }
-    const std::vector<Index>& vertices() const { return vertices_; }
+    //! The listed vertices (no list stored when every vertex, in order).
+    const IndexList& vertices() const { return vertices_; }
 
     Scalar energy(std::span<const Scalar> x) const;
     //! Adds mu_i |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
@@ -87,9 +89,9 @@ private:
 
     Scalar mu_;
     bool has_weights_;
-    std::vector<Index> vertices_;
-    std::vector<Scalar> weight_;     //!< #V with weights: mu_i on constrained vertices, 0 elsewhere
-    std::vector<char> listed_;       //!< #V without weights (mu_i = mu or 0): 1 byte, not 8
+    IndexList vertices_;         //!< no list stored when every vertex, in order (4 bytes a vertex)
+    std::vector<Scalar> weight_; //!< #V with weights: mu_i on constrained vertices, 0 elsewhere
+    std::vector<char> listed_;   //!< #V without weights (mu_i = mu or 0): 1 byte, not 8
     std::vector<Scalar> own_target_; //!< 3 #V, or empty while target_ is a view
     std::span<const Scalar> target_; //!< 3 #V: own_target_ or view_targets's positions
 };
