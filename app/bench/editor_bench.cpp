@@ -316,12 +316,15 @@ int main(int argc, char** argv)
         double precompute, step, frame;
     };
     std::vector<Priced> priced;
+    // The published positions and the display geometry outlive the runs, as LiveSolver's
+    // buffers do: a run's first frame recomputes everything into memory already touched.
+    std::vector<Scalar> published(doc.mesh.positions.size());
+    DisplayGeometry g;
     for (const auto& [name, recipe] : recipes)
     {
         t = Clock::now();
         LocalityRun run(internal_mesh, doc.order, recipe);
         const double precompute = ms_since(t);
-        std::vector<Scalar> published(doc.mesh.positions.size());
         // As LiveSolver::restart: a display run whose frames recompute and upload only the
         // part the steps move.
         t = Clock::now();
@@ -330,7 +333,6 @@ int main(int argc, char** argv)
                           run.session().free_vertices()));
         const double changing_ms = ms_since(t);
         const std::uint64_t display_run = new_display_run();
-        DisplayGeometry g;
         // The solver's thread: a step (its sweep gives the plot's energy), the positions
         // published, and the display geometry. The interface's thread: the upload. The run's
         // first frame computes and uploads everything; the others only the changing part.
