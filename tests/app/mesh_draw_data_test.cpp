@@ -11,6 +11,7 @@
 
 #include "core/solver/parallel.h"
 #include "core/topology/topology.h"
+#include "core/topology/vertex_order.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;
@@ -250,12 +251,14 @@ TEST_SUITE("MeshDrawData")
 
     TEST_CASE("a run's frames recompute only the changing part, to the bits of a whole computation")
     {
-        Mesh m = test::icosphere(5); // above the parallel threshold
-        test::perturb(m, 0.01, 11);
+        // In the locality numbering the editor keeps, where a region is a few ranges.
+        Mesh sphere = test::icosphere(5); // above the parallel threshold
+        test::perturb(sphere, 0.01, 11);
+        const Mesh m = reorder_mesh(sphere, locality_order(sphere));
         const MeshDrawData d = draw_data(m);
-        std::vector<Index> free; // a cap and a scatter, as a region and a pinned set leave
-        for (Index v = 0; v < m.vertex_count(); ++v)
-            if (m.positions[3 * v + 2] > 0.3 || v % 11 == 0)
+        std::vector<Index> free; // a region and a scatter in it, as a region and pins leave
+        for (Index v = 0; v < m.vertex_count() / 3; ++v)
+            if (v < m.vertex_count() / 4 || v % 11 == 0)
                 free.push_back(v);
         const auto part = std::make_shared<const ChangingPart>(
             changing_part(m, d.vertex_face_offsets, d.vertex_faces, free));
@@ -284,9 +287,20 @@ TEST_SUITE("MeshDrawData")
             CHECK(g.face_areas == expected.face_areas);
         }
         set_thread_count(0);
+        // A vertex outside the changing part.
+        Index outside = 0;
+        for (size_t k = 0; k < part->vertices.begin.size() && part->vertices.begin[k] == outside;
+             ++k)
+            outside = part->vertices.end[k];
+        REQUIRE(outside < m.vertex_count());
+        const size_t at = 3 * static_cast<size_t>(outside);
+        // Only the changing part is recomputed: a value outside it is left as it was.
+        g.positions[at] = 1e6f;
+        update_display_geometry(x, m, d.vertex_face_offsets, d.vertex_faces, run, part, g);
+        CHECK(g.positions[at] == 1e6f);
         // A frame of another run is computed whole, whatever g held.
         std::vector<Scalar> moved = x;
-        moved[0] += 0.01; // a pin moved: outside the changing part
+        moved[at] += 0.01; // a pin moved: outside the changing part
         update_display_geometry(moved, m, d.vertex_face_offsets, d.vertex_faces, new_display_run(),
                                 part, g);
         CHECK(g.positions == whole(moved).positions);
