@@ -93,7 +93,8 @@ phase() {
 phase "setup and release build"
 # Each build after the first starts beside the tests before it, at the lowest priority:
 # those tests wait for windows, for the processes they kill and for each other, and leave
-# a quarter of both cores idle, which the build takes without taking a core a test wants;
+# idle a quarter of both cores (release) or a tenth (sanitizers), which the build takes
+# without taking a core a test wants;
 # clang-tidy takes the core the last round of fuzzing leaves idle. Each runs in a process
 # group of its own (stopped if the script stops) with its output in a log, printed when it
 # ends (and when it fails).
