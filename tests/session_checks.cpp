@@ -4,10 +4,13 @@
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 #include <vector>
 
+#include "core/geometry/face_geometry.h"
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
 #include "core/solver/solver.h"
@@ -15,6 +18,26 @@
 #include "tests/helpers.h"
 
 namespace meshfair::test {
+
+void check_fused_as_general(const Session& session, std::span<const Scalar> fused,
+                            std::span<const Scalar> general)
+{
+    REQUIRE(fused.size() == general.size());
+    if (!session.normal_shares())
+    {
+        CHECK(std::memcmp(fused.data(), general.data(), fused.size() * sizeof(Scalar)) == 0);
+        return;
+    }
+    const BoundingBox box = bounding_box(general);
+    Scalar diagonal = 0, largest = 0;
+    for (int a = 0; a < 3; ++a)
+        diagonal += (box.max[a] - box.min[a]) * (box.max[a] - box.min[a]);
+    diagonal = std::sqrt(diagonal);
+    for (size_t k = 0; k < fused.size(); ++k)
+        largest = std::max(largest, std::abs(fused[k] - general[k]));
+    INFO("largest difference " << largest << ", diagonal " << diagonal);
+    CHECK(largest <= 1e-13 * diagonal);
+}
 
 Mesh noisy(Mesh m, double sigma, unsigned seed)
 {

@@ -6,6 +6,7 @@
 
 #include "core/mesh/mesh.h"
 #include "core/recipe/recipe.h"
+#include "core/recipe/session.h"
 #include "core/topology/topology.h"
 
 namespace meshfair::test {
@@ -31,6 +32,13 @@ void check_energy_never_increases(const Mesh& m, const Topology& t,
 //! reaches the direct minimizer of the same quadratic (direct_minimizer) to 1e-9.
 void check_reaches_direct_minimizer(const Mesh& m, const Topology& t,
                                     std::span<const RecipeCase> cases);
+
+//! \brief Positions of the fused step (step(), run()) against the general step's
+//! (step(x)) from the same start: the same bits, or, when the session's fused step
+//! takes the normal term from per-face shares (Session::normal_shares), within 1e-13 of
+//! the bounding box's diagonal (a few steps' rounding; 1e-16 a step measured).
+void check_fused_as_general(const Session& session, std::span<const Scalar> fused,
+                            std::span<const Scalar> general);
 
 //! \brief smooth(m, t, r) on one thread and on two give the same bits, and move the mesh.
 void check_same_bits_on_one_and_two_threads(const Mesh& m, const Topology& t, const Recipe& r);

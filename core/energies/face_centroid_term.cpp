@@ -121,55 +121,7 @@ void FaceCentroidTerm::add_diagonal(std::span<Scalar> diagonal) const
 Scalar FaceCentroidTerm::face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
                                         Scalar* residual) const
 {
-    return centroid_source_.empty() ? face_residuals_from<false>(x, faces, begin, end, residual)
-                                    : face_residuals_from<true>(x, faces, begin, end, residual);
-}
-
-template <bool FromSource>
-Scalar FaceCentroidTerm::face_residuals_from(const Scalar* x, const Index* faces, Index begin,
-                                             Index end, Scalar* residual) const
-{
-    Scalar energy = 0;
-    if (!face_weight_.empty())
-    {
-        // mu_f/n_f per face, as face_residual computes it (the same bits).
-        Index last_n = 0;
-        Scalar inv = 0;
-        const Scalar* face_weight = face_weight_.data();
-        for (Index k = begin; k < end; ++k)
-        {
-            const Index f = faces != nullptr ? faces[k] : k;
-            const Index n = mesh_->face_size(f);
-            if (n != last_n)
-            {
-                last_n = n;
-                inv = Scalar(1) / n;
-            }
-            energy +=
-                face_weight[f] *
-                residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, face_weight[f] / n,
-                                        residual + 3 * static_cast<std::ptrdiff_t>(f));
-        }
-        return energy;
-    }
-    // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
-    // this saves two divisions per face (the same values as face_residual's).
-    Index last_n = 0;
-    Scalar inv = 0, w = 0;
-    for (Index k = begin; k < end; ++k)
-    {
-        const Index f = faces != nullptr ? faces[k] : k;
-        const Index n = mesh_->face_size(f);
-        if (n != last_n)
-        {
-            last_n = n;
-            inv = Scalar(1) / n;
-            w = mu_ / n;
-        }
-        energy += residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, w,
-                                          residual + 3 * static_cast<std::ptrdiff_t>(f));
-    }
-    return mu_ * energy; // one weight: mu times the sum, as energy() computes it
+    return face_residuals(x, faces, begin, end, residual, [](Index) {});
 }
 
 void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,

@@ -101,36 +101,79 @@ public:
     //! part of the energy, sum mu_f |x_f - x0_f|^2, which the same pass computes.
     Scalar face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
                           Scalar* residual) const;
+    //! face_residuals, calling also(f) after each face's residual: another term's pass
+    //! over the same faces (the normal term's sigma_f), sharing the walk over them and
+    //! their corners' positions.
+    template <typename Also>
+    Scalar face_residuals(const Scalar* x, const Index* faces, Index begin, Index end,
+                          Scalar* residual, Also&& also) const
+    {
+        return centroid_source_.empty()
+                   ? face_residuals_from<false>(x, faces, begin, end, residual, also)
+                   : face_residuals_from<true>(x, faces, begin, end, residual, also);
+    }
     //! r += the residuals of i's constrained faces in corner order: add_vertex_rhs's
     //! sum, the same bits, from face_residual's values computed once per face (the fused
     //! step: a face's n_f corners read each residual, which is computed once per step).
-    void add_vertex_residuals(Index i, const Scalar* residual, Scalar* r) const
+    [[gnu::always_inline]] void add_vertex_residuals(Index i, const Scalar* residual,
+                                                     Scalar* r) const
     {
-        // Locals, not r[]: a store through r could change residual for the compiler.
-        Scalar r0 = r[0], r1 = r[1], r2 = r[2];
-        const CornerWalk walk = walk_;
-        const bool all_faces = all_faces_;
-        for (const Index c : topology_->corners_of_vertex(i))
-        {
-            const Index f = walk.face(c);
-            if (!all_faces && !constrained_[f])
-                continue;
-            const Scalar* q = residual + 3 * static_cast<std::ptrdiff_t>(f);
-            r0 += q[0];
-            r1 += q[1];
-            r2 += q[2];
-        }
-        r[0] = r0;
-        r[1] = r1;
-        r[2] = r2;
+        add_corner_shares(*topology_, walk_, flags(), residual, i, r);
     }
+    //! One byte per face, nonzero where constrained; nullptr when every face is.
+    const char* flags() const { return all_faces_ ? nullptr : constrained_.data(); }
 
 private:
     //! Targets of their own (3 #F), stored from here on: before set_targets writes them.
     void store_targets();
-    template <bool FromSource>
+    template <bool FromSource, typename Also>
     Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
-                               Scalar* residual) const;
+                               Scalar* residual, Also& also) const
+    {
+        Scalar energy = 0;
+        if (!face_weight_.empty())
+        {
+            // mu_f/n_f per face, as face_residual computes it (the same bits).
+            Index last_n = 0;
+            Scalar inv = 0;
+            const Scalar* face_weight = face_weight_.data();
+            for (Index k = begin; k < end; ++k)
+            {
+                const Index f = faces != nullptr ? faces[k] : k;
+                const Index n = mesh_->face_size(f);
+                if (n != last_n)
+                {
+                    last_n = n;
+                    inv = Scalar(1) / n;
+                }
+                energy += face_weight[f] *
+                          residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv,
+                                                  face_weight[f] / n,
+                                                  residual + 3 * static_cast<std::ptrdiff_t>(f));
+                also(f);
+            }
+            return energy;
+        }
+        // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
+        // this saves two divisions per face (the same values as face_residual's).
+        Index last_n = 0;
+        Scalar inv = 0, w = 0;
+        for (Index k = begin; k < end; ++k)
+        {
+            const Index f = faces != nullptr ? faces[k] : k;
+            const Index n = mesh_->face_size(f);
+            if (n != last_n)
+            {
+                last_n = n;
+                inv = Scalar(1) / n;
+                w = mu_ / n;
+            }
+            energy += residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, w,
+                                              residual + 3 * static_cast<std::ptrdiff_t>(f));
+            also(f);
+        }
+        return mu_ * energy; // one weight: mu times the sum, as energy() computes it
+    }
     //! x0_f: stored, or the centroid of f in centroid_source_ (face_centroid's expression,
     //! with inv = 1/n_f).
     template <bool FromSource>

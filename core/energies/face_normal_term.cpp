@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
 
 namespace meshfair {
@@ -17,6 +18,7 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::
       faces_(IndexList(std::move(faces))),
       constrained_(mesh.face_count(), 0),
       walk_(mesh, topology),
+      centre_(bounding_box(mesh.positions).centre()),
       all_faces_(false)
 {
     for (const Index f : faces_)
@@ -34,16 +36,7 @@ Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar>
 {
     const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index n) {
         const Index f = faces_[n];
-        const Scalar* u = &normals[3 * f];
-        const auto face = mesh_->face(f);
-        Scalar s = 0;
-        for (size_t k = 0; k < face.size(); ++k)
-        {
-            const Scalar* p = &x[3 * face[k]];
-            const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
-            const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
-            s += d * d;
-        }
+        const Scalar s = pair_sum(&normals[3 * f], x.data(), mesh_->face(f));
         return face_weight_.empty() ? s : face_weight_[f] * s;
     });
     // One weight: mu times the sum, the arithmetic of the paper's single mu.
@@ -79,6 +72,38 @@ void FaceNormalTerm::add_rhs(std::span<const Scalar> x, std::span<const Scalar> 
     parallel_for(static_cast<Index>(vertices.size()), [&](Index k) {
         add_vertex_rhs(vertices[k], x.data(), normals.data(), &rhs[3 * vertices[k]]);
     });
+}
+
+template <bool Energy>
+Scalar FaceNormalTerm::face_shares(const Scalar* x, const Scalar* normals, const Index* faces,
+                                   Index begin, Index end, Scalar* share, bool add_all,
+                                   const char* add) const
+{
+    Scalar sum = 0;
+    for (Index k = begin; k < end; ++k)
+    {
+        const Index f = faces != nullptr ? faces[k] : k;
+        sum += face_share<Energy>(x, normals, f, share, add_all || (add != nullptr && add[f] != 0));
+    }
+    return energy_of_sum(sum);
+}
+
+template Scalar FaceNormalTerm::face_shares<false>(const Scalar*, const Scalar*, const Index*,
+                                                   Index, Index, Scalar*, bool, const char*) const;
+template Scalar FaceNormalTerm::face_shares<true>(const Scalar*, const Scalar*, const Index*, Index,
+                                                  Index, Scalar*, bool, const char*) const;
+
+Scalar FaceNormalTerm::face_energies(const Scalar* x, const Scalar* normals, const Index* faces,
+                                     Index begin, Index end) const
+{
+    Scalar energy = 0;
+    for (Index k = begin; k < end; ++k)
+    {
+        const Index f = faces != nullptr ? faces[k] : k;
+        const Scalar s = pair_sum(&normals[3 * static_cast<std::ptrdiff_t>(f)], x, mesh_->face(f));
+        energy += face_weight_.empty() ? s : face_weight_[f] * s;
+    }
+    return face_weight_.empty() ? mu_ * energy : energy;
 }
 
 void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const

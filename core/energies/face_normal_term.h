@@ -65,6 +65,63 @@ public:
     }
     //! True when the faces have weights of their own (not all mu).
     bool has_weights() const { return !face_weight_.empty(); }
+    //! True when every face of the mesh is a triangle: the fused step then takes the
+    //! term's corner parts from face_share.
+    bool triangles() const { return walk_.triangles(); }
+    //! The point c of face_share: the middle of the bounding box of the mesh's positions
+    //! at construction, so that its sums stay the size of the mesh, not of its coordinates.
+    const Vec3& centre() const { return centre_; }
+    //! \brief Face f's share of its corners' right-hand sides, for the fused step on a mesh
+    //! of triangles. For a triangle (a, b, d) and its corner i, (x_prev - x_i) +
+    //! (x_next - x_i) = (x_a + x_b + x_d) - 3 x_i, so i's part (add_vertex_rhs) is
+    //!
+    //!     mu_f u_f u_f^T ((x_prev - x_i) + (x_next - x_i)) = g_f - (3/2) B_f (x_i - c),
+    //!     g_f = mu_f sigma_f u_f,  sigma_f = u_f^T ((x_a - c) + (x_b - c) + (x_d - c)),
+    //!
+    //! B_f = 2 mu_f u_f u_f^T being the face's part of i's 3x3 block (add_block). The
+    //! corners share g_f, computed once per face and step; the sum of the B_f is the block,
+    //! which the Jacobi solve already holds (cholesky3_solve_less_block). Writes g_f to
+    //! share[3 f ..], or adds it when add. With Energy, returns the face's sum of
+    //! (u_f^T (x_j - x_i))^2 over its pairs, times mu_f with weights (energy_of_sum makes
+    //! a sum of these an energy); else 0.
+    //! \pre triangles().
+    template <bool Energy>
+    [[gnu::always_inline]] Scalar face_share(const Scalar* x, const Scalar* normals, Index f,
+                                             Scalar* share, bool add) const
+    {
+        const std::ptrdiff_t at = 3 * static_cast<std::ptrdiff_t>(f);
+        const Index* corners = mesh_->face_vertices.data() + at;
+        const Scalar* u = normals + at;
+        const Scalar* a = x + 3 * static_cast<std::ptrdiff_t>(corners[0]);
+        const Scalar* b = x + 3 * static_cast<std::ptrdiff_t>(corners[1]);
+        const Scalar* d = x + 3 * static_cast<std::ptrdiff_t>(corners[2]);
+        const Scalar* c = centre_.data();
+        const Scalar sigma = u[0] * ((a[0] - c[0]) + (b[0] - c[0]) + (d[0] - c[0])) +
+                             u[1] * ((a[1] - c[1]) + (b[1] - c[1]) + (d[1] - c[1])) +
+                             u[2] * ((a[2] - c[2]) + (b[2] - c[2]) + (d[2] - c[2]));
+        const Scalar w = face_weight_.empty() ? mu_ : face_weight_[f];
+        Scalar s = 0;
+        if constexpr (Energy) // before the stores, which could change x for the compiler
+            s = pair_sum(u, x, std::span<const Index, 3>(corners, 3));
+        for (int k = 0; k < 3; ++k)
+            share[at + k] = (add ? share[at + k] : 0) + w * sigma * u[k];
+        return face_weight_.empty() ? s : w * s;
+    }
+    //! face_share of faces[begin .. end) (faces nullptr: the k-th face is k), adding to
+    //! share on every face when add_all, else where add[f] != 0 (add nullptr: nowhere);
+    //! returns their part of energy(x) with Energy, else 0.
+    template <bool Energy>
+    Scalar face_shares(const Scalar* x, const Scalar* normals, const Index* faces, Index begin,
+                       Index end, Scalar* share, bool add_all, const char* add) const;
+    //! One byte per face, nonzero where constrained; nullptr when every face is.
+    const char* flags() const { return all_faces_ ? nullptr : constrained_.data(); }
+    //! A sum of face_share's returns made an energy: times mu without weights (one weight,
+    //! as energy() computes it).
+    Scalar energy_of_sum(Scalar sum) const { return face_weight_.empty() ? mu_ * sum : sum; }
+    //! The part of energy(x) of faces[begin .. end) (faces nullptr: the k-th face is k),
+    //! each face's pairs as energy() sums them.
+    Scalar face_energies(const Scalar* x, const Scalar* normals, const Index* faces, Index begin,
+                         Index end) const;
     //! add_vertex_rhs with the weighting chosen by the caller (Weighted == has_weights()):
     //! the fused step tests it once per step, and without weights the corner loop is the
     //! single-mu one, unchanged. Always inlined: the fused sweeps call it from a dozen
@@ -128,6 +185,21 @@ public:
     void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
 
 private:
+    //! The sum over a face's pairs (x_k, x_k+1) of (u^T (x_k+1 - x_k))^2, in energy()'s order.
+    template <typename Face>
+    static Scalar pair_sum(const Scalar* u, const Scalar* x, const Face& face)
+    {
+        Scalar s = 0;
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Scalar* p = &x[3 * static_cast<std::ptrdiff_t>(face[k])];
+            const Scalar* q = &x[3 * static_cast<std::ptrdiff_t>(face[(k + 1) % face.size()])];
+            const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
+            s += d * d;
+        }
+        return s;
+    }
+
     const Mesh* mesh_;
     const Topology* topology_;
     Scalar mu_;
@@ -135,6 +207,7 @@ private:
     std::vector<char> constrained_;   //!< #F
     std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
     CornerWalk walk_;
+    Vec3 centre_;    //!< face_share's c
     bool all_faces_; //!< every face constrained: the sweep tests no flag
 };
 

@@ -86,13 +86,17 @@ Scalar mean_edge_length(const Topology& topology, std::span<const Scalar> x)
 BoundingBox bounding_box(std::span<const Scalar> x)
 {
     BoundingBox box;
-    for (size_t k = 0; k + 2 < x.size(); k += 3)
+    if (x.size() < 3)
+        return box;
+    box.empty = false;
+    // From the first vertex on, without a test per value: the loop streams.
+    for (int a = 0; a < 3; ++a)
+        box.min[a] = box.max[a] = x[a];
+    for (size_t k = 3; k + 2 < x.size(); k += 3)
         for (int a = 0; a < 3; ++a)
         {
-            box.min[a] = box.empty ? x[k + a] : std::min(box.min[a], x[k + a]);
-            box.max[a] = box.empty ? x[k + a] : std::max(box.max[a], x[k + a]);
-            if (a == 2)
-                box.empty = false;
+            box.min[a] = std::min(box.min[a], x[k + a]);
+            box.max[a] = std::max(box.max[a], x[k + a]);
         }
     return box;
 }

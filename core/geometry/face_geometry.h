@@ -55,6 +55,15 @@ struct BoundingBox
     Vec3 min{0, 0, 0};
     Vec3 max{0, 0, 0};
     bool empty = true;
+    //! The middle, min + (max - min) / 2 on each axis; 0 when empty.
+    Vec3 centre() const
+    {
+        Vec3 c{0, 0, 0};
+        if (!empty)
+            for (int a = 0; a < 3; ++a)
+                c[a] = min[a] + (max[a] - min[a]) / 2;
+        return c;
+    }
 };
 BoundingBox bounding_box(std::span<const Scalar> x);
 

@@ -259,6 +259,9 @@ void Session::precompute()
             free_.push_back(v);
     system_.block.clear();
     system_.factor.clear();
+    // On triangles the fused step takes the normal term's corner parts from per-face
+    // shares, and solves with the diagonal beside the factors (cholesky3_solve_less_block).
+    normal_shares_ = normal_ && fused() && normal_->triangles();
     if (normal_ && recipe_.method != Method::GradientDescent)
     {
         system_.block.assign(6 * static_cast<size_t>(nv), 0);
@@ -268,43 +271,71 @@ void Session::precompute()
     }
     // The fused step computes each constrained face's centroid residual once per step,
     // for the faces with a free vertex (when that is not all of them, they are listed).
-    centroid_residual_ = {};
+    // A face's vertex is free exactly when it is not fixed: it has n_i >= 2 > 0.
+    const auto has_free_vertex = [&](Index f) {
+        return std::ranges::any_of(mesh.face(f), [&](Index v) { return fixed[v] == 0; });
+    };
+    // In the mesh's order: a list given in another numbering (a file's, renumbered for
+    // locality) would read faces, corners and positions all over memory, which made
+    // the pass slower than the whole sweep. A face's residual does not depend on the
+    // order; the energy's sum does, by rounding only. Empty when the term's own list is
+    // that list already.
+    const auto active_faces = [&](const IndexList& listed, std::vector<Index>* inactive) {
+        std::vector<Index> active;
+        for (const Index f : listed)
+            if (has_free_vertex(f))
+                active.push_back(f);
+            else if (inactive != nullptr)
+                inactive->push_back(f);
+        std::ranges::sort(active);
+        if (active.size() == listed.size() &&
+            (listed.identity() || std::is_sorted(listed.data(), listed.data() + listed.size())))
+            active = {};
+        return active;
+    };
+    face_share_ = {};
     centroid_active_ = {};
     centroid_inactive_ = {};
+    normal_active_ = {};
+    normal_inactive_ = {};
+    share_flag_own_ = {};
+    share_flag_ = nullptr;
     if (centroid_ && fused())
     {
-        centroid_residual_.assign(3 * static_cast<size_t>(nf), 0);
-        // A face's vertex is free exactly when it is not fixed: it has n_i >= 2 > 0.
-        for (const Index f : centroid_->faces())
-            if (std::ranges::any_of(mesh.face(f), [&](Index v) { return fixed[v] == 0; }))
-                centroid_active_.push_back(f);
-            else
-                centroid_inactive_.push_back(f);
-        // In the mesh's order: a list given in another numbering (a file's, renumbered for
-        // locality) would read faces, corners and positions all over memory, which made
-        // the pass slower than the whole sweep. A face's residual does not depend on the
-        // order; the energy's sum does, by rounding only.
-        std::ranges::sort(centroid_active_);
+        centroid_active_ = active_faces(centroid_->faces(), &centroid_inactive_);
         std::ranges::sort(centroid_inactive_);
-        const IndexList& listed = centroid_->faces();
-        if (centroid_active_.size() == listed.size() &&
-            (listed.identity() || std::is_sorted(listed.data(), listed.data() + listed.size())))
-            centroid_active_ = {};
+        share_flag_ = centroid_->flags();
+    }
+    if (normal_shares_)
+    {
+        normal_active_ = active_faces(normal_->faces(), &normal_inactive_);
+        std::ranges::sort(normal_inactive_);
+        // A corner takes its face's share where either term constrains the face.
+        const char* normal_flags = normal_->flags();
+        if (!centroid_ || normal_flags == nullptr)
+            share_flag_ = normal_flags;
+        else if (share_flag_ != nullptr)
+        {
+            share_flag_own_.assign(share_flag_, share_flag_ + nf);
+            for (Index f = 0; f < nf; ++f)
+                share_flag_own_[f] = static_cast<char>(share_flag_own_[f] | normal_flags[f]);
+            share_flag_ = share_flag_own_.data();
+        }
+    }
+    if ((centroid_ && fused()) || normal_shares_)
+        face_share_.assign(3 * static_cast<size_t>(nf), 0);
+    shared_face_pass_ = false;
+    if (centroid_ && fused() && normal_shares_)
+    {
+        const FacePass c = centroid_pass(), n = normal_pass();
+        shared_face_pass_ =
+            c.count == n.count && (c.faces == nullptr || n.faces == nullptr
+                                       ? c.faces == n.faces
+                                       : std::equal(c.faces, c.faces + c.count, n.faces));
     }
     // The point the homogeneous terms' vertex parts are taken about (EdgeTerm::vertex_part):
     // the middle of the bounding box, where the products stay the size of the mesh.
-    energy_centre_ = {0, 0, 0};
-    if (nv > 0)
-        for (int a = 0; a < 3; ++a)
-        {
-            Scalar lo = x0[a], hi = x0[a];
-            for (Index v = 1; v < nv; ++v)
-            {
-                lo = std::min(lo, x0[3 * v + a]);
-                hi = std::max(hi, x0[3 * v + a]);
-            }
-            energy_centre_[a] = lo + (hi - lo) / 2;
-        }
+    energy_centre_ = bounding_box(x0).centre();
     // The fixed vertices whose parts of the energy move with the free ones.
     energy_border_ = {};
     if (fused() && free_.size() < static_cast<size_t>(nv))
@@ -459,7 +490,8 @@ void Session::factor_blocks()
     if (!joint_)
     {
         system_.factor = std::move(system_.block);
-        system_.diagonal = {}; // in the factors now; only joint mode factors again
+        if (!normal_shares_)
+            system_.diagonal = {}; // in the factors now; only joint mode factors again
     }
 }
 
@@ -518,29 +550,78 @@ bool Session::fused() const
            !recipe_.optimal_step && !joint_;
 }
 
+Session::FacePass Session::centroid_pass() const
+{
+    // faces nullptr: every face, in order (IndexList keeps no list of them).
+    if (centroid_active_.empty())
+        return {centroid_->faces().data(), static_cast<Index>(centroid_->faces().size())};
+    return {centroid_active_.data(), static_cast<Index>(centroid_active_.size())};
+}
+
+Session::FacePass Session::normal_pass() const
+{
+    if (normal_active_.empty())
+        return {normal_->faces().data(), static_cast<Index>(normal_->faces().size())};
+    return {normal_active_.data(), static_cast<Index>(normal_active_.size())};
+}
+
 template <bool Soft, bool Centroid, bool Normal, bool Energy>
 TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
 {
     TermEnergies energy;
+    // Each constrained face's centroid residual and, on triangles, the normal term's
+    // share (FaceNormalTerm::face_share) once per step, summed per face, for the faces a
+    // free vertex reads; their corners then add that sum. The normal term's energy is
+    // then summed by faces here (fixed_energy adds the faces without a free vertex).
+    Scalar* share = face_share_.data();
+    const Scalar* normals = normals_.data();
+    if constexpr (Centroid && Normal)
+        if (shared_face_pass_) // one walk over the faces for both terms
+        {
+            const FacePass faces = centroid_pass();
+            const auto both = [&](Index begin, Index end) {
+                Scalar normal_sum = 0;
+                TermEnergies part;
+                part.centroid =
+                    centroid_->face_residuals(x, faces.faces, begin, end, share, [&](Index f) {
+                        normal_sum += normal_->face_share<Energy>(x, normals, f, share, true);
+                    });
+                part.normal = normal_->energy_of_sum(normal_sum);
+                return part;
+            };
+            if constexpr (Energy)
+                energy = deterministic_block_sums<TermEnergies>(faces.count, both);
+            else
+                parallel_ranges(faces.count, both);
+        }
     if constexpr (Centroid)
-    {
-        // Each constrained face's residual once per step, for the faces a free vertex
-        // reads; its n_f corners then add it.
-        // faces nullptr: every face, in order (IndexList keeps no list of them).
-        const bool all_active = centroid_active_.empty();
-        const Index* faces = all_active ? centroid_->faces().data() : centroid_active_.data();
-        Scalar* residual = centroid_residual_.data();
-        const Index count =
-            static_cast<Index>(all_active ? centroid_->faces().size() : centroid_active_.size());
-        if constexpr (Energy)
-            energy.centroid = deterministic_block_sums<Scalar>(count, [&](Index begin, Index end) {
-                return centroid_->face_residuals(x, faces, begin, end, residual);
-            });
-        else
-            parallel_ranges(count, [&](Index begin, Index end) {
-                centroid_->face_residuals(x, faces, begin, end, residual);
-            });
-    }
+        if (!(Normal && shared_face_pass_))
+        {
+            const FacePass faces = centroid_pass();
+            const auto residuals = [&](Index begin, Index end) {
+                return centroid_->face_residuals(x, faces.faces, begin, end, share);
+            };
+            if constexpr (Energy)
+                energy.centroid = deterministic_block_sums<Scalar>(faces.count, residuals);
+            else
+                parallel_ranges(faces.count, residuals);
+        }
+    if constexpr (Normal)
+        if (normal_shares_ && !(Centroid && shared_face_pass_))
+        {
+            // After the residuals: added to them on the faces the centroid term constrains.
+            const FacePass faces = normal_pass();
+            const bool add_all = Centroid && centroid_->flags() == nullptr;
+            const char* add = Centroid ? centroid_->flags() : nullptr;
+            const auto shares = [&](Index begin, Index end) {
+                return normal_->face_shares<Energy>(x, normals, faces.faces, begin, end, share,
+                                                    add_all, add);
+            };
+            if constexpr (Energy)
+                energy.normal = deterministic_block_sums<Scalar>(faces.count, shares);
+            else
+                parallel_ranges(faces.count, shares);
+        }
     // The soft and centroid terms weigh their elements through per-vertex weights and
     // per-face residuals; only the normal term's sweep differs with weights.
     const bool all_free = free_.size() == static_cast<size_t>(vertex_count_);
@@ -584,7 +665,11 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
     const Scalar* normals = normals_.data();
     const Scalar* factor = system_.factor.data();
     const Scalar* diagonal = system_.diagonal.data();
-    const Scalar* residual = centroid_residual_.data();
+    const Scalar* share = face_share_.data();
+    const char* share_flag = share_flag_;
+    const bool normal_shares = normal_shares_;
+    const CornerWalk walk(*mesh_, *topology_);
+    const Scalar* c = Normal && normal_shares ? normal_->centre().data() : nullptr;
     const EdgeTerm& edge = edge_;
     const Scalar centre[3] = {energy_centre_[0], energy_centre_[1], energy_centre_[2]};
     // The range's vertices' parts of the energy, each term summed vertex by vertex.
@@ -602,13 +687,23 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
             e_edge += EdgeTerm::vertex_part(x + at, r, centre);
         if constexpr (Soft)
             soft_->add_vertex_rhs<Energy>(i, x, r, &e_soft);
-        if constexpr (Centroid)
-            centroid_->add_vertex_residuals(i, residual, r);
+        if constexpr (Centroid || Normal)
+            if (Centroid || normal_shares)
+                add_corner_shares(*topology_, walk, share_flag, share, i, r);
         if constexpr (Normal)
-            normal_->add_vertex_rhs<NormalWeighted, Energy>(i, x, normals, r, &e_normal);
+            if (!normal_shares) // polygons: the corners' parts one by one
+                normal_->add_vertex_rhs<NormalWeighted, Energy>(i, x, normals, r, &e_normal);
         Scalar dx[3];
         if constexpr (Normal) // the Jacobi method has 3x3 blocks exactly when normals are on
-            cholesky3_solve(&factor[2 * at], r, dx);
+        {
+            if (normal_shares)
+            {
+                const Scalar e[3] = {x[at] - c[0], x[at + 1] - c[1], x[at + 2] - c[2]};
+                cholesky3_solve_less_block(&factor[2 * at], diagonal[i], e, r, dx);
+            }
+            else
+                cholesky3_solve(&factor[2 * at], r, dx);
+        }
         else
         {
             const Scalar inv = Scalar(1) / diagonal[i];
@@ -630,7 +725,7 @@ void Session::add_vertex_parts(const Scalar* x, Index i, TermEnergies& e) const
     e.edge += edge_.vertex_part(i, x, energy_centre_.data());
     if (soft_)
         e.soft += soft_->vertex_part(i, x);
-    if (normal_)
+    if (normal_ && !normal_shares_) // else counted by faces (fused_sweep, fixed_energy)
         e.normal += normal_->vertex_part(i, x, normals_.data());
 }
 
@@ -670,7 +765,11 @@ TermEnergies Session::fixed_energy(const Scalar* x)
         if (!centroid_inactive_.empty())
             fixed_constant_.centroid = centroid_->face_residuals(
                 x, centroid_inactive_.data(), 0, static_cast<Index>(centroid_inactive_.size()),
-                centroid_residual_.data());
+                face_share_.data());
+        if (!normal_inactive_.empty())
+            fixed_constant_.normal =
+                normal_->face_energies(x, normals_.data(), normal_inactive_.data(), 0,
+                                       static_cast<Index>(normal_inactive_.size()));
         fixed_constant_valid_ = true;
     }
     TermEnergies energy = fixed_constant_;

@@ -131,14 +131,16 @@ public:
     bool has_positions() const { return has_positions_; }
     //! The kept positions (empty before set_positions).
     std::span<const Scalar> positions() const { return x_; }
-    //! One step on the kept positions; the same bits as step(x) (tested).
+    //! One step on the kept positions: the same bits as step(x), except with
+    //! normal_shares(), where the two agree to rounding (tested).
     StepInfo step();
     //! \brief One step on the kept positions that also gives `before`, the energy of the
     //! positions the step starts from. When fuses_energy(), the step's own sweep computes
     //! it: each free vertex adds its parts of the energy while it computes its step,
     //! -(x_i - c)^T r_i for the edge term (EdgeTerm::vertex_part), mu_i |x_i - t_i|^2 for its
-    //! anchor, the face-normal pairs that start at it; the centroid faces' energies come
-    //! from the pass that computes their residuals. The fixed vertices' parts are summed once per
+    //! anchor, the face-normal pairs that start at it; the centroid faces' energies (and
+    //! with normal_shares() the normal term's, by faces) come from the pass that computes
+    //! their per-face shares. The fixed vertices' parts are summed once per
     //! set of positions, except those of fixed vertices next to a free one, which are summed every
     //! step. Otherwise energy() runs first. The same positions as step(); the energy agrees with
     //! energy() to rounding and is the same for any thread count.
@@ -147,6 +149,12 @@ public:
     //! can undo a step: the fused Jacobi step (see fused_step). Taubin's method fuses its
     //! two steps but not the energy: the second starts where the first ends.
     bool fuses_energy() const { return fused() && recipe_.method != Method::Taubin; }
+    //! \brief True when the fused step takes the normal term's corner parts from per-face
+    //! shares (a normal term on a mesh of triangles: FaceNormalTerm::face_share): it
+    //! then sums the terms' parts in another order than step(x) does, and its positions
+    //! agree with step(x)'s to rounding (about 1e-16 of the mesh's size per step), not
+    //! bit for bit.
+    bool normal_shares() const { return normal_shares_; }
     //! \brief Puts back the kept positions of before the last step: for a run that learns
     //! from step(before) one step late that the step before it had converged.
     //! \throw SolverError unless the last call was a step() or step(before) on the kept
@@ -178,13 +186,27 @@ private:
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
     //! with a fixed lambda and fixed normals (no line search, no joint mode).
     bool fused() const;
+    //! The faces of a per-face pass of the fused step (faces nullptr: the k-th face is k).
+    struct FacePass
+    {
+        const Index* faces = nullptr;
+        Index count = 0;
+    };
+    //! The centroid term's faces with a free vertex (its residual pass).
+    FacePass centroid_pass() const;
+    //! The normal term's faces with a free vertex (its sigma pass).
+    FacePass normal_pass() const;
     //! \brief The fused step: one sweep over the free vertices in which each vertex adds
     //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
     //! solves its 3x3 or scalar system and writes y_i = x_i + step dx_i. The same operations as
     //! general_step without its right-hand-side and displacement arrays and their passes
     //! over memory. With centroid constraints a pass over the constrained faces first
     //! computes each face's residual once (FaceCentroidTerm::face_residuals), which the
-    //! face's corners then add (add_vertex_residuals: the same bits as add_vertex_rhs).
+    //! face's corners then add (add_corner_shares: the same bits as add_vertex_rhs). With
+    //! normal_shares(), the same pass adds the normal term's share of each face
+    //! (FaceNormalTerm::face_share), and the solve takes the rest of its part
+    //! (cholesky3_solve_less_block): the corners read one 3-vector per face instead of
+    //! the face's normal and their two neighbours, the same result to rounding.
     //! x and y must not overlap; y is written at free vertices only.
     //! With energy, returns the energy of x (fused_sweep's parts and fixed_energy's).
     TermEnergies fused_step(std::span<const Scalar> x, std::span<Scalar> y, bool energy,
@@ -253,11 +275,27 @@ private:
     std::vector<Scalar> scratch_u_; //!< 3 #F for normal smoothing and joint mode, else empty
     std::vector<Scalar> x_;         //!< kept positions (set_positions)
     std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
-    //! 3 #F: this step's centroid residuals, for the fused step with centroids
-    std::vector<Scalar> centroid_residual_;
+    //! 3 #F: this step's per-face shares of the right-hand side for the fused step: the
+    //! centroid residual, plus the normal term's share (FaceNormalTerm::face_share) when
+    //! normal_shares_; else empty
+    std::vector<Scalar> face_share_;
+    //! Which faces' shares a corner adds (either term constrains them); nullptr: every
+    //! face. Points into a term or share_flag_own_.
+    const char* share_flag_ = nullptr;
+    std::vector<char> share_flag_own_; //!< #F when both terms list faces, else empty
+    //! The fused step takes the normal term's corner parts from face_share_ (triangles)
+    bool normal_shares_ = false;
     //! The constrained faces with a free vertex, ascending; empty when that is every
     //! constrained face and the term lists them ascending (the pass reads its list)
     std::vector<Index> centroid_active_;
+    //! The normal term's faces with a free vertex, ascending; empty when that is every
+    //! constrained face and the term lists them ascending
+    std::vector<Index> normal_active_;
+    //! The centroid and normal passes walk the same faces: fused_sweep makes them one
+    bool shared_face_pass_ = false;
+    //! The normal term's faces without a free vertex, ascending, when normal_shares_:
+    //! kept: the fused step's energy then counts the normal term by faces, not by vertices
+    std::vector<Index> normal_inactive_;
     //! The constrained faces without a free vertex, ascending (fused steps; their energy
     //! is constant)
     std::vector<Index> centroid_inactive_;

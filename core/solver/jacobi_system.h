@@ -69,4 +69,20 @@ inline void cholesky3_solve(const Scalar* L, const Scalar* r, Scalar* x)
     x[0] = (y0 - L[1] * x[1] - L[3] * x[2]) * L[0];
 }
 
+//! \brief Solves (d I + B) dx = r - (3/2) B e with the factor L L^T = d I + B of
+//! cholesky3, without B: B e = (d I + B) e - d e, so dx = (d I + B)^-1 (r + (3/2) d e) -
+//! (3/2) e. The fused step's normal term on triangles leaves its -(3/2) B e to this
+//! (FaceNormalTerm::face_share), e being x_i - c, c near the mesh: the rounding is then
+//! about 1e-16 of the mesh's size. r is overwritten.
+inline void cholesky3_solve_less_block(const Scalar* L, Scalar d, const Scalar* e, Scalar* r,
+                                       Scalar* dx)
+{
+    const Scalar h = Scalar(1.5) * d;
+    for (int a = 0; a < 3; ++a)
+        r[a] += h * e[a];
+    cholesky3_solve(L, r, dx);
+    for (int a = 0; a < 3; ++a)
+        dx[a] -= Scalar(1.5) * e[a];
+}
+
 } // namespace meshfair

@@ -218,4 +218,28 @@ private:
     bool triangles_;
 };
 
+//! r += share[3 f ..] for each corner of vertex i, f its face, where flag[f] != 0 (flag
+//! nullptr: every face), in corner order: what a fused step's vertex takes of the
+//! per-face values its faces computed once (a centroid residual, a normal term's share).
+[[gnu::always_inline]] inline void add_corner_shares(const Topology& topology, CornerWalk walk,
+                                                     const char* flag, const Scalar* share, Index i,
+                                                     Scalar* r)
+{
+    // Locals, not r[]: a store through r could change share for the compiler.
+    Scalar r0 = r[0], r1 = r[1], r2 = r[2];
+    for (const Index c : topology.corners_of_vertex(i))
+    {
+        const Index f = walk.face(c);
+        if (flag != nullptr && flag[f] == 0)
+            continue;
+        const Scalar* q = share + 3 * static_cast<std::ptrdiff_t>(f);
+        r0 += q[0];
+        r1 += q[1];
+        r2 += q[2];
+    }
+    r[0] = r0;
+    r[1] = r1;
+    r[2] = r2;
+}
+
 } // namespace meshfair

@@ -163,4 +163,78 @@ TEST_SUITE("FaceNormalTerm")
         for (int a = 0; a < 3; ++a)
             CHECK(after[3 * i + a] == doctest::Approx(0).epsilon(1e-12).scale(1));
     }
+
+    TEST_CASE("on triangles the faces' shares and the block give each corner's part")
+    {
+        // add_vertex_rhs sums u u^T ((x_prev - x_i) + (x_next - x_i)) corner by corner;
+        // the fused step sums face_share's g_f over i's corners and takes -(3/2) B_i
+        // (x_i - c) through the solve. Both, for every vertex, weighted or not, on a mesh
+        // far from the origin (c keeps the sums the size of the mesh).
+        Mesh m = test::icosphere(2);
+        for (size_t k = 0; k < m.positions.size(); k += 3)
+            m.positions[k] += 3e4;
+        const std::vector<Scalar> normals = face_normals(m, m.positions);
+        test::perturb(m, 0.05, 21);
+        const Topology t = build_topology(m);
+        const Index nv = m.vertex_count(), nf = m.face_count();
+        std::vector<Index> faces;
+        std::vector<Scalar> weights;
+        for (Index f = 0; f < nf; f += 3)
+        {
+            faces.push_back(f);
+            weights.push_back(0.5 + (f % 7) * 0.25);
+        }
+        for (const bool weighted : {false, true})
+        {
+            CAPTURE(weighted);
+            const FaceNormalTerm term(
+                m, t, faces, 1.7,
+                weighted ? std::span<const Scalar>(weights) : std::span<const Scalar>());
+            REQUIRE(term.triangles());
+            std::vector<Scalar> share(3 * static_cast<size_t>(nf), -1);
+            term.face_shares<false>(m.positions.data(), normals.data(), faces.data(), 0,
+                                    static_cast<Index>(faces.size()), share.data(), false, nullptr);
+            std::vector<Scalar> block(6 * static_cast<size_t>(nv), 0);
+            term.add_block(normals, test::all_indices(nv), block);
+            const Vec3 c = term.centre();
+            Scalar largest = 0;
+            for (Index i = 0; i < nv; ++i)
+            {
+                Scalar direct[3] = {0, 0, 0}, shared[3] = {0, 0, 0};
+                term.add_vertex_rhs(i, m.positions.data(), normals.data(), direct);
+                add_corner_shares(t, CornerWalk(m, t), term.flags(), share.data(), i, shared);
+                const Scalar* B = &block[6 * i];
+                const Scalar e[3] = {m.positions[3 * i] - c[0], m.positions[3 * i + 1] - c[1],
+                                     m.positions[3 * i + 2] - c[2]};
+                const Scalar Be[3] = {B[0] * e[0] + B[1] * e[1] + B[2] * e[2],
+                                      B[1] * e[0] + B[3] * e[1] + B[4] * e[2],
+                                      B[2] * e[0] + B[4] * e[1] + B[5] * e[2]};
+                for (int a = 0; a < 3; ++a)
+                    largest = std::max(largest, std::abs(shared[a] - 1.5 * Be[a] - direct[a]));
+            }
+            // Against the parts' own size (the mesh is 2 across, 3e4 from the origin).
+            CHECK(largest <= 1e-12);
+            // Written where listed, left alone elsewhere.
+            CHECK(share[3] == -1); // face 1 is not listed
+        }
+    }
+
+    TEST_CASE("the 3x3 solve without the block's part gives the solve with it")
+    {
+        // (d I + B) dx = r - (3/2) B e, solved from the factor of d I + B alone.
+        const Scalar d = 6.25;
+        const Scalar B[6] = {2.0, 0.3, -0.4, 1.5, 0.2, 0.9}; // xx xy xz yy yz zz, SPD
+        const Scalar e[3] = {0.7, -1.3, 0.4}, r0[3] = {0.05, -0.02, 0.11};
+        Scalar L[6];
+        REQUIRE(cholesky3(d, B, L));
+        Scalar r[3] = {r0[0], r0[1], r0[2]}, dx[3];
+        cholesky3_solve_less_block(L, d, e, r, dx);
+        Eigen::Matrix3d A;
+        A << d + B[0], B[1], B[2], B[1], d + B[3], B[4], B[2], B[4], d + B[5];
+        const Eigen::Vector3d E(e[0], e[1], e[2]), R(r0[0], r0[1], r0[2]);
+        const Eigen::Vector3d Bm = (A - d * Eigen::Matrix3d::Identity()) * E;
+        const Eigen::Vector3d want = A.ldlt().solve(R - 1.5 * Bm);
+        for (int a = 0; a < 3; ++a)
+            CHECK(dx[a] == doctest::Approx(want[a]).epsilon(1e-14).scale(1));
+    }
 }

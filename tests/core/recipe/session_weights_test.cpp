@@ -185,8 +185,9 @@ TEST_SUITE("Session")
         test::check_reaches_direct_minimizer(m, t, cases);
     }
 
-    TEST_CASE("with weights the fused step and the general step give the same bits")
+    TEST_CASE("with weights the fused step gives the general step's positions")
     {
+        // The same bits, or the same to rounding with normals (Session::normal_shares).
         const Mesh m = noisy(test::icosphere(2));
         const Topology t = build_topology(m);
         for (const RecipeCase& c : weighted_configurations(m))
@@ -199,7 +200,8 @@ TEST_SUITE("Session")
                 session.step(a.positions); // the general step, on the caller's positions
             Recipe seven = c.recipe;
             seven.iterations = 7;
-            CHECK(a.positions == smoothed_positions(m, t, seven)); // run(): the fused step
+            test::check_fused_as_general(session, smoothed_positions(m, t, seven), // run()
+                                         a.positions);
         }
     }
 
