@@ -130,6 +130,16 @@ private:
     Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
                                Scalar* residual, Also& also) const
     {
+        return walk_.triangles()
+                   ? residuals_over<FromSource, true>(x, faces, begin, end, residual, also)
+                   : residuals_over<FromSource, false>(x, faces, begin, end, residual, also);
+    }
+    //! face_residuals_from, knowing whether every face is a triangle (Triangles: three
+    //! corners at 3 f, a loop the compiler unrolls; the same sums).
+    template <bool FromSource, bool Triangles, typename Also>
+    Scalar residuals_over(const Scalar* x, const Index* faces, Index begin, Index end,
+                          Scalar* residual, Also& also) const
+    {
         Scalar energy = 0;
         if (!face_weight_.empty())
         {
@@ -140,16 +150,16 @@ private:
             for (Index k = begin; k < end; ++k)
             {
                 const Index f = faces != nullptr ? faces[k] : k;
-                const Index n = mesh_->face_size(f);
+                const Index n = Triangles ? 3 : mesh_->face_size(f);
                 if (n != last_n)
                 {
                     last_n = n;
                     inv = Scalar(1) / n;
                 }
-                energy += face_weight[f] *
-                          residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv,
-                                                  face_weight[f] / n,
-                                                  residual + 3 * static_cast<std::ptrdiff_t>(f));
+                energy +=
+                    face_weight[f] * residual_of<FromSource, Triangles>(
+                                         corner_sum<Triangles>(x, f), f, inv, face_weight[f] / n,
+                                         residual + 3 * static_cast<std::ptrdiff_t>(f));
                 also(f);
             }
             return energy;
@@ -161,27 +171,44 @@ private:
         for (Index k = begin; k < end; ++k)
         {
             const Index f = faces != nullptr ? faces[k] : k;
-            const Index n = mesh_->face_size(f);
+            const Index n = Triangles ? 3 : mesh_->face_size(f);
             if (n != last_n)
             {
                 last_n = n;
                 inv = Scalar(1) / n;
                 w = mu_ / n;
             }
-            energy += residual_of<FromSource>(face_corner_sum(*mesh_, x, f), f, inv, w,
-                                              residual + 3 * static_cast<std::ptrdiff_t>(f));
+            energy +=
+                residual_of<FromSource, Triangles>(corner_sum<Triangles>(x, f), f, inv, w,
+                                                   residual + 3 * static_cast<std::ptrdiff_t>(f));
             also(f);
         }
         return mu_ * energy; // one weight: mu times the sum, as energy() computes it
     }
+    //! face_corner_sum of face f; with Triangles, of the three corners at 3 f (the same sum).
+    template <bool Triangles>
+    [[gnu::always_inline]] Vec3 corner_sum(const Scalar* x, Index f) const
+    {
+        if constexpr (Triangles)
+        {
+            const Index* corners = mesh_->face_vertices.data() + 3 * static_cast<std::ptrdiff_t>(f);
+            Vec3 c{0, 0, 0};
+            for (int k = 0; k < 3; ++k)
+                for (int a = 0; a < 3; ++a)
+                    c[a] += x[3 * static_cast<std::ptrdiff_t>(corners[k]) + a];
+            return c;
+        }
+        else
+            return face_corner_sum(*mesh_, x, f);
+    }
     //! x0_f: stored, or the centroid of f in centroid_source_ (face_centroid's expression,
     //! with inv = 1/n_f).
-    template <bool FromSource>
+    template <bool FromSource, bool Triangles = false>
     Vec3 target_of(Index f, Scalar inv) const
     {
         if constexpr (FromSource)
         {
-            Vec3 t = face_corner_sum(*mesh_, centroid_source_.data(), f);
+            Vec3 t = corner_sum<Triangles>(centroid_source_.data(), f);
             for (int a = 0; a < 3; ++a)
                 t[a] *= inv;
             return t;
@@ -198,10 +225,10 @@ private:
         return centroid_source_.empty() ? target_of<false>(f, inv) : target_of<true>(f, inv);
     }
     //! out = w (x0_f - sum inv), sum being the sum of f's corners; returns |x0_f - sum inv|^2.
-    template <bool FromSource>
+    template <bool FromSource, bool Triangles = false>
     Scalar residual_of(const Vec3& sum, Index f, Scalar inv, Scalar w, Scalar* out) const
     {
-        const Vec3 t = target_of<FromSource>(f, inv);
+        const Vec3 t = target_of<FromSource, Triangles>(f, inv);
         Scalar squared = 0;
         for (int a = 0; a < 3; ++a)
         {

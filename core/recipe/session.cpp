@@ -582,8 +582,8 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
             const auto both = [&](Index begin, Index end) {
                 Scalar normal_sum = 0;
                 TermEnergies part;
-                part.centroid =
-                    centroid_->face_residuals(x, faces.faces, begin, end, share, [&](Index f) {
+                part.centroid = centroid_->face_residuals(
+                    x, faces.faces, begin, end, share, [&](Index f) __attribute__((always_inline)) {
                         normal_sum += normal_->face_share<Energy>(x, normals, f, share, true);
                     });
                 part.normal = normal_->energy_of_sum(normal_sum);
