@@ -80,7 +80,7 @@ public:
     //!
     //! B_f = 2 mu_f u_f u_f^T being the face's part of i's 3x3 block (add_block). The
     //! corners share g_f, computed once per face and step; the sum of the B_f is the block,
-    //! which the Jacobi solve already holds (cholesky3_solve_less_block). Writes g_f to
+    //! which the Jacobi solve already holds (solve_less_block). Writes g_f to
     //! share[3 f ..], or adds it when add. With Energy, returns the face's sum of
     //! (u_f^T (x_j - x_i))^2 over its pairs, times mu_f with weights (energy_of_sum makes
     //! a sum of these an energy); else 0.

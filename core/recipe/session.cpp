@@ -258,16 +258,16 @@ void Session::precompute()
         if (!fixed[v] && system_.diagonal[v] > 0)
             free_.push_back(v);
     system_.block.clear();
-    system_.factor.clear();
+    system_.inverse.clear();
     // On triangles the fused step takes the normal term's corner parts from per-face
-    // shares, and solves with the diagonal beside the factors (cholesky3_solve_less_block).
+    // shares, and solves with the diagonal beside the inverses (solve_less_block).
     normal_shares_ = normal_ && fused() && normal_->triangles();
     if (normal_ && recipe_.method != Method::GradientDescent)
     {
         system_.block.assign(6 * static_cast<size_t>(nv), 0);
-        if (joint_) // the blocks are rebuilt and factored again every step
-            system_.factor.assign(6 * static_cast<size_t>(nv), 0);
-        factor_blocks();
+        if (joint_) // the blocks are rebuilt and inverted again every step
+            system_.inverse.assign(6 * static_cast<size_t>(nv), 0);
+        invert_blocks();
     }
     // The fused step computes each constrained face's centroid residual once per step,
     // for the faces with a free vertex (when that is not all of them, they are listed).
@@ -475,23 +475,23 @@ void Session::update_falloff_targets()
     soft_->set_targets(targets);
 }
 
-void Session::factor_blocks()
+void Session::invert_blocks()
 {
     for (const Index i : free_)
         std::fill_n(&system_.block[6 * i], 6, Scalar(0));
     normal_->add_block(normals_, free_, system_.block);
-    // Without joint mode the normals never move: the blocks are factored in place and the
-    // factors are all a step needs (no second 6 #V array, even while factoring).
-    Scalar* factor = joint_ ? system_.factor.data() : system_.block.data();
+    // Without joint mode the normals never move: the blocks are inverted in place and the
+    // inverses are all a step needs (no second 6 #V array, even while inverting).
+    Scalar* inverse = joint_ ? system_.inverse.data() : system_.block.data();
     for (const Index i : free_)
-        if (!cholesky3(system_.diagonal[i], &system_.block[6 * i], &factor[6 * i]))
+        if (!spd_inverse3(system_.diagonal[i], &system_.block[6 * i], &inverse[6 * i]))
             throw SolverError("Session: the 3x3 system of vertex " + std::to_string(i) +
                               " is not positive definite");
     if (!joint_)
     {
-        system_.factor = std::move(system_.block);
+        system_.inverse = std::move(system_.block);
         if (!normal_shares_)
-            system_.diagonal = {}; // in the factors now; only joint mode factors again
+            system_.diagonal = {}; // in the inverses now; only joint mode inverts again
     }
 }
 
@@ -663,7 +663,7 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
     // session's members for the compiler, which would then load them again).
     const Index* free = free_.data();
     const Scalar* normals = normals_.data();
-    const Scalar* factor = system_.factor.data();
+    const Scalar* inverse = system_.inverse.data();
     const Scalar* diagonal = system_.diagonal.data();
     const Scalar* share = face_share_.data();
     const char* share_flag = share_flag_;
@@ -699,10 +699,10 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
             if (normal_shares)
             {
                 const Scalar e[3] = {x[at] - c[0], x[at + 1] - c[1], x[at + 2] - c[2]};
-                cholesky3_solve_less_block(&factor[2 * at], diagonal[i], e, r, dx);
+                solve_less_block(&inverse[2 * at], diagonal[i], e, r, dx);
             }
             else
-                cholesky3_solve(&factor[2 * at], r, dx);
+                symmetric3_apply(&inverse[2 * at], r, dx);
         }
         else
         {
@@ -901,9 +901,9 @@ StepInfo Session::general_step(std::span<Scalar> x)
         system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0);
         dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
     }
-    const bool use_blocks = !system_.factor.empty();
+    const bool use_blocks = !system_.inverse.empty();
     if (joint_ && use_blocks)
-        factor_blocks(); // the normals moved in the previous step
+        invert_blocks(); // the normals moved in the previous step
 
     assemble_displacements(x, use_blocks);
     StepInfo info;

@@ -182,7 +182,7 @@ private:
     void build_falloff_anchors(const std::vector<char>& fixed, const std::vector<char>& is_hard);
     //! The merged soft targets for the current hard targets (the falloff moves with pins).
     void update_falloff_targets();
-    void factor_blocks();
+    void invert_blocks();
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
     //! with a fixed lambda and fixed normals (no line search, no joint mode).
     bool fused() const;
@@ -205,7 +205,7 @@ private:
     //! face's corners then add (add_corner_shares: the same bits as add_vertex_rhs). With
     //! normal_shares(), the same pass adds the normal term's share of each face
     //! (FaceNormalTerm::face_share), and the solve takes the rest of its part
-    //! (cholesky3_solve_less_block): the corners read one 3-vector per face instead of
+    //! (solve_less_block): the corners read one 3-vector per face instead of
     //! the face's normal and their two neighbours, the same result to rounding.
     //! x and y must not overlap; y is written at free vertices only.
     //! With energy, returns the energy of x (fused_sweep's parts and fixed_energy's).

@@ -17,16 +17,18 @@ namespace meshfair {
 //!
 //! A_i = diagonal[i] I + block_i, where every isotropic term adds to the scalar
 //! `diagonal` and the face-normal term adds the symmetric 3x3 `block` (stored as xx xy
-//! xz yy yz zz). With blocks present, A_i is factored once by Cholesky per
-//! precomputation (or per step when the normals move, in joint mode).
+//! xz yy yz zz). With blocks present, A_i is inverted once per precomputation (or per
+//! step when the normals move, in joint mode), through its Cholesky factor: a step then
+//! multiplies r_i by the inverse, nine independent products where the two triangular
+//! solves were a chain of dependent ones.
 struct JacobiSystem
 {
-    std::vector<Scalar> diagonal; //!< #V; empty once factored into `factor` for good
-    //! 6 #V; empty when no term adds one, and once factored (in place, becoming `factor`)
+    std::vector<Scalar> diagonal; //!< #V; empty once inverted into `inverse` for good
+    //! 6 #V; empty when no term adds one, and once inverted (in place, becoming `inverse`)
     //! when the normals never move
     std::vector<Scalar> block;
-    std::vector<Scalar> factor; //!< 6 #V Cholesky factors of A_i; empty without blocks
-    std::vector<Scalar> rhs;    //!< 3 #V
+    std::vector<Scalar> inverse; //!< 6 #V: A_i^-1 (xx xy xz yy yz zz); empty without blocks
+    std::vector<Scalar> rhs;     //!< 3 #V
 };
 
 //! Cholesky factor L of the SPD matrix (d I + B), B given as xx xy xz yy yz zz, stored
@@ -69,18 +71,48 @@ inline void cholesky3_solve(const Scalar* L, const Scalar* r, Scalar* x)
     x[0] = (y0 - L[1] * x[1] - L[3] * x[2]) * L[0];
 }
 
-//! \brief Solves (d I + B) dx = r - (3/2) B e with the factor L L^T = d I + B of
-//! cholesky3, without B: B e = (d I + B) e - d e, so dx = (d I + B)^-1 (r + (3/2) d e) -
+//! \brief The inverse of the SPD matrix d I + B (B as xx xy xz yy yz zz), as the same
+//! six entries, from cholesky3's factor: (L L^T)^-1 = L^-T L^-1. False when not positive
+//! definite. B and the inverse may be the same six values.
+inline bool spd_inverse3(Scalar d, const Scalar* B, Scalar* inverse)
+{
+    Scalar L[6];
+    if (!cholesky3(d, B, L))
+        return false;
+    // M = L^-1, lower triangular; L holds 1/l00 l10 1/l11 l20 l21 1/l22.
+    const Scalar m00 = L[0], m11 = L[2], m22 = L[5];
+    const Scalar m10 = -L[1] * m00 * m11;
+    const Scalar m21 = -L[4] * m11 * m22;
+    const Scalar m20 = -(L[3] * m00 + L[4] * m10) * m22;
+    inverse[0] = m00 * m00 + m10 * m10 + m20 * m20;
+    inverse[1] = m10 * m11 + m20 * m21;
+    inverse[2] = m20 * m22;
+    inverse[3] = m11 * m11 + m21 * m21;
+    inverse[4] = m21 * m22;
+    inverse[5] = m22 * m22;
+    return true;
+}
+
+//! x = M r for a symmetric 3x3 M given as xx xy xz yy yz zz.
+inline void symmetric3_apply(const Scalar* M, const Scalar* r, Scalar* x)
+{
+    x[0] = M[0] * r[0] + M[1] * r[1] + M[2] * r[2];
+    x[1] = M[1] * r[0] + M[3] * r[1] + M[4] * r[2];
+    x[2] = M[2] * r[0] + M[4] * r[1] + M[5] * r[2];
+}
+
+//! \brief Solves (d I + B) dx = r - (3/2) B e with the inverse of d I + B
+//! (spd_inverse3), without B: B e = (d I + B) e - d e, so dx = (d I + B)^-1 (r + (3/2) d e) -
 //! (3/2) e. The fused step's normal term on triangles leaves its -(3/2) B e to this
 //! (FaceNormalTerm::face_share), e being x_i - c, c near the mesh: the rounding is then
 //! about 1e-16 of the mesh's size. r is overwritten.
-inline void cholesky3_solve_less_block(const Scalar* L, Scalar d, const Scalar* e, Scalar* r,
-                                       Scalar* dx)
+inline void solve_less_block(const Scalar* inverse, Scalar d, const Scalar* e, Scalar* r,
+                             Scalar* dx)
 {
     const Scalar h = Scalar(1.5) * d;
     for (int a = 0; a < 3; ++a)
         r[a] += h * e[a];
-    cholesky3_solve(L, r, dx);
+    symmetric3_apply(inverse, r, dx);
     for (int a = 0; a < 3; ++a)
         dx[a] -= Scalar(1.5) * e[a];
 }

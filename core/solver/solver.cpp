@@ -13,7 +13,7 @@ void jacobi_displacements(const JacobiSystem& system, std::span<const Index> fre
     {
         parallel_for(static_cast<Index>(free_vertices.size()), [&](Index k) {
             const Index i = free_vertices[k];
-            cholesky3_solve(&system.factor[6 * i], &system.rhs[3 * i], &dx[3 * i]);
+            symmetric3_apply(&system.inverse[6 * i], &system.rhs[3 * i], &dx[3 * i]);
         });
         return;
     }

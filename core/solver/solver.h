@@ -10,7 +10,7 @@ namespace meshfair {
 
 //! \brief Generalized Jacobi displacements \cite taubin_2012 ("The Jacobi Iteration"):
 //! dx_i = A_i^{-1} r_i for every free vertex i, with A_i = diagonal[i] I (+ block_i
-//! through its Cholesky factor when `use_blocks`). Entries of non-free vertices are not
+//! through its inverse when `use_blocks`). Entries of non-free vertices are not
 //! written. Linear time, no allocation.
 void jacobi_displacements(const JacobiSystem& system, std::span<const Index> free_vertices,
                           bool use_blocks, std::span<Scalar> dx);

@@ -219,16 +219,16 @@ TEST_SUITE("FaceNormalTerm")
         }
     }
 
-    TEST_CASE("the 3x3 solve without the block's part gives the solve with it")
+    TEST_CASE("the 3x3 inverse, and the solve without the block's part")
     {
         // (d I + B) dx = r - (3/2) B e, solved from the factor of d I + B alone.
         const Scalar d = 6.25;
         const Scalar B[6] = {2.0, 0.3, -0.4, 1.5, 0.2, 0.9}; // xx xy xz yy yz zz, SPD
         const Scalar e[3] = {0.7, -1.3, 0.4}, r0[3] = {0.05, -0.02, 0.11};
-        Scalar L[6];
-        REQUIRE(cholesky3(d, B, L));
+        Scalar inverse[6];
+        REQUIRE(spd_inverse3(d, B, inverse));
         Scalar r[3] = {r0[0], r0[1], r0[2]}, dx[3];
-        cholesky3_solve_less_block(L, d, e, r, dx);
+        solve_less_block(inverse, d, e, r, dx);
         Eigen::Matrix3d A;
         A << d + B[0], B[1], B[2], B[1], d + B[3], B[4], B[2], B[4], d + B[5];
         const Eigen::Vector3d E(e[0], e[1], e[2]), R(r0[0], r0[1], r0[2]);
@@ -236,5 +236,12 @@ TEST_SUITE("FaceNormalTerm")
         const Eigen::Vector3d want = A.ldlt().solve(R - 1.5 * Bm);
         for (int a = 0; a < 3; ++a)
             CHECK(dx[a] == doctest::Approx(want[a]).epsilon(1e-14).scale(1));
+        // The inverse times A is I; a matrix that is not positive definite is refused.
+        const Eigen::Matrix3d Ainv{{inverse[0], inverse[1], inverse[2]},
+                                   {inverse[1], inverse[3], inverse[4]},
+                                   {inverse[2], inverse[4], inverse[5]}};
+        CHECK((Ainv * A - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() < 1e-15);
+        const Scalar indefinite[6] = {-9.0, 0.0, 0.0, 1.0, 0.0, 1.0};
+        CHECK_FALSE(spd_inverse3(d, indefinite, inverse));
     }
 }
