@@ -130,44 +130,28 @@ private:
     Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
                                Scalar* residual, Also& also) const
     {
-        return walk_.triangles()
-                   ? residuals_over<FromSource, true>(x, faces, begin, end, residual, also)
-                   : residuals_over<FromSource, false>(x, faces, begin, end, residual, also);
+        const bool weighted = !face_weight_.empty();
+        if (walk_.triangles())
+            return weighted ? residuals_over<FromSource, true, true>(x, faces, begin, end, residual,
+                                                                     also)
+                            : residuals_over<FromSource, true, false>(x, faces, begin, end,
+                                                                      residual, also);
+        return weighted
+                   ? residuals_over<FromSource, false, true>(x, faces, begin, end, residual, also)
+                   : residuals_over<FromSource, false, false>(x, faces, begin, end, residual, also);
     }
     //! face_residuals_from, knowing whether every face is a triangle (Triangles: three
-    //! corners at 3 f, a loop the compiler unrolls; the same sums).
-    template <bool FromSource, bool Triangles, typename Also>
+    //! corners at 3 f, a loop the compiler unrolls; the same sums) and whether the faces
+    //! have weights of their own.
+    template <bool FromSource, bool Triangles, bool Weighted, typename Also>
     Scalar residuals_over(const Scalar* x, const Index* faces, Index begin, Index end,
                           Scalar* residual, Also& also) const
     {
-        Scalar energy = 0;
-        if (!face_weight_.empty())
-        {
-            // mu_f/n_f per face, as face_residual computes it (the same bits).
-            Index last_n = 0;
-            Scalar inv = 0;
-            const Scalar* face_weight = face_weight_.data();
-            for (Index k = begin; k < end; ++k)
-            {
-                const Index f = faces != nullptr ? faces[k] : k;
-                const Index n = Triangles ? 3 : mesh_->face_size(f);
-                if (n != last_n)
-                {
-                    last_n = n;
-                    inv = Scalar(1) / n;
-                }
-                energy +=
-                    face_weight[f] * residual_of<FromSource, Triangles>(
-                                         corner_sum<Triangles>(x, f), f, inv, face_weight[f] / n,
-                                         residual + 3 * static_cast<std::ptrdiff_t>(f));
-                also(f);
-            }
-            return energy;
-        }
-        // 1/n_f and mu/n_f for the last face size met: most meshes have one or two sizes, so
-        // this saves two divisions per face (the same values as face_residual's).
+        // 1/n_f (and mu/n_f with one weight) for the last face size met: most meshes have
+        // one or two sizes, so this saves divisions per face (face_residual's values).
         Index last_n = 0;
-        Scalar inv = 0, w = 0;
+        Scalar inv = 0, w = 0, energy = 0;
+        const Scalar* face_weight = face_weight_.data();
         for (Index k = begin; k < end; ++k)
         {
             const Index f = faces != nullptr ? faces[k] : k;
@@ -178,12 +162,17 @@ private:
                 inv = Scalar(1) / n;
                 w = mu_ / n;
             }
-            energy +=
-                residual_of<FromSource, Triangles>(corner_sum<Triangles>(x, f), f, inv, w,
-                                                   residual + 3 * static_cast<std::ptrdiff_t>(f));
+            Scalar* out = residual + 3 * static_cast<std::ptrdiff_t>(f);
+            const Vec3 sum = corner_sum<Triangles>(x, f);
+            if constexpr (Weighted) // mu_f/n_f per face, as face_residual computes it
+                energy += face_weight[f] *
+                          residual_of<FromSource, Triangles>(sum, f, inv, face_weight[f] / n, out);
+            else
+                energy += residual_of<FromSource, Triangles>(sum, f, inv, w, out);
             also(f);
         }
-        return mu_ * energy; // one weight: mu times the sum, as energy() computes it
+        // One weight: mu times the sum, as energy() computes it.
+        return Weighted ? energy : mu_ * energy;
     }
     //! face_corner_sum of face f; with Triangles, of the three corners at 3 f (the same sum).
     template <bool Triangles>
