@@ -28,11 +28,8 @@ void check_fused_as_general(const Session& session, std::span<const Scalar> fuse
         CHECK(std::memcmp(fused.data(), general.data(), fused.size() * sizeof(Scalar)) == 0);
         return;
     }
-    const BoundingBox box = bounding_box(general);
-    Scalar diagonal = 0, largest = 0;
-    for (int a = 0; a < 3; ++a)
-        diagonal += (box.max[a] - box.min[a]) * (box.max[a] - box.min[a]);
-    diagonal = std::sqrt(diagonal);
+    const Scalar diagonal = bounding_box(general).diagonal();
+    Scalar largest = 0;
     for (size_t k = 0; k < fused.size(); ++k)
         largest = std::max(largest, std::abs(fused[k] - general[k]));
     INFO("largest difference " << largest << ", diagonal " << diagonal);

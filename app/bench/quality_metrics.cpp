@@ -101,7 +101,7 @@ SurfaceDistance::SurfaceDistance(const Mesh& mesh, std::span<const Scalar> x)
     }
     const BoundingBox box = bounding_box(x);
     const Vec3 extent = box.max - box.min;
-    diagonal_ = norm(extent);
+    diagonal_ = box.diagonal();
     origin_ = box.min;
     // About two triangles wide, and at most 256 cells along an axis.
     const Scalar largest = std::max({extent[0], extent[1], extent[2]});

@@ -112,14 +112,6 @@ public:
                    ? face_residuals_from<false>(x, faces, begin, end, residual, also)
                    : face_residuals_from<true>(x, faces, begin, end, residual, also);
     }
-    //! r += the residuals of i's constrained faces in corner order: add_vertex_rhs's
-    //! sum, the same bits, from face_residual's values computed once per face (the fused
-    //! step: a face's n_f corners read each residual, which is computed once per step).
-    [[gnu::always_inline]] void add_vertex_residuals(Index i, const Scalar* residual,
-                                                     Scalar* r) const
-    {
-        add_corner_shares(*topology_, walk_, flags(), residual, i, r);
-    }
     //! One byte per face, nonzero where constrained; nullptr when every face is.
     const char* flags() const { return all_faces_ ? nullptr : constrained_.data(); }
 

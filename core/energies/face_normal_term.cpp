@@ -12,13 +12,20 @@ namespace meshfair {
 
 FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
                                Scalar mu, std::span<const Scalar> weights)
+    : FaceNormalTerm(mesh, topology, std::move(faces), mu, weights,
+                     bounding_box(mesh.positions).centre())
+{
+}
+
+FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces,
+                               Scalar mu, std::span<const Scalar> weights, const Vec3& centre)
     : mesh_(&mesh),
       topology_(&topology),
       mu_(mu),
       faces_(IndexList(std::move(faces))),
       constrained_(mesh.face_count(), 0),
       walk_(mesh, topology),
-      centre_(bounding_box(mesh.positions).centre()),
+      centre_(centre),
       all_faces_(false)
 {
     for (const Index f : faces_)

@@ -33,6 +33,10 @@ public:
     //! >= 0 (as mu).
     FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces, Scalar mu,
                    std::span<const Scalar> weights = {});
+    //! The same, with face_share's point c given (the Session's, which it computed already);
+    //! the constructor above takes the middle of the mesh's bounding box.
+    FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::vector<Index> faces, Scalar mu,
+                   std::span<const Scalar> weights, const Vec3& centre);
 
     Scalar mu() const { return mu_; }
     //! mu_f of a constrained face.
@@ -68,8 +72,8 @@ public:
     //! True when every face of the mesh is a triangle: the fused step then takes the
     //! term's corner parts from face_share.
     bool triangles() const { return walk_.triangles(); }
-    //! The point c of face_share: the middle of the bounding box of the mesh's positions
-    //! at construction, so that its sums stay the size of the mesh, not of its coordinates.
+    //! The point c of face_share: a point near the mesh (the middle of its bounding box), so
+    //! that its sums stay the size of the mesh, not of its coordinates.
     const Vec3& centre() const { return centre_; }
     //! \brief Face f's share of its corners' right-hand sides, for the fused step on a mesh
     //! of triangles. For a triangle (a, b, d) and its corner i, (x_prev - x_i) +

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -55,6 +56,14 @@ struct BoundingBox
     Vec3 min{0, 0, 0};
     Vec3 max{0, 0, 0};
     bool empty = true;
+    //! The length of the diagonal, |max - min|; 0 when empty.
+    Scalar diagonal() const
+    {
+        Scalar squared = 0;
+        for (int a = 0; a < 3; ++a)
+            squared += (max[a] - min[a]) * (max[a] - min[a]);
+        return std::sqrt(squared);
+    }
     //! The middle, min + (max - min) / 2 on each axis; 0 when empty.
     Vec3 centre() const
     {

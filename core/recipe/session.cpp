@@ -91,6 +91,10 @@ void Session::precompute()
     const Mesh& mesh = *mesh_;
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
     const std::span<const Scalar> x0 = mesh.positions;
+    // The point the homogeneous terms' vertex parts are taken about (EdgeTerm::vertex_part)
+    // and the normal term's shares' c (FaceNormalTerm::face_share): the middle of the
+    // bounding box, where the products stay the size of the mesh.
+    energy_centre_ = bounding_box(x0).centre();
 
     // Fixed vertices: hard ones, and everything outside the region.
     std::vector<char> fixed(nv, 0);
@@ -203,7 +207,7 @@ void Session::precompute()
             for (size_t k = 0; k < faces.size(); ++k)
                 std::copy_n(&given[3 * k], 3, &normals_[3 * faces[k]]);
         }
-        normal_.emplace(mesh, *topology_, std::move(faces), n.mu, n.weights);
+        normal_.emplace(mesh, *topology_, std::move(faces), n.mu, n.weights, energy_centre_);
         smoothing_.emplace(*topology_, ns.hard.faces, hard_normals, ns.soft.faces, ns.soft.mu,
                            soft_normals, ns.soft.weights);
         smoothing_->apply_hard(normals_);
@@ -333,9 +337,6 @@ void Session::precompute()
                                        ? c.faces == n.faces
                                        : std::equal(c.faces, c.faces + c.count, n.faces));
     }
-    // The point the homogeneous terms' vertex parts are taken about (EdgeTerm::vertex_part):
-    // the middle of the bounding box, where the products stay the size of the mesh.
-    energy_centre_ = bounding_box(x0).centre();
     // The fixed vertices whose parts of the energy move with the free ones.
     energy_border_ = {};
     if (fused() && free_.size() < static_cast<size_t>(nv))
@@ -669,7 +670,6 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
     const char* share_flag = share_flag_;
     const bool normal_shares = normal_shares_;
     const CornerWalk walk(*mesh_, *topology_);
-    const Scalar* c = Normal && normal_shares ? normal_->centre().data() : nullptr;
     const EdgeTerm& edge = edge_;
     const Scalar centre[3] = {energy_centre_[0], energy_centre_[1], energy_centre_[2]};
     // The range's vertices' parts of the energy, each term summed vertex by vertex.
@@ -698,7 +698,9 @@ TermEnergies Session::fused_range(const Scalar* x, Scalar* y, Scalar step, Index
         {
             if (normal_shares)
             {
-                const Scalar e[3] = {x[at] - c[0], x[at + 1] - c[1], x[at + 2] - c[2]};
+                // The normal term's c is the energy's centre (precompute gives it).
+                const Scalar e[3] = {x[at] - centre[0], x[at + 1] - centre[1],
+                                     x[at + 2] - centre[2]};
                 solve_less_block(&inverse[2 * at], diagonal[i], e, r, dx);
             }
             else
