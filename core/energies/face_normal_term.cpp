@@ -47,7 +47,7 @@ Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar>
         return face_weight_.empty() ? s : face_weight_[f] * s;
     });
     // One weight: mu times the sum, the arithmetic of the paper's single mu.
-    return face_weight_.empty() ? mu_ * sum : sum;
+    return energy_of_sum(sum);
 }
 
 void FaceNormalTerm::add_block(std::span<const Scalar> normals, std::span<const Index> vertices,
@@ -110,7 +110,7 @@ Scalar FaceNormalTerm::face_energies(const Scalar* x, const Scalar* normals, con
         const Scalar s = pair_sum(&normals[3 * static_cast<std::ptrdiff_t>(f)], x, mesh_->face(f));
         energy += face_weight_.empty() ? s : face_weight_[f] * s;
     }
-    return face_weight_.empty() ? mu_ * energy : energy;
+    return energy_of_sum(energy);
 }
 
 void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const

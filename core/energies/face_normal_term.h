@@ -103,7 +103,7 @@ public:
         const Scalar sigma = u[0] * ((a[0] - c[0]) + (b[0] - c[0]) + (d[0] - c[0])) +
                              u[1] * ((a[1] - c[1]) + (b[1] - c[1]) + (d[1] - c[1])) +
                              u[2] * ((a[2] - c[2]) + (b[2] - c[2]) + (d[2] - c[2]));
-        const Scalar w = face_weight_.empty() ? mu_ : face_weight_[f];
+        const Scalar w = face_weight(f);
         Scalar s = 0;
         if constexpr (Energy) // before the stores, which could change x for the compiler
             s = pair_sum(u, x, std::span<const Index, 3>(corners, 3));
