@@ -240,7 +240,6 @@ public:
             {
             }
         }
-        report_collapsed(collapsed_, report_.notes);
         report_welding(welder_, mesh_, report_);
         if (solids > 1)
             report_.notes.push_back("concatenated " + std::to_string(solids) +
@@ -275,6 +274,11 @@ private:
         {
             if (!equals_ignoring_case(k, "vertex"))
                 reader_.fail_at(k, "expected 'vertex' or 'endloop', found " + quoted(k));
+            // An STL facet is a triangle (every exporter writes three corners): a fourth
+            // is a damaged or hand-edited file, not a polygon to guess the meaning of.
+            if (face_.size() == 3)
+                reader_.fail_at(k, "facet " + std::to_string(facet) +
+                                       " has more than 3 vertices (an STL facet is a triangle)");
             const double x = parse_double(reader_, in_facet(facet), "x coordinate");
             const double y = parse_double(reader_, in_facet(facet), "y coordinate");
             const double z = parse_double(reader_, in_facet(facet), "z coordinate");
@@ -285,14 +289,15 @@ private:
         if (face_.size() < 3)
             reader_.fail("facet " + std::to_string(facet) + " has " +
                          count_of(static_cast<std::int64_t>(face_.size()), "vertex", "vertices") +
-                         " (a facet needs at least 3)");
+                         " (an STL facet is a triangle)");
         expect("endfacet", facet);
         const auto where = SourceLocation::text(reader_.file(), line, column);
+        // Of a triangle's corners, a repeated one leaves fewer than three: refused, never
+        // collapsed.
         const FaceCheck check = normalize_face(face_);
         if (!check.ok)
             throw FormatError(where, "facet " + std::to_string(facet) + ": " + check.problem +
                                          " once equal positions are welded");
-        collapsed_.add(check.collapsed, where.to_string());
         mesh_.add_face(face_);
         return true;
     }
@@ -317,7 +322,6 @@ private:
     Mesh mesh_;
     Welder welder_;
     ReadReport& report_;
-    NoteCounter collapsed_;
     std::vector<Index> face_;
 };
 

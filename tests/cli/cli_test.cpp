@@ -160,6 +160,24 @@ TEST_SUITE("Cli")
         CHECK(format.err.find("unknown mesh format '.xyz'") != std::string::npos);
     }
 
+    TEST_CASE("an ASCII STL facet of four vertices exits 2 naming its line, the output untouched")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string bad = (dir / "quad.stl").string(), out = (dir / "out.obj").string();
+        test::write_bytes(bad,
+                          "solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n"
+                          "vertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\n"
+                          "endsolid q\n");
+        test::write_bytes(out, "an earlier output\n");
+        for (const char* command : {"smooth ", "convert "})
+        {
+            const Run r = cli(command + test::shell_quote(bad) + " -o " + test::shell_quote(out));
+            CHECK(r.code == 2);
+            CHECK(r.err.find(bad + ":7:1: facet 0 has more than 3 vertices") != std::string::npos);
+            CHECK(io::read_file(out) == "an earlier output\n");
+        }
+    }
+
     TEST_CASE("a bad recipe exits 2 naming the key, and writes nothing")
     {
         const fs::path dir = test::temp_dir();

@@ -209,14 +209,18 @@ TEST_SUITE("ReadStl")
         CHECK(m.positions[9] == 0.10000000000000002);
     }
 
-    TEST_CASE("a loop with more than 3 vertices is kept as one polygon")
+    TEST_CASE("a facet with a fourth vertex is refused at that vertex's line")
     {
-        const Mesh m = parse_stl("solid quad\n" +
-                                 ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
-                                             "vertex 0 1 0\n") +
-                                 "endsolid quad\n");
-        REQUIRE(m.face_count() == 1);
-        CHECK(corners(m, 0) == std::vector<Index>{0, 1, 2, 3});
+        // Facet 1's loop has four corners: the error names its fourth 'vertex' keyword.
+        const std::string text = "solid quad\n" +
+                                 ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n") +
+                                 ascii_facet(
+                                     "vertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\n"
+                                     "  vertex 0 1 0\nvertex 0 1 1\n") +
+                                 "endsolid quad\n";
+        // Lines 1 (solid), 2-8 (facet 0), 9-10 (facet 1's header), 11-13, then the fourth.
+        CHECK(stl_error(text) ==
+              "t.stl:14:3: facet 1 has more than 3 vertices (an STL facet is a triangle)");
     }
 
     TEST_CASE("several solids are concatenated in file order")
@@ -359,24 +363,11 @@ TEST_SUITE("ReadStl")
                         "endsolid\n") ==
               "t.stl:9:1: facet 1: face has 1 distinct vertex (a face needs at least 3) once "
               "equal positions are welded");
-        CHECK(stl_error("solid\n" +
-                        ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 0 0 0\nvertex 0 1 0\n") +
+        // A repeated corner leaves a triangle two vertices (no polygon to collapse it in).
+        CHECK(stl_error("solid\n" + ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 0 0\n") +
                         "endsolid\n") ==
-              "t.stl:2:1: facet 0: face uses vertex 0 at two corners that are not adjacent once "
+              "t.stl:2:1: facet 0: face has 2 distinct vertices (a face needs at least 3) once "
               "equal positions are welded");
-    }
-
-    TEST_CASE("repeated consecutive corners of a polygon are collapsed and reported")
-    {
-        io::ReadReport report;
-        const Mesh m = parse_stl("solid\n" +
-                                     ascii_facet("vertex 0 0 0\nvertex 1 0 0\nvertex 1 0 0\n"
-                                                 "vertex 0 1 0\n") +
-                                     "endsolid\n",
-                                 &report);
-        CHECK(corners(m, 0) == std::vector<Index>{0, 1, 2});
-        CHECK(report.notes.front() ==
-              "collapsed 1 consecutive repeated vertex indices in 1 faces (first at t.stl:2:1)");
     }
 
     TEST_CASE("malformed ASCII STL names the line, the column and what was expected")
@@ -395,7 +386,7 @@ TEST_SUITE("ReadStl")
               "t.stl:5:1: expected 'vertex' or 'endloop', found 'endfacet'");
         CHECK(stl_error("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                         "endloop\nendfacet\nendsolid x\n") ==
-              "t.stl:6:1: facet 0 has 2 vertices (a facet needs at least 3)");
+              "t.stl:6:1: facet 0 has 2 vertices (an STL facet is a triangle)");
         CHECK(stl_error("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n"
                         "vertex 0 1 0\nendloop\nendloop\n") ==
               "t.stl:8:1: expected 'endfacet', found 'endloop'");
