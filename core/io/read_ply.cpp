@@ -63,6 +63,7 @@ enum class Kind
 {
     Vertex,
     Face,
+    Strips, // 'tristrips': triangle strips, -1 between strips (Stanford's range scans)
     Other
 };
 
@@ -77,7 +78,7 @@ struct Property
     std::int64_t line = 0;   // header line declaring it
     std::int64_t column = 0; // and the column of its 'property' keyword
     int axis = -1;           // 0, 1, 2 for the vertex coordinates x, y, z
-    bool is_indices = false; // the face's vertex index list
+    bool is_indices = false; // the face's (or the strips') vertex index list
     std::string what;        // names one value in messages: "x coordinate", "'red' value"
     std::string count_what;  // "'vertex_indices' list count"
 };
@@ -158,11 +159,14 @@ void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
         reader.fail("an element line must be 'element NAME COUNT'");
     Element e;
     e.name = std::string(name);
-    e.kind = name == "vertex" ? Kind::Vertex : name == "face" ? Kind::Face : Kind::Other;
+    e.kind = name == "vertex"      ? Kind::Vertex
+             : name == "face"      ? Kind::Face
+             : name == "tristrips" ? Kind::Strips
+                                   : Kind::Other;
     e.count = parse_integer(reader, count, "element count");
     if (e.count < 0)
         reader.fail_at(count, "element count " + std::to_string(e.count) + " is negative");
-    // Only the vertex and face elements must be unique: one scan each, at most twice.
+    // Only the vertex, face and tristrips elements must be unique: one scan each.
     if (e.kind != Kind::Other)
         for (const Element& other : h.elements)
             if (other.name == e.name)
@@ -307,23 +311,24 @@ void assign_roles(Header& h, const std::string& file)
                 p->what = p->name + " coordinate";
             }
         }
-        else if (e.kind == Kind::Face)
+        else if (e.kind == Kind::Face || e.kind == Kind::Strips)
         {
             Property* p = find("vertex_indices");
             Property* alias = find("vertex_index");
             if (p && alias)
                 fail_line(file, *alias,
-                          "face element has both 'vertex_indices' and 'vertex_index'");
+                          e.name + " element has both 'vertex_indices' and 'vertex_index'");
             p = p ? p : alias;
             if (!p)
                 fail_line(file, e,
-                          "face element has no list property 'vertex_indices' (or "
-                          "'vertex_index')");
+                          e.name +
+                              " element has no list property 'vertex_indices' (or "
+                              "'vertex_index')");
             if (!p->is_list)
-                fail_line(file, *p, "face property '" + p->name + "' is not a list");
+                fail_line(file, *p, e.name + " property '" + p->name + "' is not a list");
             if (!info(p->type).is_integer)
                 fail_line(file, *p,
-                          "face property '" + p->name + "' has item type '" + p->type_name +
+                          e.name + " property '" + p->name + "' has item type '" + p->type_name +
                               "' (vertex indices must be integers)");
             p->is_indices = true;
             p->what = "vertex index";
@@ -606,6 +611,9 @@ struct Body
     NoteCounter collapsed;
     std::vector<Index> face;
     size_t padding = 0; // NUL or line-end bytes after the last row of a binary file
+    // The tristrips element's strips, the triangles they gave and the degenerate ones
+    // dropped (two equal corners: how strips turn corners and join).
+    std::int64_t strips = 0, strip_triangles = 0, strip_degenerate = 0;
 };
 
 template <typename Rows>
@@ -637,6 +645,57 @@ void read_face(Rows& rows, const Property& p, std::int64_t row, Body& body)
     body.mesh.add_face(body.face);
 }
 
+// One row of a tristrips element: strips of vertex indices, each ending at a restart (-1,
+// or the largest value of an unsigned item type) or at the row's end. A strip's k-th
+// index (k >= 2) closes the triangle of the two before it, every other one reversed so
+// that all keep the strip's orientation: (s0 s1 s2), (s2 s1 s3), (s2 s3 s4), ...
+template <typename Rows>
+void read_strips(Rows& rows, const Property& p, std::int64_t row, Body& body)
+{
+    const std::int64_t n = rows.count(p);
+    const TypeInfo& type = info(p.type);
+    const std::int64_t restart = type.min < 0 ? -1 : type.max;
+    std::int64_t in_strip = 0;
+    Index a = 0, b = 0;
+    for (std::int64_t k = 0; k < n; ++k)
+    {
+        const std::int64_t v = rows.index(p);
+        if (v == restart)
+        {
+            in_strip = 0;
+            continue;
+        }
+        if (v < 0)
+            rows.fail("tristrips " + std::to_string(row) + " uses vertex index " +
+                      std::to_string(v) + " at item " + std::to_string(k) +
+                      " (PLY vertex indices start at 0; -1 ends a strip)");
+        if (v >= body.vertex_count)
+            rows.fail("tristrips " + std::to_string(row) + " uses vertex index " +
+                      std::to_string(v) + " at item " + std::to_string(k) +
+                      " but the file declares " + std::to_string(body.vertex_count) + " vertices");
+        const auto c = static_cast<Index>(v);
+        if (in_strip == 0)
+            ++body.strips;
+        if (in_strip >= 2)
+        {
+            const bool reversed = in_strip % 2 != 0;
+            const Index triangle[3] = {reversed ? b : a, reversed ? a : b, c};
+            if (a == b || b == c || a == c)
+                ++body.strip_degenerate;
+            else
+            {
+                if (body.mesh.face_vertices.size() + 3 > static_cast<size_t>(kMaxElements))
+                    rows.fail("more face corners than MeshFair supports");
+                body.mesh.add_face(triangle);
+                ++body.strip_triangles;
+            }
+        }
+        a = b;
+        b = c;
+        ++in_strip;
+    }
+}
+
 template <typename Rows>
 void read_rows(Rows& rows, const Header& h, Body& body)
 {
@@ -656,7 +715,11 @@ void read_rows(Rows& rows, const Header& h, Body& body)
             double xyz[3] = {0, 0, 0};
             for (const Property& p : e.properties)
             {
-                if (p.is_indices)
+                if (p.is_indices && e.kind == Kind::Strips)
+                {
+                    read_strips(rows, p, row, body);
+                }
+                else if (p.is_indices)
                 {
                     read_face(rows, p, row, body);
                 }
@@ -757,6 +820,20 @@ Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report
     }
     add_notes(h, report);
     report_collapsed(body.collapsed, report.notes);
+    for (const Element& e : h.elements)
+        if (e.kind == Kind::Strips)
+        {
+            report.notes.push_back("decoded element 'tristrips' (" +
+                                   count_of(body.strips, "strip", "strips") + ") into " +
+                                   count_of(body.strip_triangles, "triangle", "triangles") +
+                                   " (a PLY that MeshFair writes lists them as faces)");
+            if (body.strip_degenerate > 0)
+                report.notes.push_back(
+                    "dropped " +
+                    count_of(body.strip_degenerate, "degenerate triangle", "degenerate triangles") +
+                    " of the strips (two equal corners, where strips turn or "
+                    "join)");
+        }
     if (body.padding > 0)
         report.notes.push_back(
             "ignored " +

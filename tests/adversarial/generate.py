@@ -207,6 +207,27 @@ put("ply/vertex_index_alias_uint.ply",
     .encode() + binary_body("<"))
 put("ply/long_line.ply", ply_header("ascii", 4, 1) + ascii_body().replace("0 0 0\n", "0 0 0" + " " * 70000 + "\n", 1))
 put("ply/point_cloud.ply", ply_header("ascii", 4, None) + ascii_body(faces=()))
+# Triangle strips (Stanford's range scans): one list per row, -1 between strips.
+STRIPS = "element tristrips 1\nproperty list int int vertex_indices\n"
+put("ply/tristrips_ascii.ply", ply_header("ascii", 4, None, extra=STRIPS) +
+    ascii_body(faces=()) + "9 0 1 3 2 -1 0 1 1 2\n")
+for name, order, fmt in (("le", "<", "binary_little_endian"), ("be", ">", "binary_big_endian")):
+    strip = (0, 1, 3, 2, -1, 0, 1, 1, 2)
+    put("ply/tristrips_binary_%s.ply" % name,
+        ply_header(fmt, 4, None, extra=STRIPS).encode() + binary_body(order, faces=()) +
+        struct.pack(order + "i", len(strip)) + struct.pack(order + "%di" % len(strip), *strip))
+put("ply/tristrips_index_past_end.ply", ply_header("ascii", 4, None, extra=STRIPS) +
+    ascii_body(faces=()) + "4 0 1 2 4\n")
+put("ply/tristrips_index_negative.ply", ply_header("ascii", 4, None, extra=STRIPS) +
+    ascii_body(faces=()) + "4 0 1 -5 2\n")
+put("ply/tristrips_only_restarts.ply", ply_header("ascii", 4, None, extra=STRIPS) +
+    ascii_body(faces=()) + "3 -1 -1 -1\n")
+put("ply/tristrips_uint_restart.ply",
+    ply_header("ascii", 4, None,
+               extra="element tristrips 1\nproperty list uchar uint vertex_indices\n") +
+    ascii_body(faces=()) + "7 0 1 2 4294967295 0 2 3\n")
+put("ply/tristrips_and_faces.ply", ply_header("ascii", 4, 1, extra=STRIPS) +
+    ascii_body(faces=((0, 1, 2),)) + "3 0 2 3\n")
 
 # ---- STL ---------------------------------------------------------------------------
 def stl_binary(triangles, header=b"binary STL written by hand", count=None, attr=0):

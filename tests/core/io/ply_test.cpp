@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
 #include "core/io/text_writer.h"
 #include "core/io/write_ply.h"
@@ -283,13 +284,13 @@ TEST_SUITE("ReadPly")
             vertex_decl(4) +
             "element edge 2\nproperty int vertex1\nproperty int vertex2\n"
             "property list uchar int chain\nelement nothing 5\n" +
-            face_decl(2) + "element tristrips 1\nproperty list int int vertex_indices\n";
+            face_decl(2) + "element range_grid 1\nproperty list uchar int vertex_indices\n";
         const std::vector<Row> rows =
             std::vector<Row>{{{"uchar", 1}, {"float", 2.5}}, {{"uchar", 3}, {"float", 4}}} +
             kVertexRows +
             std::vector<Row>{Row{{"int", 0}, {"int", 1}} + list("uchar", "int", {0, 1, 2, 3}),
                              Row{{"int", 2}, {"int", 3}} + list("uchar", "int", {})} +
-            kFaceRows + std::vector<Row>{list("int", "int", {0, 1, 2, -1, 3, 2})};
+            kFaceRows + std::vector<Row>{list("uchar", "int", {0})};
         for (const Encoding encoding : kEncodings)
         {
             CAPTURE(io::encoding_name(encoding));
@@ -297,7 +298,7 @@ TEST_SUITE("ReadPly")
             CHECK(parse_ply(ply(encoding, declarations, rows), &report) == two_triangles());
             CHECK(report.notes ==
                   std::vector<std::string>{"skipped 4 elements: 'material' (2 rows), 'edge' (2 "
-                                           "rows), 'nothing' (5 rows), 'tristrips' (1 row)"});
+                                           "rows), 'nothing' (5 rows), 'range_grid' (1 row)"});
         }
     }
 
@@ -359,6 +360,149 @@ TEST_SUITE("ReadPly")
                   std::vector<std::string>{"no faces: read as a point cloud of 4 vertices"});
         }
         CHECK(parse_ply("ply\nformat ascii 1.0\ncomment nothing\nend_header\n") == Mesh{});
+    }
+
+    TEST_CASE(
+        "tristrips are decoded into triangles, -1 restarting a strip, degenerate ones "
+        "dropped")
+    {
+        // Strip 0 gives (0 1 2) and (2 1 3), the second reversed to keep the strip's
+        // orientation; strip 1's repeated 4 makes two degenerate triangles between (2 3 4)
+        // and nothing after it; strip 2 doubles back on its first vertex (a third).
+        const std::string decl = vertex_decl(6) +
+                                 "element tristrips 1\n"
+                                 "property list int int vertex_indices\n";
+        const std::vector<Row> rows = {
+            xyz(0, 0, 0),
+            xyz(1, 0, 0),
+            xyz(0, 1, 0),
+            xyz(1, 1, 0),
+            xyz(0, 2, 0),
+            xyz(1, 2, 0),
+            list("int", "int", {0, 1, 2, 3, -1, 2, 3, 4, 4, 5, -1, 0, 1, 0})};
+        for (const Encoding encoding : kEncodings)
+        {
+            CAPTURE(io::encoding_name(encoding));
+            io::ReadReport report;
+            const Mesh m = parse_ply(ply(encoding, decl, rows), &report);
+            CHECK(m == test::make_mesh(
+                           {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 2, 0}, {1, 2, 0}},
+                           {{0, 1, 2}, {2, 1, 3}, {2, 3, 4}}));
+            CHECK(report.notes ==
+                  std::vector<std::string>{
+                      "decoded element 'tristrips' (3 strips) into 3 triangles (a PLY that "
+                      "MeshFair writes lists them as faces)",
+                      "dropped 3 degenerate triangles of the strips (two equal corners, where "
+                      "strips turn or join)"});
+        }
+    }
+
+    TEST_CASE("a long strip over a grid gives triangles that all face one way")
+    {
+        // Two rows of n vertices zigzagged into one strip, as range-scan strips run:
+        // 0 n 1 n+1 2 n+2 ...; every triangle must face the way the first one does: (0 n 1)
+        // turns clockwise seen from +z, so all face -z.
+        constexpr int n = 50;
+        std::vector<Row> rows;
+        for (int row = 0; row < 2; ++row)
+            for (int i = 0; i < n; ++i)
+                rows.push_back(xyz(i, row, 0.01 * ((i * 7) % 5)));
+        std::vector<double> strip;
+        for (int i = 0; i < n; ++i)
+        {
+            strip.push_back(i);
+            strip.push_back(n + i);
+        }
+        rows.push_back(list("int", "int", strip));
+        const Mesh m = parse_ply(ply(Encoding::Ascii,
+                                     vertex_decl(2 * n) + "element tristrips 1\n"
+                                                          "property list int int vertex_indices\n",
+                                     rows));
+        REQUIRE(m.face_count() == 2 * n - 2);
+        for (Index f = 0; f < m.face_count(); ++f)
+        {
+            CAPTURE(f);
+            CHECK(face_normal(m, m.positions, f)[2] < -0.9);
+        }
+    }
+
+    TEST_CASE("an unsigned strip list restarts at its type's largest value")
+    {
+        for (const auto& [item, restart] : {std::pair<std::string, double>{"uchar", 255},
+                                            {"ushort", 65535},
+                                            {"uint", 4294967295.0}})
+        {
+            CAPTURE(item);
+            const std::string decl = vertex_decl(4) + "element tristrips 1\nproperty list int " +
+                                     item + " vertex_indices\n";
+            for (const Encoding encoding : kEncodings)
+            {
+                CAPTURE(io::encoding_name(encoding));
+                const Mesh m =
+                    parse_ply(ply(encoding, decl,
+                                  kVertexRows + std::vector<Row>{list(
+                                                    "int", item, {0, 1, 2, restart, 0, 2, 3})}));
+                CHECK(m == two_triangles());
+            }
+        }
+    }
+
+    TEST_CASE("faces and tristrips in one file give both, in element order")
+    {
+        const std::string decl = vertex_decl(4) + face_decl(1) +
+                                 "element tristrips 1\nproperty list int int vertex_indices\n";
+        const Mesh m = parse_ply(
+            ply(Encoding::Ascii, decl,
+                kVertexRows + std::vector<Row>{tri(0, 1, 2), list("int", "int", {0, 2, 3})}));
+        CHECK(m == two_triangles());
+    }
+
+    TEST_CASE("tristrips errors name the row, the item and the vertex count")
+    {
+        const std::string decl = vertex_decl(3) +
+                                 "element tristrips 1\n"
+                                 "property list int int vertex_indices\n";
+        const std::vector<Row> vertices = {xyz(0, 0, 0), xyz(1, 0, 0), xyz(0, 1, 0)};
+        CHECK(ply_error(ply(Encoding::Ascii, decl,
+                            vertices + std::vector<Row>{list("int", "int", {0, 1, 2, -2})})) ==
+              "t.ply:13:9: tristrips 0 uses vertex index -2 at item 3 (PLY vertex indices start "
+              "at 0; -1 ends a strip)");
+        CHECK(ply_error(ply(Encoding::Ascii, decl,
+                            vertices + std::vector<Row>{list("int", "int", {0, 1, 3})})) ==
+              "t.ply:13:7: tristrips 0 uses vertex index 3 at item 2 but the file declares 3 "
+              "vertices");
+        CHECK(
+            ply_error(header(Encoding::Ascii, vertex_decl(3) + "element tristrips 1\n"
+                                                               "property int vertex_indices\n")) ==
+            "t.ply:8:1: tristrips property 'vertex_indices' is not a list");
+        CHECK(
+            ply_error(header(Encoding::Ascii, vertex_decl(3) + "element tristrips 1\n"
+                                                               "property list int int strip\n")) ==
+            "t.ply:7:1: tristrips element has no list property 'vertex_indices' (or "
+            "'vertex_index')");
+        CHECK(ply_error(header(Encoding::Ascii, vertex_decl(3) +
+                                                    "element tristrips 1\nproperty list int int "
+                                                    "vertex_indices\nelement tristrips 0\n")) ==
+              "t.ply:9:9: second 'tristrips' element (a PLY mesh has at most one)");
+    }
+
+    TEST_CASE("a tristrips mesh written as PLY reads back as the same faces")
+    {
+        const std::string decl = vertex_decl(4) +
+                                 "element tristrips 1\n"
+                                 "property list int int vertex_indices\n";
+        const Mesh m =
+            parse_ply(ply(Encoding::BinaryLittleEndian, decl,
+                          kVertexRows + std::vector<Row>{list("int", "int", {1, 2, 0, 3})}));
+        REQUIRE(m.face_count() == 2);
+        for (const Encoding encoding : kEncodings)
+        {
+            std::string out;
+            io::write_ply(m, encoding, out);
+            io::ReadReport report;
+            CHECK(parse_ply(out, &report) == m);
+            CHECK(report.notes.empty());
+        }
     }
 
     TEST_CASE("CRLF and CR-only headers are accepted, with binary data right after them")
