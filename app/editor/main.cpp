@@ -69,7 +69,7 @@ int main(int argc, char** argv)
     CLI::App app{"meshfair: select, constrain and smooth polygon meshes"};
     std::string mesh = MESHFAIR_DEFAULT_MESH;
     bool offscreen = false, ui = false;
-    std::string view, screenshot, save_view, script, size = "1280x800";
+    std::string view, screenshot, save_view, script, beside, size = "1280x800";
     std::vector<std::string> modes;
     int threads = 0;
     bool trace = false;
@@ -83,7 +83,10 @@ int main(int argc, char** argv)
     app.add_option("--save-view", save_view, "Write the offscreen frame's camera as JSON");
     app.add_option("--script", script,
                    "Offscreen: play a scripted session (JSON, docs/editor.md) before the frame");
-    app.add_option("--size", size, "Frame size WxH (default 1280x800)");
+    app.add_option("--beside", beside,
+                   "Offscreen: draw this mesh too, to the right of MESH, seen by the same camera "
+                   "(a before / after picture twice as wide)");
+    app.add_option("--size", size, "Frame size WxH (default 1280x800; with --beside, each half)");
     app.add_option("--mode", modes,
                    "Display: flat|smooth, and any of wire, points, boundary, no-boundary, "
                    "no-back-tint (comma-separated or repeated)")
@@ -122,6 +125,11 @@ int main(int argc, char** argv)
             std::cerr << "meshfair: --script needs --offscreen\n";
             return kExitInput;
         }
+        if (!beside.empty() && !offscreen)
+        {
+            std::cerr << "meshfair: --beside needs --offscreen\n";
+            return kExitInput;
+        }
         if (!offscreen)
         {
             try
@@ -142,7 +150,8 @@ int main(int argc, char** argv)
             std::cerr << "meshfair: --offscreen needs --screenshot OUT.png\n";
             return kExitInput;
         }
-        render_screenshot({mesh, view, screenshot, save_view, script, width, height, display, ui});
+        render_screenshot(
+            {mesh, view, screenshot, save_view, script, beside, width, height, display, ui});
         return 0;
     }
     catch (const WriteError& e)

@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/offscreen.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -45,6 +47,27 @@ void OffscreenHost::screenshot(const std::string& path)
     write_png(frame(), path);
 }
 
+Image side_by_side(const Image& left, const Image& right)
+{
+    Image both;
+    both.width = left.width + right.width;
+    both.height = std::max(left.height, right.height);
+    both.rgba.assign(4 * static_cast<size_t>(both.width) * static_cast<size_t>(both.height), 0);
+    for (int y = 0; y < both.height; ++y)
+    {
+        std::uint8_t* row =
+            &both.rgba[4 * static_cast<size_t>(y) * static_cast<size_t>(both.width)];
+        if (y < left.height)
+            std::copy_n(&left.rgba[4 * static_cast<size_t>(y) * static_cast<size_t>(left.width)],
+                        4 * static_cast<size_t>(left.width), row);
+        if (y < right.height)
+            std::copy_n(&right.rgba[4 * static_cast<size_t>(y) * static_cast<size_t>(right.width)],
+                        4 * static_cast<size_t>(right.width),
+                        row + 4 * static_cast<size_t>(left.width));
+    }
+    return both;
+}
+
 void render_screenshot(const ScreenshotRequest& request)
 {
     // Everything that can be refused is read before any context exists.
@@ -56,6 +79,9 @@ void render_screenshot(const ScreenshotRequest& request)
     std::optional<Script> script;
     if (!request.script_path.empty())
         script = read_script(request.script_path);
+    std::optional<Document> beside;
+    if (!request.beside_path.empty())
+        beside = load_document(request.beside_path);
 
     OsmesaContext context(request.width, request.height);
     GlRenderer renderer;
@@ -72,7 +98,22 @@ void render_screenshot(const ScreenshotRequest& request)
         session.camera().frame(session.document().box, session.aspect());
     if (script)
         play_script(*script, session, host);
-    host.screenshot(request.screenshot_path);
+    if (!beside)
+        host.screenshot(request.screenshot_path);
+    else
+    {
+        const Image left = host.frame();
+        GlRenderer beside_renderer;
+        EditorSession beside_session(std::move(*beside), beside_renderer);
+        beside_session.state().display = request.display;
+        beside_session.state().renderer_name = context.renderer_name();
+        beside_session.state().offscreen = true;
+        OffscreenHost beside_host(beside_session, request.width, request.height, false);
+        beside_host.run_frame();
+        beside_session.camera() = session.camera();
+        write_png(side_by_side(left, beside_host.frame()), request.screenshot_path);
+        beside_session.end_session();
+    }
     session.end_session();
     if (!request.save_view_path.empty())
         io::write_file_atomically(request.save_view_path, to_json(session.camera()));

@@ -34,6 +34,9 @@ private:
     std::unique_ptr<EditorFrame> frame_;
 };
 
+//! `left` and `right` in one image, top-aligned (rows below the shorter one transparent).
+Image side_by_side(const Image& left, const Image& right);
+
 //! What `meshfair --offscreen` renders.
 struct ScreenshotRequest
 {
@@ -42,6 +45,9 @@ struct ScreenshotRequest
     std::string screenshot_path;
     std::string save_view_path; //!< where to write the camera used; empty: nowhere
     std::string script_path;    //!< a scripted session to play first; empty: none
+    //! A second mesh drawn with the same camera to the right of the first, in one picture
+    //! twice as wide (a before / after comparison); empty: none
+    std::string beside_path;
     int width = 1280;
     int height = 800;
     DisplayOptions display;
@@ -49,7 +55,8 @@ struct ScreenshotRequest
 };
 
 //! \brief Renders one frame through OSMesa (no display, no GLFW) and writes it as PNG,
-//! after playing the script, if any, through an EditorSession.
+//! after playing the script, if any, through an EditorSession; with beside_path, the second
+//! mesh's frame from the same camera to the right of it.
 //! \throw InvalidInputError for a bad mesh or view file, WriteError when the PNG cannot be
 //! written (an existing file is kept whole), RenderError when there is no usable OpenGL.
 void render_screenshot(const ScreenshotRequest& request);

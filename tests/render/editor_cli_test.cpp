@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "app/editor/offscreen.h"
 #include "app/render/image.h"
 #include "core/io/io.h"
 #include "tests/helpers.h"
@@ -63,6 +64,49 @@ TEST_SUITE("meshfair")
                        test::shell_quote(b) + " --view " + test::shell_quote(view))
                     .code == 0);
         CHECK(io::read_file(a) == io::read_file(b));
+    }
+
+    TEST_CASE("--beside draws a second mesh to the right, seen by the first one's camera")
+    {
+        // The noisy bunny beside the bunny: the left half must be the noisy bunny's own
+        // frame and the right half the bunny's frame from the noisy one's camera, pixel for
+        // pixel.
+        const fs::path dir = test::temp_dir();
+        const std::string noisy = (dir / "noisy.obj").string(), view = (dir / "v.json").string();
+        const std::string pair = (dir / "pair.png").string(), left = (dir / "l.png").string(),
+                          right = (dir / "r.png").string();
+        REQUIRE(test::run_command(test::shell_quote(MESHFAIR_CLI) + " noise " + bunny_argument() +
+                                  " -o " + test::shell_quote(noisy) + " --sigma 0.5 --seed 3")
+                    .code == 0);
+        const std::string size = " --size 240x180 --offscreen ";
+        REQUIRE(editor(test::shell_quote(noisy) + size + "--screenshot " + test::shell_quote(pair) +
+                       " --beside " + bunny_argument())
+                    .code == 0);
+        REQUIRE(editor(test::shell_quote(noisy) + size + "--screenshot " + test::shell_quote(left) +
+                       " --save-view " + test::shell_quote(view))
+                    .code == 0);
+        REQUIRE(editor(bunny_argument() + size + "--screenshot " + test::shell_quote(right) +
+                       " --view " + test::shell_quote(view))
+                    .code == 0);
+        const app::Image both = app::read_png(pair), a = app::read_png(left),
+                         b = app::read_png(right);
+        REQUIRE(both.width == 480);
+        REQUIRE(both.height == 180);
+        CHECK(both.rgba == app::side_by_side(a, b).rgba);
+        CHECK(a.rgba != b.rgba); // the two meshes differ on screen
+
+        // A bad second mesh is refused before anything is drawn or written.
+        const fs::path bad = dir / "bad.obj";
+        test::write_bytes(bad, "v 0 0 0\nf 1 2 3\n");
+        test::write_bytes(pair, "the previous picture");
+        const Run r =
+            editor(test::shell_quote(noisy) + size + "--screenshot " + test::shell_quote(pair) +
+                   " --beside " + test::shell_quote(bad.string()));
+        CHECK(r.code == 2);
+        CHECK(r.err == "meshfair: " + bad.string() +
+                           ":2:7: vertex index 3 is past the last vertex (the file defines 1)\n");
+        CHECK(io::read_file(pair) == "the previous picture");
+        CHECK(editor(bunny_argument() + " --beside " + bunny_argument()).code == 2);
     }
 
     TEST_CASE("without a display the editor says so and renders the screenshot instead")
