@@ -19,7 +19,7 @@ esac
 if [ "$step" != test ]; then
     cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
         -DCMAKE_UNITY_BUILD=ON -DMESHFAIR_SANITIZE=ON -DMESHFAIR_WERROR=ON \
-        -DMESHFAIR_EDITOR_BENCH=OFF >/dev/null
+        -DMESHFAIR_EDITOR_BENCH=OFF -DMESHFAIR_BUILD_PYTHON=OFF >/dev/null
     cmake --build "$build" -j"$(nproc)"
 fi
 [ "$step" != build ] || exit 0

@@ -19,17 +19,18 @@ cd "$root"
 
 # libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else. The
 # editor needs GLFW, OSMesa, GLM, Dear ImGui and stb; xvfb and xauth give it a display
-# where there is none.
+# where there is none. pybind11 and NumPy build the Python module for Debian's own Python
+# (/usr/bin/python3, for which python3-numpy and python3-pytest are).
 packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
     doctest-dev libeigen3-dev libopenmesh-dev libglfw3-dev libosmesa6-dev libglm-dev
-    libimgui-dev libstb-dev xvfb xauth)
+    libimgui-dev libstb-dev xvfb xauth pybind11-dev python3-dev python3-numpy)
 # Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
 # and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
 # save tests and the files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the
 # editor's real-window test: synthetic keys, a screenshot taken from outside, its pixels,
-# a close request sent as a window manager sends it).
+# a close request sent as a window manager sends it), python3-pytest (the module's tests).
 [ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
-    strace xdotool x11-apps imagemagick libx11-dev)
+    strace xdotool x11-apps imagemagick libx11-dev python3-pytest)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -54,9 +55,9 @@ build=build
 # Unity translation units: each header is compiled once per batch of files, not once per
 # file, which takes about 30 % off a clean build.
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
-    -DMESHFAIR_WERROR=ON >/dev/null
+    -DMESHFAIR_WERROR=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
 if [ "$mode" = run ]; then
-    cmake --build "$build" -j"$(nproc)" --target meshfair-cli meshfair
+    cmake --build "$build" -j"$(nproc)" --target meshfair-cli meshfair meshfair_python
 else
     cmake --build "$build" -j"$(nproc)"
 fi

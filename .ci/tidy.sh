@@ -9,6 +9,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 build=build-tidy
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
     -DCMAKE_UNITY_BUILD=OFF -DMESHFAIR_BUILD_TESTS=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
+    -DMESHFAIR_BUILD_PYTHON=OFF \
     >/dev/null
 find core -name '*.cpp' | sort | xargs -P"$(nproc)" -n4 clang-tidy -p "$build" --quiet
 echo "clang-tidy: no findings in core/."

@@ -39,7 +39,8 @@ fuzz_build_engine() {
     mkdir -p "$dir"
     cmake -S "$fuzz_root" -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DCMAKE_CXX_COMPILER="$cxx" \
         -DMESHFAIR_FUZZ=ON -DMESHFAIR_FUZZ_ENGINE="$engine" -DMESHFAIR_BUILD_TESTS=OFF \
-        -DCMAKE_UNITY_BUILD=ON -DMESHFAIR_WERROR=ON >"$dir/configure.log" 2>&1 || {
+        -DCMAKE_UNITY_BUILD=ON -DMESHFAIR_WERROR=ON -DMESHFAIR_BUILD_PYTHON=OFF \
+        >"$dir/configure.log" 2>&1 || {
         cat "$dir/configure.log" >&2
         return 1
     }

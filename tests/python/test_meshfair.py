@@ -1,0 +1,157 @@
+# SPDX-License-Identifier: MIT
+# Copyright 2026 the MeshFair authors.
+#
+# The meshfair Python module against meshfair-cli: the same positions bit for bit on the
+# same inputs, the Session's steps, (V, F) in both face layouts, and errors as Python
+# exceptions with the core's messages. Run by ctest (python_module) with PYTHONPATH at the
+# built module, MESHFAIR_CLI and MESHFAIR_ASSETS set.
+import json
+import os
+import subprocess
+
+import numpy as np
+import pytest
+
+import meshfair
+
+CLI = os.environ["MESHFAIR_CLI"]
+ASSETS = os.environ["MESHFAIR_ASSETS"]
+BUNNY = os.path.join(ASSETS, "bunny.obj")
+DENOISE = os.path.join(ASSETS, "recipes", "denoise.json")
+
+
+def cli_smooth(tmp_path, mesh_path, recipe_text, name="out.obj"):
+    """meshfair-cli smooth's positions (read back exactly: OBJ holds shortest round-trip
+    decimals)."""
+    recipe = tmp_path / "recipe.json"
+    recipe.write_text(recipe_text)
+    out = tmp_path / name
+    subprocess.run([CLI, "smooth", str(mesh_path), "-o", str(out), "--recipe", str(recipe),
+                    "-q"], check=True)
+    return meshfair.read(str(out))[0]
+
+
+def noisy_bunny(tmp_path):
+    path = tmp_path / "noisy.obj"
+    subprocess.run([CLI, "noise", BUNNY, "-o", str(path), "--sigma", "0.3", "--seed", "1"],
+                   check=True, stdout=subprocess.DEVNULL)
+    return path
+
+
+def quad_grid(n=12):
+    """An open n x n grid of quads with a bump: (V, F) with F an (m, 4) array."""
+    ij = np.array([(i, j) for j in range(n + 1) for i in range(n + 1)], dtype=float)
+    z = 0.3 * np.exp(-((ij[:, 0] - n / 2) ** 2 + (ij[:, 1] - n / 2) ** 2) / 8)
+    V = np.column_stack([ij, z])
+    F = np.array([(j * (n + 1) + i, j * (n + 1) + i + 1, (j + 1) * (n + 1) + i + 1,
+                   (j + 1) * (n + 1) + i) for j in range(n) for i in range(n)])
+    return V, F
+
+
+def test_smooth_gives_the_cli_positions_bit_for_bit(tmp_path):
+    path = noisy_bunny(tmp_path)
+    V, F = meshfair.read(str(path))
+    text = open(DENOISE).read()
+    expected = cli_smooth(tmp_path, path, text)
+    # The recipe as JSON text and as the dict json.loads gives.
+    assert np.array_equal(meshfair.smooth(V, F, text), expected)
+    assert np.array_equal(meshfair.smooth(V, F, json.loads(text)), expected)
+    assert not np.array_equal(expected, V)
+
+
+def test_polygon_faces_as_offsets_and_indices(tmp_path):
+    # A quad grid with one quad split in two triangles: mixed sizes come back as
+    # (offsets, indices) and smooth as the CLI smooths the same file.
+    V, F = quad_grid()
+    faces = [list(f) for f in F[1:]] + [[F[0][0], F[0][1], F[0][2]], [F[0][0], F[0][2], F[0][3]]]
+    offsets = np.cumsum([0] + [len(f) for f in faces])
+    indices = np.concatenate(faces)
+    path = tmp_path / "mixed.off"
+    meshfair.write(str(path), V, (offsets, indices))
+    V2, F2 = meshfair.read(str(path))
+    assert isinstance(F2, tuple)
+    assert np.array_equal(F2[0], offsets) and np.array_equal(F2[1], indices)
+    assert np.array_equal(V2, V)
+    recipe = {"iterations": 30, "soft": {"vertices": [0, 12], "mu": 2.0}}
+    expected = cli_smooth(tmp_path, path, json.dumps(recipe))
+    assert np.array_equal(meshfair.smooth(V2, F2, recipe), expected)
+
+
+def test_uniform_faces_read_as_one_array_and_round_trip_in_every_format(tmp_path):
+    V, F = quad_grid(5)
+    for ext in ("obj", "off", "ply"):
+        path = tmp_path / ("grid." + ext)
+        meshfair.write(str(path), V, F)
+        V2, F2 = meshfair.read(str(path))
+        assert F2.shape == F.shape and np.array_equal(F2, F), ext
+        assert np.array_equal(V2, V), ext
+
+
+def test_arrays_as_trimesh_gives_them(tmp_path):
+    # trimesh hands float64 (n, 3) vertices and int64 (m, 3) faces; float32 and int32
+    # arrays, and non-contiguous ones, are converted.
+    V, F = meshfair.read(BUNNY)
+    expected = meshfair.smooth(V, F, {"iterations": 4})
+    assert np.array_equal(meshfair.smooth(V, F.astype(np.int32), {"iterations": 4}), expected)
+    assert np.array_equal(meshfair.smooth(np.asfortranarray(V), F, {"iterations": 4}), expected)
+    assert meshfair.smooth(V.astype(np.float32), F, {"iterations": 4}).dtype == np.float64
+
+
+def test_session_steps_give_smooth_positions(tmp_path):
+    V, F = meshfair.read(BUNNY)
+    recipe = {"iterations": 7, "hard": {"vertices": [0, 100]}, "centroid": {"faces": "all"}}
+    s = meshfair.Session(V, F, recipe)
+    before = s.energy()
+    assert set(before) == {"edge", "soft", "centroid", "normal", "normal_smoothing",
+                           "normal_soft", "total"}
+    assert np.array_equal(s.positions, V)
+    s.step(3)
+    s.step()
+    s.step(3)
+    assert np.array_equal(s.positions, meshfair.smooth(V, F, recipe))
+    assert s.energy()["total"] < before["total"]
+
+
+def test_session_hard_targets_move_the_pins():
+    V, F = meshfair.read(BUNNY)
+    s = meshfair.Session(V, F, {"hard": {"vertices": [0, 100]}})
+    targets = V[[0, 100]] + [0.0, 0.0, 0.05]
+    s.set_hard_targets(targets)
+    assert np.array_equal(s.positions[[0, 100]], targets)
+    s.step(5)
+    assert np.array_equal(s.positions[[0, 100]], targets)
+    with pytest.raises(ValueError, match="expected 6 values"):
+        s.set_hard_targets(V[:3])
+    with pytest.raises(ValueError, match="finite"):
+        s.set_hard_targets(np.full((2, 3), np.nan))
+
+
+def test_errors_are_python_exceptions_with_the_core_messages(tmp_path):
+    V, F = meshfair.read(BUNNY)
+    with pytest.raises(ValueError, match=r"soft\.vertices\[1\]: vertex 99999 is out of range"):
+        meshfair.smooth(V, F, {"soft": {"vertices": [1, 99999]}})
+    with pytest.raises(ValueError, match="unknown key"):
+        meshfair.smooth(V, F, '{"iterationz": 3}')
+    with pytest.raises(ValueError, match="index 5 is 34835, not a vertex of V"):
+        bad = F.copy()
+        bad[1, 2] = len(V)
+        meshfair.smooth(V, bad)
+    with pytest.raises(ValueError, match="must be an \\(n, 3\\) array"):
+        meshfair.smooth(V[:, :2], F)
+    with pytest.raises(ValueError, match="non-finite|finite"):
+        W = V.copy()
+        W[7, 1] = np.inf
+        meshfair.smooth(W, F)
+    bad_file = tmp_path / "bad.obj"
+    bad_file.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n")
+    with pytest.raises(ValueError, match=r"bad\.obj:4:7: vertex index 4 is past the last"):
+        meshfair.read(str(bad_file))
+    # A write that cannot happen raises OSError (a missing directory) or ValueError (an
+    # unknown format), and an existing file stays whole.
+    with pytest.raises(OSError, match="missing"):
+        meshfair.write(str(tmp_path / "missing" / "out.obj"), V, F)
+    target = tmp_path / "kept.xyz"
+    target.write_text("the old file\n")
+    with pytest.raises(ValueError, match="unknown mesh format"):
+        meshfair.write(str(target), V, F)
+    assert target.read_text() == "the old file\n"
