@@ -428,10 +428,12 @@ TEST_SUITE("ReadPly")
 
     TEST_CASE("an unsigned strip list restarts at its type's largest value")
     {
-        for (const auto& [item, restart] : {std::pair<std::string, double>{"uchar", 255},
-                                            {"ushort", 65535},
-                                            {"uint", 4294967295.0}})
+        for (const auto& type : {std::pair<std::string, double>{"uchar", 255},
+                                 {"ushort", 65535},
+                                 {"uint", 4294967295.0}})
         {
+            const std::string& item = type.first;
+            const double restart = type.second;
             CAPTURE(item);
             const std::string decl = vertex_decl(4) + "element tristrips 1\nproperty list int " +
                                      item + " vertex_indices\n";
