@@ -227,16 +227,24 @@ PYBIND11_MODULE(meshfair, m)
         "solver) on NumPy arrays.";
     register_errors(m);
 
+    // What a reader skipped or changed (the notes meshfair-cli prints) reaches Python as
+    // warnings of this category, never silently.
+    static const py::object read_note =
+        py::exception<void>(m, "ReadNote", PyExc_UserWarning); // a class, raised by warn()
     m.def(
         "read",
         [](const std::string& path) {
-            const Mesh mesh = io::read_mesh(path);
+            io::ReadReport report;
+            const Mesh mesh = io::read_mesh(path, &report);
+            const py::object warn = py::module_::import("warnings").attr("warn");
+            for (const std::string& note : report.notes)
+                warn("'" + path + "': " + note, read_note, 2);
             return py::make_tuple(positions_of(mesh.positions), faces_of(mesh));
         },
         py::arg("path"),
         "Reads an OBJ, OFF, PLY or STL file (by its extension): (V, F), V an (n, 3) float64 "
         "array, F an (m, k) int64 array when every face has k corners, else a pair (offsets, "
-        "indices).");
+        "indices). What the reader skipped or changed is warned of as meshfair.ReadNote.");
     m.def(
         "write",
         [](const std::string& path, const Positions& vertices, const py::object& faces) {

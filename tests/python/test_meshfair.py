@@ -8,6 +8,7 @@
 import json
 import os
 import subprocess
+import warnings
 
 import numpy as np
 import pytest
@@ -155,3 +156,16 @@ def test_errors_are_python_exceptions_with_the_core_messages(tmp_path):
     with pytest.raises(ValueError, match="unknown mesh format"):
         meshfair.write(str(target), V, F)
     assert target.read_text() == "the old file\n"
+
+
+def test_what_a_reader_skips_is_warned_of(tmp_path):
+    # The notes meshfair-cli prints reach Python as meshfair.ReadNote warnings.
+    path = tmp_path / "textured.obj"
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n")
+    with pytest.warns(meshfair.ReadNote, match=r"textured\.obj': ignored"):
+        V, F = meshfair.read(str(path))
+    assert F.shape == (1, 3)
+    assert issubclass(meshfair.ReadNote, UserWarning)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # a file without notes warns of nothing
+        meshfair.read(BUNNY)
