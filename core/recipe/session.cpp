@@ -551,19 +551,12 @@ bool Session::fused() const
            !recipe_.optimal_step && !joint_;
 }
 
-Session::FacePass Session::centroid_pass() const
+Session::FacePass Session::face_pass(const std::vector<Index>& active, const IndexList& listed)
 {
     // faces nullptr: every face, in order (IndexList keeps no list of them).
-    if (centroid_active_.empty())
-        return {centroid_->faces().data(), static_cast<Index>(centroid_->faces().size())};
-    return {centroid_active_.data(), static_cast<Index>(centroid_active_.size())};
-}
-
-Session::FacePass Session::normal_pass() const
-{
-    if (normal_active_.empty())
-        return {normal_->faces().data(), static_cast<Index>(normal_->faces().size())};
-    return {normal_active_.data(), static_cast<Index>(normal_active_.size())};
+    if (active.empty())
+        return {listed.data(), static_cast<Index>(listed.size())};
+    return {active.data(), static_cast<Index>(active.size())};
 }
 
 template <bool Soft, bool Centroid, bool Normal, bool Energy>
@@ -590,10 +583,7 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
                 part.normal = normal_->energy_of_sum(normal_sum);
                 return part;
             };
-            if constexpr (Energy)
-                energy = deterministic_block_sums<TermEnergies>(faces.count, both);
-            else
-                parallel_ranges(faces.count, both);
+            energy = block_sums_if<Energy, TermEnergies>(faces.count, both);
         }
     if constexpr (Centroid)
         if (!(Normal && shared_face_pass_))
@@ -602,10 +592,7 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
             const auto residuals = [&](Index begin, Index end) {
                 return centroid_->face_residuals(x, faces.faces, begin, end, share);
             };
-            if constexpr (Energy)
-                energy.centroid = deterministic_block_sums<Scalar>(faces.count, residuals);
-            else
-                parallel_ranges(faces.count, residuals);
+            energy.centroid = block_sums_if<Energy, Scalar>(faces.count, residuals);
         }
     if constexpr (Normal)
         if (normal_shares_ && !(Centroid && shared_face_pass_))
@@ -618,10 +605,7 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
                 return normal_->face_shares<Energy>(x, normals, faces.faces, begin, end, share,
                                                     add_all, add);
             };
-            if constexpr (Energy)
-                energy.normal = deterministic_block_sums<Scalar>(faces.count, shares);
-            else
-                parallel_ranges(faces.count, shares);
+            energy.normal = block_sums_if<Energy, Scalar>(faces.count, shares);
         }
     // The soft and centroid terms weigh their elements through per-vertex weights and
     // per-face residuals; only the normal term's sweep differs with weights.
@@ -631,10 +615,7 @@ TermEnergies Session::fused_sweep(const Scalar* x, Scalar* y, Scalar step)
     // Energy: the ranges are deterministic_block_sums' blocks, so that the sums are the
     // same for any thread count; otherwise one range per thread.
     const auto sweep = [&](auto range) {
-        if constexpr (Energy)
-            energy += deterministic_block_sums<TermEnergies>(count, range);
-        else
-            parallel_ranges(count, range);
+        energy += block_sums_if<Energy, TermEnergies>(count, range);
     };
     if (weighted && all_free)
         sweep([=, this](Index begin, Index end) {

@@ -192,10 +192,13 @@ private:
         const Index* faces = nullptr;
         Index count = 0;
     };
+    //! A term's faces with a free vertex: `active`, or when that is empty the term's own
+    //! `listed` faces (precompute leaves it empty when they are the same list).
+    static FacePass face_pass(const std::vector<Index>& active, const IndexList& listed);
     //! The centroid term's faces with a free vertex (its residual pass).
-    FacePass centroid_pass() const;
-    //! The normal term's faces with a free vertex (its sigma pass).
-    FacePass normal_pass() const;
+    FacePass centroid_pass() const { return face_pass(centroid_active_, centroid_->faces()); }
+    //! The normal term's faces with a free vertex (its share pass).
+    FacePass normal_pass() const { return face_pass(normal_active_, normal_->faces()); }
     //! \brief The fused step: one sweep over the free vertices in which each vertex adds
     //! every term's part of r_i (the terms' add_vertex_rhs, in the order general_step adds them),
     //! solves its 3x3 or scalar system and writes y_i = x_i + step dx_i. The same operations as

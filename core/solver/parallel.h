@@ -113,6 +113,21 @@ Sums deterministic_block_sums(Index n, F&& f)
 
 //! \brief The sum of f(k) over [0, n), bit for bit the same for any thread count: each
 //! block of deterministic_block_sums is summed in order, then the block sums in order.
+//! \brief deterministic_block_sums<Sums>(n, f) when Sum; else parallel_ranges(n, f), one
+//! range per thread, f's results dropped and Sums{} returned: a pass that sums only on
+//! the steps that ask for its sums (the fused step's energy).
+template <bool Sum, class Sums, class F>
+Sums block_sums_if(Index n, F&& f)
+{
+    if constexpr (Sum)
+        return deterministic_block_sums<Sums>(n, f);
+    else
+    {
+        parallel_ranges(n, f);
+        return Sums{};
+    }
+}
+
 template <class F>
 Scalar deterministic_sum(Index n, F&& f)
 {
