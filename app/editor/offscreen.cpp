@@ -84,12 +84,16 @@ void render_screenshot(const ScreenshotRequest& request)
         beside = load_document(request.beside_path);
 
     OsmesaContext context(request.width, request.height);
+    // Each session drawn offscreen: the request's display options and the renderer's name.
+    const auto offscreen = [&](EditorSession& s) {
+        EditorState& state = s.state();
+        state.display = request.display;
+        state.renderer_name = context.renderer_name();
+        state.offscreen = true;
+    };
     GlRenderer renderer;
     EditorSession session(std::move(document), renderer);
-    EditorState& state = session.state();
-    state.display = request.display;
-    state.renderer_name = context.renderer_name();
-    state.offscreen = true;
+    offscreen(session);
     OffscreenHost host(session, request.width, request.height, request.ui);
     host.run_frame();
     if (camera)
@@ -105,9 +109,7 @@ void render_screenshot(const ScreenshotRequest& request)
         const Image left = host.frame();
         GlRenderer beside_renderer;
         EditorSession beside_session(std::move(*beside), beside_renderer);
-        beside_session.state().display = request.display;
-        beside_session.state().renderer_name = context.renderer_name();
-        beside_session.state().offscreen = true;
+        offscreen(beside_session);
         OffscreenHost beside_host(beside_session, request.width, request.height, false);
         beside_host.run_frame();
         beside_session.camera() = session.camera();
