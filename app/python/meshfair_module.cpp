@@ -229,16 +229,17 @@ PYBIND11_MODULE(meshfair, m)
 
     // What a reader skipped or changed (the notes meshfair-cli prints) reaches Python as
     // warnings of this category, never silently.
-    static const py::object read_note =
-        py::exception<void>(m, "ReadNote", PyExc_UserWarning); // a class, raised by warn()
+    m.attr("ReadNote") = py::reinterpret_steal<py::object>(
+        PyErr_NewException("meshfair.ReadNote", PyExc_UserWarning, nullptr));
     m.def(
         "read",
         [](const std::string& path) {
             io::ReadReport report;
             const Mesh mesh = io::read_mesh(path, &report);
             const py::object warn = py::module_::import("warnings").attr("warn");
+            const py::object category = py::module_::import("meshfair").attr("ReadNote");
             for (const std::string& note : report.notes)
-                warn("'" + path + "': " + note, read_note, 2);
+                warn("'" + path + "': " + note, category, 2);
             return py::make_tuple(positions_of(mesh.positions), faces_of(mesh));
         },
         py::arg("path"),

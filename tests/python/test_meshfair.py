@@ -8,6 +8,8 @@
 import json
 import os
 import subprocess
+import threading
+import time
 import warnings
 
 import numpy as np
@@ -169,3 +171,32 @@ def test_what_a_reader_skips_is_warned_of(tmp_path):
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a file without notes warns of nothing
         meshfair.read(BUNNY)
+
+
+def test_a_long_smooth_lets_other_python_threads_run():
+    # docs/python.md: smooth releases the GIL. This thread notes the time at every turn of
+    # a loop while another thread smooths the bunny; were the GIL held during the smooth,
+    # the loop would stop for all of it (its longest pause would be the smooth's time).
+    V, F = meshfair.read(BUNNY)
+    done = threading.Event()
+    took = {}
+
+    def work():
+        start = time.perf_counter()
+        meshfair.smooth(V, F, {"iterations": 3000})
+        took["smooth"] = time.perf_counter() - start
+        done.set()
+
+    worker = threading.Thread(target=work)
+    last, longest_pause = time.perf_counter(), 0.0  # before start(), which waits for the GIL
+    worker.start()
+    while True:
+        stop = done.is_set()  # before the time: a pause that ends the loop counts too
+        now = time.perf_counter()
+        longest_pause = max(longest_pause, now - last)
+        last = now
+        if stop:
+            break
+    worker.join()
+    assert took["smooth"] > 0.1
+    assert longest_pause < took["smooth"] / 4
