@@ -41,11 +41,10 @@ FaceNormalTerm::FaceNormalTerm(const Mesh& mesh, const Topology& topology, std::
 
 Scalar FaceNormalTerm::energy(std::span<const Scalar> x, std::span<const Scalar> normals) const
 {
-    const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index n) {
-        const Index f = faces_[n];
-        const Scalar s = pair_sum(&normals[3 * f], x.data(), mesh_->face(f));
-        return face_weight_.empty() ? s : face_weight_[f] * s;
-    });
+    const Scalar sum = deterministic_block_sums<Scalar>(
+        static_cast<Index>(faces_.size()), [&](Index begin, Index end) {
+            return pair_sums(x.data(), normals.data(), faces_.data(), begin, end);
+        });
     // One weight: mu times the sum, the arithmetic of the paper's single mu.
     return energy_of_sum(sum);
 }
@@ -100,17 +99,23 @@ template Scalar FaceNormalTerm::face_shares<false>(const Scalar*, const Scalar*,
 template Scalar FaceNormalTerm::face_shares<true>(const Scalar*, const Scalar*, const Index*, Index,
                                                   Index, Scalar*, bool, const char*) const;
 
-Scalar FaceNormalTerm::face_energies(const Scalar* x, const Scalar* normals, const Index* faces,
-                                     Index begin, Index end) const
+Scalar FaceNormalTerm::pair_sums(const Scalar* x, const Scalar* normals, const Index* faces,
+                                 Index begin, Index end) const
 {
-    Scalar energy = 0;
+    Scalar sum = 0;
     for (Index k = begin; k < end; ++k)
     {
         const Index f = faces != nullptr ? faces[k] : k;
         const Scalar s = pair_sum(&normals[3 * static_cast<std::ptrdiff_t>(f)], x, mesh_->face(f));
-        energy += face_weight_.empty() ? s : face_weight_[f] * s;
+        sum += face_weight_.empty() ? s : face_weight_[f] * s;
     }
-    return energy_of_sum(energy);
+    return sum;
+}
+
+Scalar FaceNormalTerm::face_energies(const Scalar* x, const Scalar* normals, const Index* faces,
+                                     Index begin, Index end) const
+{
+    return energy_of_sum(pair_sums(x, normals, faces, begin, end));
 }
 
 void FaceNormalTerm::edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const

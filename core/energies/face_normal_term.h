@@ -189,6 +189,11 @@ public:
     void edge_scatter(std::span<const Scalar> x, Index f, Scalar* M) const;
 
 private:
+    //! The sum over faces[begin .. end) (faces nullptr: the k-th face is k) of each face's
+    //! pair_sum, times mu_f with weights: energy() and face_energies() before
+    //! energy_of_sum.
+    Scalar pair_sums(const Scalar* x, const Scalar* normals, const Index* faces, Index begin,
+                     Index end) const;
     //! The sum over a face's pairs (x_k, x_k+1) of (u^T (x_k+1 - x_k))^2, in energy()'s order.
     template <typename Face>
     static Scalar pair_sum(const Scalar* u, const Scalar* x, const Face& face)
