@@ -53,9 +53,10 @@ double seconds_since(Clock::time_point start)
 //! Output encoding: what the user asked, else the input's own encoding when the format
 //! stays the same (so binary STL stays binary and ASCII stays exact), else binary.
 io::WriteOptions output_options(const std::string& requested, io::Format out_format,
-                                const io::ReadReport& input)
+                                const io::ReadReport& input, bool keep_normals)
 {
     io::WriteOptions options;
+    options.normals = keep_normals ? io::Normals::Keep : io::Normals::Recompute;
     if (requested == "ascii")
         options.encoding = io::Encoding::Ascii;
     else if (requested == "binary")
@@ -67,21 +68,23 @@ io::WriteOptions output_options(const std::string& requested, io::Format out_for
     return options;
 }
 
-//! Writes the mesh; says on stderr what the target format cannot hold (STL keeps no
-//! isolated vertices), so nothing is lost silently.
-void write_output(const Mesh& mesh, const std::string& path, io::Format format,
-                  const io::WriteOptions& options)
+//! Writes the mesh with its attributes and returns the writer's notes: what the target
+//! format cannot hold, so nothing is lost silently.
+std::vector<std::string> write_output(const Mesh& mesh, const io::MeshAttributes& attributes,
+                                      const std::string& path, io::Format format,
+                                      const io::WriteOptions& options)
 {
-    io::write_file_atomically(path, io::write_mesh_data(mesh, format, options));
-    if (format != io::Format::Stl)
-        return;
-    std::vector<char> in_a_face(static_cast<size_t>(mesh.vertex_count()), 0);
-    for (const Index v : mesh.face_vertices)
-        in_a_face[v] = 1;
-    const auto isolated = std::count(in_a_face.begin(), in_a_face.end(), 0);
-    if (isolated > 0)
-        std::cerr << "meshfair-cli: note: STL cannot store vertices without faces; " << isolated
-                  << " of them are not in '" << path << "'\n";
+    std::vector<std::string> notes;
+    io::write_file_atomically(path,
+                              io::write_mesh_data(mesh, format, options, &attributes, &notes));
+    return notes;
+}
+
+//! The writer's notes on stderr, naming the file.
+void print_output_notes(const std::vector<std::string>& notes, const std::string& path)
+{
+    for (const std::string& note : notes)
+        std::cerr << "meshfair-cli: note: '" << path << "': " << note << "\n";
 }
 
 void write_text_atomically(const std::string& path, const std::string& text)
@@ -106,9 +109,10 @@ struct InfoOptions
 int run_info(const InfoOptions& o)
 {
     io::ReadReport read_report;
-    const Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    io::MeshAttributes attributes;
+    const Mesh mesh = io::read_mesh(o.mesh, &read_report, &attributes);
     const Topology topology = build_topology(mesh);
-    const nlohmann::json j = cli::info_json(mesh, topology, read_report);
+    const nlohmann::json j = cli::info_json(mesh, topology, read_report, attributes);
     if (o.json)
         std::cout << j.dump(2) << "\n";
     else
@@ -125,6 +129,7 @@ struct SmoothOptions
     std::optional<std::string> method;
     int threads = 0;
     bool quiet = false;
+    bool keep_normals = false;
 };
 
 //! Reads `mesh_path`, smooths it with `recipe` (checked first, in the file's numbering;
@@ -133,12 +138,13 @@ struct SmoothOptions
 //! check and the writer throw.
 nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_path,
                           const Recipe& recipe, const std::string& recipe_name,
-                          const std::string& encoding)
+                          const std::string& encoding, bool keep_normals)
 {
     const io::Format out_format = io::format_from_path(out_path); // refuse before working
     const auto t_read = Clock::now();
     io::ReadReport read_report;
-    Mesh mesh = io::read_mesh(mesh_path, &read_report);
+    io::MeshAttributes attributes; // in the file's numbering, as the output is written
+    Mesh mesh = io::read_mesh(mesh_path, &read_report, &attributes);
     const double read_seconds = seconds_since(t_read);
 
     const auto t_setup = Clock::now();
@@ -180,8 +186,12 @@ nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_p
     solve_seconds += seconds_since(t_back);
 
     const auto t_write = Clock::now();
-    write_output(mesh, out_path, out_format, output_options(encoding, out_format, read_report));
+    const std::vector<std::string> output_notes =
+        write_output(mesh, attributes, out_path, out_format,
+                     output_options(encoding, out_format, read_report, keep_normals));
     const double write_seconds = seconds_since(t_write);
+    report["attributes"] = io::describe_attributes(attributes);
+    report["output_notes"] = output_notes;
 
     report["seconds"] = {{"read", read_seconds},
                          {"setup", setup_seconds},
@@ -219,7 +229,9 @@ int run_smooth(const SmoothOptions& o)
     if (o.method)
         recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
 
-    const nlohmann::json report = smooth_one(o.mesh, o.out, recipe, o.recipe, o.encoding);
+    const nlohmann::json report =
+        smooth_one(o.mesh, o.out, recipe, o.recipe, o.encoding, o.keep_normals);
+    print_output_notes(report["output_notes"].get<std::vector<std::string>>(), o.out);
     if (!o.report.empty())
         write_text_atomically(o.report, report.dump(2) + "\n");
     if (!o.quiet && o.report != "-")
@@ -232,6 +244,7 @@ struct BatchOptions
     std::vector<std::string> meshes;
     std::string recipe, out_dir, encoding, format;
     int jobs = 0;
+    bool keep_normals = false;
 };
 
 //! Outcome of one file of a batch, in increasing severity (the exit code is the worst).
@@ -302,8 +315,8 @@ int run_batch(const BatchOptions& o)
         BatchStatus status = BatchStatus::Ok;
         try
         {
-            line["report"] =
-                smooth_one(mesh, outputs[static_cast<size_t>(k)], recipe, o.recipe, o.encoding);
+            line["report"] = smooth_one(mesh, outputs[static_cast<size_t>(k)], recipe, o.recipe,
+                                        o.encoding, o.keep_normals);
             line["output"] = outputs[static_cast<size_t>(k)];
         }
         catch (const InvalidInputError& e)
@@ -347,14 +360,19 @@ int run_batch(const BatchOptions& o)
 struct ConvertOptions
 {
     std::string mesh, out, encoding;
+    bool keep_normals = false;
 };
 
 int run_convert(const ConvertOptions& o)
 {
     io::ReadReport read_report;
-    const Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    io::MeshAttributes attributes;
+    const Mesh mesh = io::read_mesh(o.mesh, &read_report, &attributes);
     const io::Format out_format = io::format_from_path(o.out);
-    write_output(mesh, o.out, out_format, output_options(o.encoding, out_format, read_report));
+    print_output_notes(
+        write_output(mesh, attributes, o.out, out_format,
+                     output_options(o.encoding, out_format, read_report, o.keep_normals)),
+        o.out);
     return 0;
 }
 
@@ -363,12 +381,14 @@ struct NoiseOptions
     std::string mesh, out, encoding;
     double sigma = 0;
     std::uint64_t seed = 1;
+    bool keep_normals = false;
 };
 
 int run_noise(const NoiseOptions& o)
 {
     io::ReadReport read_report;
-    Mesh mesh = io::read_mesh(o.mesh, &read_report);
+    io::MeshAttributes attributes;
+    Mesh mesh = io::read_mesh(o.mesh, &read_report, &attributes);
     const io::Format out_format = io::format_from_path(o.out);
     const Topology topology = build_topology(mesh);
     const Scalar unit = mean_edge_length(topology, mesh.positions);
@@ -377,7 +397,10 @@ int run_noise(const NoiseOptions& o)
                                 "': noise needs edges (sigma is in units of the mean edge "
                                 "length) and this mesh has none of positive length");
     add_gaussian_noise(mesh, o.sigma * unit, o.seed);
-    write_output(mesh, o.out, out_format, output_options(o.encoding, out_format, read_report));
+    print_output_notes(
+        write_output(mesh, attributes, o.out, out_format,
+                     output_options(o.encoding, out_format, read_report, o.keep_normals)),
+        o.out);
     return 0;
 }
 
@@ -414,6 +437,9 @@ int main(int argc, char** argv)
         "default: the input's encoding when the format is unchanged, else binary. "
         "STL output fan-triangulates polygons (the only place MeshFair splits them) and its "
         "binary form stores float32; every other output round-trips doubles exactly";
+    const std::string keep_normals_help =
+        "Write the normals the input holds as they are (with a note), instead of recomputing "
+        "them from the positions written";
     SmoothOptions smooth;
     auto* smooth_cmd = app.add_subcommand("smooth", "Smooth a mesh with a recipe");
     smooth_cmd->add_option("MESH", smooth.mesh, "Input mesh")->required();
@@ -434,6 +460,7 @@ int main(int argc, char** argv)
     smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
     smooth_cmd->add_flag("-q,--quiet", smooth.quiet, "Print nothing on success");
+    smooth_cmd->add_flag("--keep-normals", smooth.keep_normals, keep_normals_help);
     smooth_cmd
         ->add_option("--threads", smooth.threads,
                      "Threads of the solver (default: every core); any count gives the same "
@@ -448,6 +475,7 @@ int main(int argc, char** argv)
         ->required();
     convert_cmd->add_option("--encoding", convert.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+    convert_cmd->add_flag("--keep-normals", convert.keep_normals, keep_normals_help);
 
     NoiseOptions noise;
     auto* noise_cmd = app.add_subcommand("noise", "Add Gaussian noise to every vertex");
@@ -459,6 +487,7 @@ int main(int argc, char** argv)
     noise_cmd->add_option("--seed", noise.seed, "Random seed (same seed, same noise)");
     noise_cmd->add_option("--encoding", noise.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
+    noise_cmd->add_flag("--keep-normals", noise.keep_normals, keep_normals_help);
 
     BatchOptions batch;
     auto* batch_cmd = app.add_subcommand(
@@ -476,6 +505,7 @@ int main(int argc, char** argv)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));
     batch_cmd->add_option("--jobs", batch.jobs, "Files smoothed at once (default: every core)")
         ->check(CLI::Range(1, 1024));
+    batch_cmd->add_flag("--keep-normals", batch.keep_normals, keep_normals_help);
 
     try
     {

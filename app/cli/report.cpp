@@ -34,7 +34,8 @@ std::string format_number(double v)
 
 } // namespace
 
-Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport& read_report)
+Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport& read_report,
+               const io::MeshAttributes& attributes)
 {
     Json j = counts(mesh, topology);
     const TopologySummary summary = summarize(topology);
@@ -53,6 +54,7 @@ Json info_json(const Mesh& mesh, const Topology& topology, const io::ReadReport&
     j["bounding_box"] = box.empty ? Json(nullptr) : Json{{"min", box.min}, {"max", box.max}};
     j["format"] = std::string(io::format_name(read_report.format));
     j["encoding"] = std::string(io::encoding_name(read_report.encoding));
+    j["attributes"] = io::describe_attributes(attributes);
     j["notes"] = read_report.notes;
     char hash[17];
     std::snprintf(hash, sizeof hash, "%016llx",
@@ -93,6 +95,8 @@ std::string info_text(const Json& j)
         line("bounding_box", box);
     }
     line("content_hash", j["content_hash"].get<std::string>());
+    for (const auto& attribute : j["attributes"])
+        line("attribute", attribute.get<std::string>());
     for (const auto& note : j["notes"])
         line("note", note.get<std::string>());
     return s;

@@ -13,9 +13,9 @@
 namespace meshfair::cli {
 
 //! `info`: counts, edge classes, face-size histogram, components, isolated vertices,
-//! bounding box, and what the reader normalized.
+//! bounding box, the attributes the file holds, and what the reader normalized.
 nlohmann::json info_json(const Mesh& mesh, const Topology& topology,
-                         const io::ReadReport& read_report);
+                         const io::ReadReport& read_report, const io::MeshAttributes& attributes);
 //! The same as aligned text lines.
 std::string info_text(const nlohmann::json& info);
 

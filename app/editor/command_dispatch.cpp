@@ -286,9 +286,12 @@ bool CommandExecutor::operator()(const cmd::OpenMesh& c) const
 bool CommandExecutor::operator()(const cmd::SaveMesh& c) const
 {
     const std::string path = c.path.empty() ? d.path : c.path;
-    save_document(d, path);
+    const std::vector<std::string> notes = save_document(d, path);
     s.remember(path);
-    say("saved " + path);
+    std::string message = "saved " + path;
+    for (const std::string& note : notes) // what the format could not hold, never silent
+        message += "; " + note;
+    say(message);
     return true;
 }
 

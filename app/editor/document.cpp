@@ -7,11 +7,13 @@ namespace meshfair::app {
 Document load_document(const std::string& path)
 {
     io::ReadReport report;
-    Mesh mesh = io::read_mesh(path, &report);
+    io::MeshAttributes attributes;
+    Mesh mesh = io::read_mesh(path, &report, &attributes);
     LocalityOrder order = locality_order(mesh);
     Document d = make_document(reorder_mesh(mesh, order), path);
     d.order = std::move(order);
     d.report = std::move(report);
+    d.attributes = std::move(attributes);
     return d;
 }
 

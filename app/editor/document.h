@@ -52,6 +52,9 @@ struct Document
     //! internal vertex k is file vertex order.vertex_order[k] (identity for make_document)
     LocalityOrder order;
     io::ReadReport report;
+    //! Everything the file holds besides positions and faces (texture coordinates, normals,
+    //! colours, groups, other properties), in the file's numbering: a save writes it back.
+    io::MeshAttributes attributes;
     Topology topology;
     MeshDrawData draw_data;
     Box3 box;

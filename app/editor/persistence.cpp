@@ -12,11 +12,14 @@
 
 namespace meshfair::app {
 
-void save_document(Document& document, const std::string& path)
+std::vector<std::string> save_document(Document& document, const std::string& path)
 {
-    io::write_mesh(file_order_mesh(document), path); // the file's numbering, kept
+    std::vector<std::string> notes;
+    // The file's numbering, kept; the attributes are in it too.
+    io::write_mesh(file_order_mesh(document), path, {}, &document.attributes, &notes);
     document.path = path;
     document.modified = false;
+    return notes;
 }
 
 Recipe current_recipe(const Document& d)

@@ -15,9 +15,11 @@ namespace meshfair::app {
 
 //! \brief Saves the document's mesh in the file's numbering (format from the extension,
 //! atomic: a failure leaves an existing file whole); the document then names that file
-//! and is not modified.
+//! and is not modified. The attributes read with the mesh are written back as
+//! io::write_mesh writes them (normals recomputed from the shape saved); the result is
+//! its notes, naming what the format cannot hold.
 //! \throw WriteError (and InvalidInputError for an unknown extension).
-void save_document(Document& document, const std::string& path);
+std::vector<std::string> save_document(Document& document, const std::string& path);
 
 //! \brief The recipe of the sets and settings with the steps taken from the base shape, in
 //! the document's (locality) numbering: what `meshfair-cli smooth BASE --recipe R.json`

@@ -235,17 +235,26 @@ PYBIND11_MODULE(meshfair, m)
         "read",
         [](const std::string& path) {
             io::ReadReport report;
-            const Mesh mesh = io::read_mesh(path, &report);
+            io::MeshAttributes attributes;
+            const Mesh mesh = io::read_mesh(path, &report, &attributes);
             const py::object warn = py::module_::import("warnings").attr("warn");
             const py::object category = py::module_::import("meshfair").attr("ReadNote");
             for (const std::string& note : report.notes)
                 warn("'" + path + "': " + note, category, 2);
+            // (V, F) holds none of the attributes: say which, so none is lost unnoticed
+            // (meshfair-cli smooth keeps them).
+            for (const std::string& kind : io::describe_attributes(attributes))
+                warn("'" + path + "': not returned (read gives positions and faces only; " +
+                         "meshfair-cli keeps it): " + kind,
+                     category, 2);
             return py::make_tuple(positions_of(mesh.positions), faces_of(mesh));
         },
         py::arg("path"),
         "Reads an OBJ, OFF, PLY or STL file (by its extension): (V, F), V an (n, 3) float64 "
         "array, F an (m, k) int64 array when every face has k corners, else a pair (offsets, "
-        "indices). What the reader skipped or changed is warned of as meshfair.ReadNote.");
+        "indices). What the reader skipped or changed, and every attribute of the file (texture "
+        "coordinates, normals, colours, ...) that (V, F) cannot hold, is warned of as "
+        "meshfair.ReadNote.");
     m.def(
         "write",
         [](const std::string& path, const Positions& vertices, const py::object& faces) {

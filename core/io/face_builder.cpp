@@ -6,17 +6,30 @@
 
 namespace meshfair::io {
 
-FaceCheck normalize_face(std::vector<Index>& face)
+FaceCheck normalize_face(std::vector<Index>& face, std::vector<Index>* texcoords,
+                         std::vector<Index>* normals)
 {
     FaceCheck check;
+    std::vector<Index>* corners[2] = {texcoords, normals};
+    for (std::vector<Index>*& c : corners)
+        if (c && c->empty())
+            c = nullptr;
     size_t kept = 0;
     for (size_t k = 0; k < face.size(); ++k)
         if (kept == 0 || face[k] != face[kept - 1])
+        {
+            for (std::vector<Index>* c : corners)
+                if (c)
+                    (*c)[kept] = (*c)[k];
             face[kept++] = face[k];
+        }
     while (kept > 1 && face[kept - 1] == face[0])
         --kept;
     check.collapsed = static_cast<int>(face.size() - kept);
     face.resize(kept);
+    for (std::vector<Index>* c : corners)
+        if (c)
+            c->resize(kept);
     if (face.size() < 3)
     {
         check.ok = false;

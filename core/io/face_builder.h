@@ -22,7 +22,10 @@ struct FaceCheck
 //! corners (cyclically, e.g. "5 8 8 1" or "1 2 3 1") is kept once, which exporters
 //! write for degenerate polygons. A face left with fewer than 3 vertices, or one
 //! that repeats a vertex at non-adjacent corners (a pinched polygon), is refused.
-FaceCheck normalize_face(std::vector<Index>& face);
+//! `texcoords` and `normals`, when given and not empty, hold one entry per corner of
+//! `face` and lose the same corners.
+FaceCheck normalize_face(std::vector<Index>& face, std::vector<Index>* texcoords = nullptr,
+                         std::vector<Index>* normals = nullptr);
 
 //! Counts one kind of normalization and remembers where it first happened, so a
 //! reader reports "collapsed 12 repeated indices in 10 faces (first at line 40)"

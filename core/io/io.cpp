@@ -102,10 +102,13 @@ std::string read_file(const std::string& path)
 }
 
 Mesh read_mesh_data(std::string_view data, Format format, const std::string& name,
-                    ReadReport* report)
+                    ReadReport* report, MeshAttributes* attributes)
 {
     ReadReport local;
     ReadReport& r = report ? *report : local;
+    MeshAttributes local_attributes;
+    MeshAttributes& a = attributes ? *attributes : local_attributes;
+    a = MeshAttributes{};
     r = ReadReport{};
     r.format = format;
     // A zero-byte file is what a failed download or an interrupted export leaves; no
@@ -116,16 +119,16 @@ Mesh read_mesh_data(std::string_view data, Format format, const std::string& nam
     switch (format)
     {
         case Format::Obj:
-            mesh = read_obj(data, name, r);
+            mesh = read_obj(data, name, r, a);
             break;
         case Format::Off:
-            mesh = read_off(data, name, r);
+            mesh = read_off(data, name, r, a);
             break;
         case Format::Ply:
-            mesh = read_ply(data, name, r);
+            mesh = read_ply(data, name, r, a);
             break;
         case Format::Stl:
-            mesh = read_stl(data, name, r);
+            mesh = read_stl(data, name, r, a);
             break;
     }
     // Readers validate as they go; this is the invariant every accepted mesh meets.
@@ -138,38 +141,57 @@ Mesh read_mesh_data(std::string_view data, Format format, const std::string& nam
     return mesh;
 }
 
-Mesh read_mesh(const std::string& path, ReadReport* report)
+Mesh read_mesh(const std::string& path, ReadReport* report, MeshAttributes* attributes)
 {
     const Format format = format_from_path(path);
     const std::string data = read_file(path);
-    return read_mesh_data(data, format, path, report);
+    return read_mesh_data(data, format, path, report, attributes);
 }
 
-std::string write_mesh_data(const Mesh& mesh, Format format, const WriteOptions& options)
+std::string write_mesh_data(const Mesh& mesh, Format format, const WriteOptions& options,
+                            const MeshAttributes* attributes, std::vector<std::string>* notes)
 {
+    const MeshAttributes none;
+    const MeshAttributes* a = attributes ? attributes : &none;
+    check_attributes(mesh, *a);
+    std::vector<std::string> local_notes;
+    std::vector<std::string>& n = notes ? *notes : local_notes;
+    // Normals of the positions written, unless asked to keep those read.
+    MeshAttributes recomputed;
+    const bool has_normals = !a->normals.empty() || find_channels(a->vertex).has_normal() ||
+                             find_channels(a->face).has_normal();
+    if (has_normals && options.normals == Normals::Recompute)
+    {
+        recomputed = *a;
+        recompute_normals(mesh, recomputed);
+        a = &recomputed;
+    }
+    else if (has_normals)
+        n.push_back("normals written as read, not recomputed from the positions written");
     std::string out;
     switch (format)
     {
         case Format::Obj:
-            write_obj(mesh, out);
+            write_obj(mesh, *a, out, n);
             break;
         case Format::Off:
-            write_off(mesh, out);
+            write_off(mesh, *a, out, n);
             break;
         case Format::Ply:
-            write_ply(mesh, options.encoding, out);
+            write_ply(mesh, *a, options.encoding, out, n);
             break;
         case Format::Stl:
-            write_stl(mesh, options.encoding, out);
+            write_stl(mesh, *a, options.encoding, out, n);
             break;
     }
     return out;
 }
 
-void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options)
+void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options,
+                const MeshAttributes* attributes, std::vector<std::string>* notes)
 {
     const Format format = format_from_path(path);
-    write_file_atomically(path, write_mesh_data(mesh, format, options));
+    write_file_atomically(path, write_mesh_data(mesh, format, options, attributes, notes));
 }
 
 namespace {

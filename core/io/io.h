@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/io/attributes.h"
 #include "core/mesh/mesh.h"
 
 namespace meshfair::io {
@@ -34,11 +35,19 @@ struct ReadReport
     std::vector<std::string> notes;
 };
 
+//! What a writer does with the normals among the attributes.
+enum class Normals
+{
+    Recompute, //!< from the positions written (recompute_normals): they match the surface
+    Keep       //!< as read, with a note: they describe the surface the file was read with
+};
+
 //! How to write a mesh.
 struct WriteOptions
 {
     //! PLY and STL only: Ascii, or binary (PLY: either byte order; STL: little endian).
     Encoding encoding = Encoding::BinaryLittleEndian;
+    Normals normals = Normals::Recompute;
 };
 
 //! \brief Format named by a path's extension (.obj .off .ply .stl, any case).
@@ -51,25 +60,40 @@ std::string_view encoding_name(Encoding encoding);
 //! \brief Reads a mesh file, choosing the reader from the extension.
 //!
 //! Vertex and face order are those of the file. The result satisfies validate_mesh.
+//! Everything else the file holds (texture coordinates, normals, colours, other
+//! properties and elements, groups and materials) goes to `attributes` when given (see
+//! MeshAttributes); a note in the report names whatever a reader cannot keep.
 //! \throw InvalidInputError when the file cannot be opened or the extension is unknown.
 //! \throw FormatError (an InvalidInputError) naming file and line or byte offset when
 //! the content is malformed.
-Mesh read_mesh(const std::string& path, ReadReport* report = nullptr);
+Mesh read_mesh(const std::string& path, ReadReport* report = nullptr,
+               MeshAttributes* attributes = nullptr);
 
 //! \brief Parses mesh data held in memory; `name` is used in error messages.
 Mesh read_mesh_data(std::string_view data, Format format, const std::string& name,
-                    ReadReport* report = nullptr);
+                    ReadReport* report = nullptr, MeshAttributes* attributes = nullptr);
 
 //! \brief Serializes a mesh. OBJ, OFF, ASCII PLY and ASCII STL write every coordinate
 //! in the shortest decimal form that reads back to the same double; binary PLY writes
 //! doubles. Binary STL stores float32 (its format has no doubles), and STL output
 //! fan-triangulates polygons: the only place MeshFair splits a polygon.
-std::string write_mesh_data(const Mesh& mesh, Format format, const WriteOptions& options = {});
+//!
+//! `attributes` (in the mesh's numbering, as read_mesh gives them) are written wherever
+//! the format can hold them, converted where it holds them differently (docs/formats.md,
+//! "Attributes"); normals as `options.normals` says. Every attribute, and every part of
+//! the mesh, the format cannot hold is named in one note per kind appended to `notes`.
+//! \throw InvalidInputError when the attributes do not fit the mesh (check_attributes).
+std::string write_mesh_data(const Mesh& mesh, Format format, const WriteOptions& options = {},
+                            const MeshAttributes* attributes = nullptr,
+                            std::vector<std::string>* notes = nullptr);
 
-//! \brief Writes a mesh file atomically (see write_file_atomically).
+//! \brief Writes a mesh file atomically (see write_file_atomically), as write_mesh_data
+//! serializes it.
 //! \throw WriteError when the file cannot be written; an existing file is left intact
 //! (unless the message says the new content is in place).
-void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options = {});
+void write_mesh(const Mesh& mesh, const std::string& path, const WriteOptions& options = {},
+                const MeshAttributes* attributes = nullptr,
+                std::vector<std::string>* notes = nullptr);
 
 //! \brief Reads a whole file into memory.
 //! \throw InvalidInputError when it cannot be opened or read.

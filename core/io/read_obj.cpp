@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/attributes.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
 #include "core/solver/parallel.h"
@@ -20,44 +21,58 @@ namespace {
 struct ObjTally
 {
     std::int64_t ignored_lines = 0;   // l, p, curves, surfaces
-    std::int64_t attribute_lines = 0; // vt, vn, vp
-    std::int64_t grouping_lines = 0;  // g, o, s
-    std::int64_t material_lines = 0;  // mtllib, usemtl
-    std::int64_t vertex_extras = 0;   // v lines with w or a colour after x y z
+    std::int64_t parameter_lines = 0; // vp
+    std::int64_t vertex_extras = 0;   // v lines with a w (or values that are not r g b)
     std::string first_vertex_extra;
+    std::int64_t coloured_vertices = 0;     // v lines with r g b after x y z
+    std::int64_t partial_faces[2] = {0, 0}; // faces with vt (vn) at only some corners
+    std::string first_partial[2];
     std::int64_t unknown_lines = 0;
     std::string first_unknown;
     NoteCounter collapsed;
 };
 
-// Resolves one face corner token ("7", "7/1", "7//3", "-2/1/1") against the number of
-// vertices defined so far. Forward references (positive indices past the vertices
-// read so far) are legal in OBJ and checked against the final count by the caller.
-std::int64_t corner_index(const LineReader& reader, std::string_view token,
-                          std::int64_t vertices_so_far)
+// The three index lists a face corner refers to: vertices (v), texture coordinates (vt)
+// and normals (vn).
+enum List
 {
-    const std::string_view vertex_part = token.substr(0, token.find('/'));
-    if (vertex_part.empty())
-        reader.fail_at(token, "face corner '" + std::string(token) + "' has no vertex index");
-    const std::int64_t raw = parse_integer(reader, vertex_part, "vertex index");
+    kVertex,
+    kTexture,
+    kNormal
+};
+constexpr const char* kIndexName[] = {"vertex index", "texture coordinate index", "normal index"};
+constexpr const char* kFirst[] = {"vertex", "texture coordinate (vt)", "normal (vn)"};
+constexpr const char* kDefined[] = {"vertices", "texture coordinates", "normals"};
+
+// Resolves one index of a face corner ("7" of "7/1/3", or "-2") against the number of
+// entries of its list defined so far. Forward references (positive indices past the
+// entries read so far) are legal in OBJ and checked against the final count by the
+// caller.
+std::int64_t corner_index(const LineReader& reader, std::string_view part, List list,
+                          std::int64_t so_far)
+{
+    const std::string what = kIndexName[list];
+    const std::int64_t raw = parse_integer(reader, part, what);
     if (raw == 0)
-        reader.fail_at(token, "vertex index 0 (OBJ indices start at 1, or count back from -1)");
+        reader.fail_at(part, what + " 0 (OBJ indices start at 1, or count back from -1)");
     if (raw < 0)
     {
-        const std::int64_t resolved = vertices_so_far + raw;
+        const std::int64_t resolved = so_far + raw;
         if (resolved < 0)
-            reader.fail_at(token, "vertex index " + std::to_string(raw) +
-                                      " reaches before the first vertex (" +
-                                      std::to_string(vertices_so_far) +
-                                      " vertices are defined before this line)");
+            reader.fail_at(part, what + " " + std::to_string(raw) + " reaches before the first " +
+                                     kFirst[list] + " (" + std::to_string(so_far) + " " +
+                                     kDefined[list] + " are defined before this line)");
         return resolved;
     }
     if (raw > kMaxElements)
-        reader.fail_at(token, "vertex index " + std::to_string(raw) + " is out of range");
+        reader.fail_at(part, what + " " + std::to_string(raw) + " is out of range");
     return raw - 1;
 }
 
-void read_vertex(const LineReader& reader, Tokenizer& tokens, Mesh& mesh, ObjTally& tally)
+// Reads "v x y z [r g b]": the colour, when there, goes to `colours` (three values a
+// vertex, zeros for a vertex without one). A w, or any other count of values, is noted.
+void read_vertex(const LineReader& reader, Tokenizer& tokens, Mesh& mesh,
+                 std::vector<double>& colours, ObjTally& tally)
 {
     if (mesh.positions.size() / 3 >= static_cast<size_t>(kMaxVertices))
         reader.fail("more vertices than MeshFair supports");
@@ -68,12 +83,52 @@ void read_vertex(const LineReader& reader, Tokenizer& tokens, Mesh& mesh, ObjTal
             reader.fail(std::string("vertex has no ") + axis + " coordinate");
         mesh.positions.push_back(parse_double(reader, t, std::string(axis) + " coordinate"));
     }
-    // An optional w or r g b may follow; they must still be numbers.
-    std::string_view t = tokens.next();
-    if (!t.empty() && tally.vertex_extras++ == 0)
-        tally.first_vertex_extra = reader.here(reader.column_of(t)).to_string();
-    for (; !t.empty(); t = tokens.next())
-        parse_double(reader, t, "vertex value");
+    double extra[3] = {0, 0, 0};
+    int extras = 0;
+    std::string_view first;
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next(), ++extras)
+    {
+        const double value = parse_double(reader, t, "vertex value"); // always a number
+        if (extras < 3)
+            extra[extras] = value;
+        if (extras == 0)
+            first = t;
+    }
+    if (extras == 3)
+        ++tally.coloured_vertices;
+    else if (extras > 0 && tally.vertex_extras++ == 0)
+        tally.first_vertex_extra = reader.here(reader.column_of(first)).to_string();
+    // Kept for every vertex once one has a colour, so indices stay aligned.
+    if (extras == 3 || !colours.empty())
+    {
+        colours.resize(mesh.positions.size() - 3, 0.0);
+        for (int c = 0; c < 3; ++c)
+            colours.push_back(extras == 3 ? extra[c] : 0.0);
+    }
+}
+
+// Reads "vt u [v [w]]" (three values kept, missing ones 0) or "vn x y z".
+void read_entry(const LineReader& reader, Tokenizer& tokens, bool is_normal,
+                std::vector<double>& values, int& dimension)
+{
+    const char* names[] = {"u", "v", "w"};
+    const char* axes[] = {"x", "y", "z"};
+    int n = 0;
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next(), ++n)
+    {
+        if (n == 3)
+            reader.fail_at(t, std::string("unexpected value after the ") +
+                                  (is_normal ? "normal's x y z" : "texture coordinate's u v w"));
+        values.push_back(parse_double(reader, t,
+                                      std::string(is_normal ? "normal " : "texture coordinate ") +
+                                          (is_normal ? axes[n] : names[n])));
+    }
+    if (n == 0 || (is_normal && n < 3))
+        reader.fail(is_normal ? "a normal needs x y z (vn x y z)"
+                              : "a texture coordinate needs at least u (vt u [v [w]])");
+    dimension = std::max(dimension, n);
+    for (; n < 3; ++n)
+        values.push_back(0.0);
 }
 
 void add_notes(const ObjTally& t, ReadReport& report)
@@ -82,25 +137,35 @@ void add_notes(const ObjTally& t, ReadReport& report)
     if (t.ignored_lines > 0)
         report.notes.push_back("ignored " + std::to_string(t.ignored_lines) +
                                " line, point, curve or surface statements");
+    if (t.parameter_lines > 0)
+        report.notes.push_back("ignored " + std::to_string(t.parameter_lines) +
+                               " parameter-space vertices (vp), which only curves and surfaces "
+                               "use");
     if (t.vertex_extras > 0)
-        report.notes.push_back("ignored the values after x y z (w or a colour) on " +
-                               count_of(t.vertex_extras, "vertex line", "vertex lines") +
-                               " (first at " + t.first_vertex_extra + ")");
-    if (t.attribute_lines > 0)
-        report.notes.push_back("ignored " + std::to_string(t.attribute_lines) +
-                               " texture-coordinate, normal and parameter lines (vt, vn, vp) and "
-                               "the faces' texture and normal indices");
-    if (t.grouping_lines > 0)
-        report.notes.push_back("ignored " + std::to_string(t.grouping_lines) +
-                               " group, object and smoothing-group lines (g, o, s); faces keep "
-                               "the file's order");
-    if (t.material_lines > 0)
-        report.notes.push_back("ignored " + std::to_string(t.material_lines) +
-                               " material lines (mtllib, usemtl); no material file is opened");
+        report.notes.push_back(
+            "ignored the values after x y z that are not a colour r g b (a w, "
+            "or another count) on " +
+            count_of(t.vertex_extras, "vertex line", "vertex lines") + " (first at " +
+            t.first_vertex_extra + ")");
+    const char* lists[] = {"texture coordinates", "normals"};
+    for (int l = 0; l < 2; ++l)
+        if (t.partial_faces[l] > 0)
+            report.notes.push_back("ignored the " + std::string(lists[l]) + " of " +
+                                   count_of(t.partial_faces[l], "face", "faces") +
+                                   " that give them at only some corners (first at " +
+                                   t.first_partial[l] + ")");
     if (t.unknown_lines > 0)
         report.notes.push_back("ignored " + std::to_string(t.unknown_lines) +
                                " lines with unknown keywords (first: " + t.first_unknown + ")");
 }
+
+// The largest index into one list and, for a forward reference, where it is.
+struct ForwardReference
+{
+    std::int64_t max_index = -1;
+    std::int64_t line = 0;
+    std::int64_t column = 0;
+};
 
 // The lines of one part of the file, parsed into a mesh of their own. The first part is
 // the file's start, so everything in it means what it means in the serial read. A later
@@ -111,23 +176,140 @@ struct ObjPart
 {
     Mesh mesh;
     ObjTally tally;
-    std::int64_t max_index = -1;   // the largest corner index, forward references included
-    std::int64_t forward_line = 0; // where the largest forward reference is (first part)
-    std::int64_t forward_column = 0;
+    std::vector<double> colours;   // r g b per vertex, once a vertex has one
+    std::vector<double> lists[2];  // vt and vn entries, three values each
+    int texture_dimension = 0;     // the most values a vt line gave
+    std::vector<Index> corners[2]; // vt and vn index per corner, once a face has one
+    std::vector<ObjStatement> statements;
+    ForwardReference references[3]; // vertices, vt, vn (lines known in the first part)
+    std::int64_t face_count() const { return mesh.face_count(); }
 };
 
 struct RangeNeedsContext
 {
 };
 
+// The single-spaced text of a statement line.
+std::string statement_text(std::string_view keyword, Tokenizer& tokens)
+{
+    std::string text(keyword);
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
+    {
+        text += ' ';
+        text += t;
+    }
+    return text;
+}
+
+// One face line: its corners "v", "v/vt", "v//vn" or "v/vt/vn" into the part.
+void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& tokens, ObjPart& part,
+               bool first_part, std::vector<Index> (&face)[3])
+{
+    Mesh& mesh = part.mesh;
+    const std::int64_t so_far[3] = {mesh.vertex_count(),
+                                    static_cast<std::int64_t>(part.lists[0].size() / 3),
+                                    static_cast<std::int64_t>(part.lists[1].size() / 3)};
+    for (std::vector<Index>& f : face)
+        f.clear();
+    bool given[2] = {false, false}, missing[2] = {false, false};
+    std::string_view first_token;
+    for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
+    {
+        if (first_token.empty())
+            first_token = t;
+        if (!first_part && t.find('-') != std::string_view::npos)
+            throw RangeNeedsContext{};
+        std::string_view parts[3];
+        int count = 0;
+        for (std::string_view rest = t;; ++count)
+        {
+            const size_t slash = rest.find('/');
+            if (count == 3)
+                reader.fail_at(
+                    t, "face corner " + quoted(t) + " has more than three indices (v/vt/vn)");
+            parts[count] = rest.substr(0, slash);
+            if (slash == std::string_view::npos)
+            {
+                ++count;
+                break;
+            }
+            rest.remove_prefix(slash + 1);
+        }
+        if (parts[0].empty())
+            reader.fail_at(t, "face corner " + quoted(t) + " has no vertex index");
+        for (int l = kVertex; l <= kNormal; ++l)
+        {
+            if (l > kVertex && parts[l].empty())
+            {
+                missing[l - 1] = true;
+                face[l].push_back(kInvalidIndex);
+                continue;
+            }
+            const std::int64_t index =
+                corner_index(reader, parts[l], static_cast<List>(l), so_far[l]);
+            ForwardReference& ref = part.references[l];
+            if (index >= so_far[l] && index > ref.max_index)
+            {
+                ref.line = reader.line_number();
+                ref.column = reader.column_of(parts[l]);
+            }
+            ref.max_index = std::max(ref.max_index, index);
+            if (l > kVertex)
+                given[l - 1] = true;
+            face[l].push_back(static_cast<Index>(index));
+        }
+    }
+    if (face[kVertex].size() < 3)
+        reader.fail(
+            "face has " +
+            count_of(static_cast<std::int64_t>(face[kVertex].size()), "vertex", "vertices") +
+            " (a face needs at least 3)");
+    for (int l = 0; l < 2; ++l)
+    {
+        if (given[l] && missing[l])
+        {
+            if (!first_part)
+                throw RangeNeedsContext{};
+            if (part.tally.partial_faces[l]++ == 0)
+                part.tally.first_partial[l] =
+                    reader.here(reader.column_of(first_token)).to_string();
+        }
+        if (!given[l] || missing[l])
+            face[l + 1].clear();
+    }
+    const FaceCheck check = normalize_face(face[kVertex], &face[kTexture], &face[kNormal]);
+    if (!check.ok)
+        reader.fail(check.problem, reader.column_of(keyword));
+    if (check.collapsed > 0)
+    {
+        if (!first_part)
+            throw RangeNeedsContext{};
+        part.tally.collapsed.add(check.collapsed,
+                                 reader.here(reader.column_of(keyword)).to_string());
+    }
+    if (mesh.face_vertices.size() + face[kVertex].size() > static_cast<size_t>(kMaxElements))
+        reader.fail("more face corners than MeshFair supports");
+    for (int l = 0; l < 2; ++l)
+    {
+        std::vector<Index>& corners = part.corners[l];
+        if (!face[l + 1].empty() || !corners.empty())
+        {
+            corners.resize(mesh.face_vertices.size(), kInvalidIndex);
+            if (face[l + 1].empty())
+                corners.resize(corners.size() + face[kVertex].size(), kInvalidIndex);
+            else
+                corners.insert(corners.end(), face[l + 1].begin(), face[l + 1].end());
+        }
+    }
+    mesh.add_face(face[kVertex]);
+}
+
 ObjPart parse_part(std::string_view data, const std::string& name, bool first_part)
 {
     ObjPart part;
-    Mesh& mesh = part.mesh;
     ObjTally& tally = part.tally;
     LineReader reader(data, name);
-    std::vector<Index> face;
-    std::int64_t forward_max = -1;
+    std::vector<Index> face[3];
     while (reader.next())
     {
         Tokenizer tokens(reader.line());
@@ -136,62 +318,38 @@ ObjPart parse_part(std::string_view data, const std::string& name, bool first_pa
             continue;
         if (keyword == "v")
         {
-            read_vertex(reader, tokens, mesh, tally);
+            read_vertex(reader, tokens, part.mesh, part.colours, tally);
             if (!first_part && tally.vertex_extras > 0)
                 throw RangeNeedsContext{};
         }
         else if (keyword == "f")
         {
-            const std::int64_t nv = mesh.vertex_count();
-            face.clear();
-            for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
-            {
-                if (!first_part && t.front() == '-')
-                    throw RangeNeedsContext{};
-                const std::int64_t index = corner_index(reader, t, nv);
-                part.max_index = std::max(part.max_index, index);
-                if (index >= nv && index > forward_max)
-                {
-                    forward_max = index;
-                    part.forward_line = reader.line_number();
-                    part.forward_column = reader.column_of(t);
-                }
-                face.push_back(static_cast<Index>(index));
-            }
-            if (face.size() < 3)
-                reader.fail("face has " +
-                            count_of(static_cast<std::int64_t>(face.size()), "vertex", "vertices") +
-                            " (a face needs at least 3)");
-            const FaceCheck check = normalize_face(face);
-            if (!check.ok)
-                reader.fail(check.problem, reader.column_of(keyword));
-            if (check.collapsed > 0)
-            {
-                if (!first_part)
-                    throw RangeNeedsContext{};
-                tally.collapsed.add(check.collapsed,
-                                    reader.here(reader.column_of(keyword)).to_string());
-            }
-            if (mesh.face_vertices.size() + face.size() > static_cast<size_t>(kMaxElements))
-                reader.fail("more face corners than MeshFair supports");
-            mesh.add_face(face);
+            read_face(reader, keyword, tokens, part, first_part, face);
+        }
+        else if (keyword == "vt" || keyword == "vn")
+        {
+            const bool is_normal = keyword == "vn";
+            std::vector<double>& list = part.lists[is_normal ? 1 : 0];
+            if (list.size() / 3 >= static_cast<size_t>(kMaxElements))
+                reader.fail("more " + std::string(is_normal ? "normals" : "texture coordinates") +
+                            " than MeshFair supports");
+            int dimension = 0;
+            read_entry(reader, tokens, is_normal, list, dimension);
+            part.texture_dimension = std::max(part.texture_dimension, is_normal ? 0 : dimension);
+        }
+        else if (keyword == "g" || keyword == "o" || keyword == "s" || keyword == "usemtl" ||
+                 keyword == "mtllib")
+        {
+            part.statements.push_back({part.mesh.face_count(), statement_text(keyword, tokens)});
         }
         else if (keyword == "l" || keyword == "p" || keyword == "curv" || keyword == "curv2" ||
                  keyword == "surf")
         {
             ++tally.ignored_lines;
         }
-        else if (keyword == "vt" || keyword == "vn" || keyword == "vp")
+        else if (keyword == "vp")
         {
-            ++tally.attribute_lines;
-        }
-        else if (keyword == "g" || keyword == "o" || keyword == "s")
-        {
-            ++tally.grouping_lines;
-        }
-        else if (keyword == "mtllib" || keyword == "usemtl")
-        {
-            ++tally.material_lines;
+            ++tally.parameter_lines;
         }
         else if (tally.unknown_lines++ == 0)
         {
@@ -204,15 +362,71 @@ ObjPart parse_part(std::string_view data, const std::string& name, bool first_pa
     return part;
 }
 
-Mesh finish(ObjPart& part, const std::string& name, ReadReport& report)
+// Entries of three values as entries of `dimension` values.
+std::vector<double> narrowed(const std::vector<double>& triples, int dimension)
 {
-    if (part.max_index >= part.mesh.vertex_count())
-        throw FormatError(SourceLocation::text(name, part.forward_line, part.forward_column),
-                          "vertex index " + std::to_string(part.max_index + 1) +
-                              " is past the last vertex (the file defines " +
-                              std::to_string(part.mesh.vertex_count()) + ")");
+    if (dimension == 3)
+        return triples;
+    std::vector<double> out;
+    out.reserve(triples.size() / 3 * static_cast<size_t>(dimension));
+    for (size_t k = 0; k < triples.size(); k += 3)
+        out.insert(out.end(), triples.begin() + static_cast<std::ptrdiff_t>(k),
+                   triples.begin() + static_cast<std::ptrdiff_t>(k) + dimension);
+    return out;
+}
+
+Mesh finish(ObjPart& part, const std::string& name, ReadReport& report, MeshAttributes& attributes)
+{
+    Mesh& mesh = part.mesh;
+    const std::int64_t counts[3] = {mesh.vertex_count(),
+                                    static_cast<std::int64_t>(part.lists[0].size() / 3),
+                                    static_cast<std::int64_t>(part.lists[1].size() / 3)};
+    const char* last[3] = {"the last vertex", "the last texture coordinate (vt)",
+                           "the last normal (vn)"};
+    for (int l = kVertex; l <= kNormal; ++l)
+        if (part.references[l].max_index >= counts[l])
+            throw FormatError(
+                SourceLocation::text(name, part.references[l].line, part.references[l].column),
+                std::string(kIndexName[l]) + " " +
+                    std::to_string(part.references[l].max_index + 1) + " is past " + last[l] +
+                    " (the file defines " + std::to_string(counts[l]) + ")");
+    attributes = MeshAttributes{};
+    const std::int64_t coloured = part.tally.coloured_vertices;
+    if (coloured > 0 && coloured == mesh.vertex_count())
+    {
+        attributes.vertex.count = mesh.vertex_count();
+        const char* names[] = {"red", "green", "blue"};
+        for (size_t c = 0; c < 3; ++c)
+        {
+            Property p{names[c], ValueType::Float64, false, ValueType::UInt8, {}, {}};
+            p.values.resize(static_cast<size_t>(mesh.vertex_count()));
+            for (size_t v = 0; v < p.values.size(); ++v)
+                p.values[v] = part.colours[3 * v + c];
+            attributes.vertex.properties.push_back(std::move(p));
+        }
+    }
+    else if (coloured > 0)
+        report.notes.push_back("ignored the colours r g b of " + std::to_string(coloured) +
+                               " of the " +
+                               count_of(mesh.vertex_count(), "vertex line", "vertex lines") +
+                               " (colours are kept when every vertex has one)");
+    CornerValues* targets[2] = {&attributes.texcoords, &attributes.normals};
+    for (int l = 0; l < 2; ++l)
+        if (!part.corners[l].empty())
+        {
+            CornerValues& c = *targets[l];
+            c.dimension = l == 0 ? std::max(part.texture_dimension, 1) : 3;
+            c.values = narrowed(part.lists[l], c.dimension);
+            c.corners = std::move(part.corners[l]);
+            c.corners.resize(mesh.face_vertices.size(), kInvalidIndex);
+        }
+        else if (counts[l + 1] > 0)
+            report.notes.push_back("ignored " + std::to_string(counts[l + 1]) + " " +
+                                   (l == 0 ? "texture coordinates (vt)" : "normals (vn)") +
+                                   " that no face uses");
+    attributes.statements = std::move(part.statements);
     add_notes(part.tally, report);
-    return std::move(part.mesh);
+    return std::move(mesh);
 }
 
 // Cuts the data just after a line feed near each k/parts of its length, which is always
@@ -238,28 +452,52 @@ std::vector<std::string_view> cut_at_lines(std::string_view data, int parts)
     return cuts;
 }
 
+// `tail` appended to `all`, each first padded to `size` and `tail_size` with `fill` when
+// it is empty but the other is not (a part without colours, or without vt, beside one
+// with them).
+template <typename T>
+void append_padded(std::vector<T>& all, size_t size, std::vector<T>& tail, size_t tail_size, T fill)
+{
+    if (all.empty() && tail.empty())
+        return;
+    all.resize(size, fill);
+    if (tail.empty())
+        all.resize(size + tail_size, fill);
+    else
+        all.insert(all.end(), tail.begin(), tail.end());
+    tail = {};
+}
+
 // The parts joined in file order into the first one; false when a later part cannot be
 // taken as it is (then the serial read decides).
 bool join_parts(std::vector<ObjPart>& parts)
 {
     ObjPart& all = parts.front();
     size_t nv = all.mesh.positions.size(), nc = all.mesh.face_vertices.size(),
-           nf = all.mesh.face_offsets.size();
+           nf = all.mesh.face_offsets.size(), nl[2] = {all.lists[0].size(), all.lists[1].size()};
     for (size_t k = 1; k < parts.size(); ++k)
     {
         const ObjTally& t = parts[k].tally;
         all.tally.ignored_lines += t.ignored_lines;
-        all.tally.attribute_lines += t.attribute_lines;
-        all.tally.grouping_lines += t.grouping_lines;
-        all.tally.material_lines += t.material_lines;
-        all.max_index = std::max(all.max_index, parts[k].max_index);
+        all.tally.parameter_lines += t.parameter_lines;
+        all.tally.coloured_vertices += t.coloured_vertices;
+        all.texture_dimension = std::max(all.texture_dimension, parts[k].texture_dimension);
+        for (int l = 0; l < 3; ++l)
+            all.references[l].max_index =
+                std::max(all.references[l].max_index, parts[k].references[l].max_index);
         nv += parts[k].mesh.positions.size();
         nc += parts[k].mesh.face_vertices.size();
         nf += parts[k].mesh.face_offsets.size() - 1;
+        for (int l = 0; l < 2; ++l)
+            nl[l] += parts[k].lists[l].size();
     }
-    // The serial read's limits and its forward-reference message need the whole file.
+    // The serial read's limits and its forward-reference messages need the whole file.
     if (nv / 3 > static_cast<size_t>(kMaxVertices) || nc > static_cast<size_t>(kMaxElements) ||
-        all.max_index >= static_cast<std::int64_t>(nv / 3))
+        all.references[kVertex].max_index >= static_cast<std::int64_t>(nv / 3) ||
+        all.references[kTexture].max_index >= static_cast<std::int64_t>(nl[0] / 3) ||
+        all.references[kNormal].max_index >= static_cast<std::int64_t>(nl[1] / 3) ||
+        nl[0] / 3 > static_cast<size_t>(kMaxElements) ||
+        nl[1] / 3 > static_cast<size_t>(kMaxElements))
         return false;
     Mesh& mesh = all.mesh;
     mesh.positions.reserve(nv);
@@ -267,31 +505,46 @@ bool join_parts(std::vector<ObjPart>& parts)
     mesh.face_offsets.reserve(nf);
     for (size_t k = 1; k < parts.size(); ++k)
     {
-        const Mesh& m = parts[k].mesh;
+        ObjPart& part = parts[k];
+        const Mesh& m = part.mesh;
         const Index base = static_cast<Index>(mesh.face_vertices.size());
+        const Index faces_before = mesh.face_count();
+        append_padded(all.colours, mesh.positions.size(), part.colours, m.positions.size(), 0.0);
+        for (int l = 0; l < 2; ++l)
+        {
+            all.lists[l].insert(all.lists[l].end(), part.lists[l].begin(), part.lists[l].end());
+            append_padded(all.corners[l], mesh.face_vertices.size(), part.corners[l],
+                          m.face_vertices.size(), kInvalidIndex);
+        }
+        for (ObjStatement& s : part.statements)
+        {
+            s.before_face += faces_before;
+            all.statements.push_back(std::move(s));
+        }
         mesh.positions.insert(mesh.positions.end(), m.positions.begin(), m.positions.end());
         mesh.face_vertices.insert(mesh.face_vertices.end(), m.face_vertices.begin(),
                                   m.face_vertices.end());
         for (size_t f = 1; f < m.face_offsets.size(); ++f)
             mesh.face_offsets.push_back(base + m.face_offsets[f]);
-        parts[k].mesh = Mesh{}; // frees the part as soon as it is copied
+        part = ObjPart{}; // frees the part as soon as it is copied
     }
     return true;
 }
 
 } // namespace
 
-Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report)
+Mesh read_obj(std::string_view data, const std::string& name, ReadReport& report,
+              MeshAttributes& attributes)
 {
     // One range per thread, for files large enough to pay for waking the threads.
     constexpr size_t kBytesPerRange = size_t{4} << 20;
     const auto ranges = static_cast<int>(
         std::clamp<size_t>(data.size() / kBytesPerRange, 1, static_cast<size_t>(thread_count())));
-    return read_obj_in_ranges(data, name, report, ranges);
+    return read_obj_in_ranges(data, name, report, attributes, ranges);
 }
 
 Mesh read_obj_in_ranges(std::string_view data, const std::string& name, ReadReport& report,
-                        int ranges, int* parsed_in)
+                        MeshAttributes& attributes, int ranges, int* parsed_in)
 {
     if (parsed_in)
         *parsed_in = 1;
@@ -342,13 +595,13 @@ Mesh read_obj_in_ranges(std::string_view data, const std::string& name, ReadRepo
         {
             if (parsed_in)
                 *parsed_in = static_cast<int>(parts.size());
-            return finish(parts.front(), name, report);
+            return finish(parts.front(), name, report, attributes);
         }
     }
     // One pass straight into the mesh: faces are normalized as they are read, so no
     // per-face bookkeeping outlives its line.
     ObjPart whole = parse_part(data, name, true);
-    return finish(whole, name, report);
+    return finish(whole, name, report, attributes);
 }
 
 } // namespace meshfair::io

@@ -2,10 +2,14 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/io/read_off.h"
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/attributes.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
 
@@ -70,23 +74,6 @@ struct OffVariant
         if (has_texture)
             s += " s t";
         return s;
-    }
-    // "vertex normals and colours (CNOFF)", or empty for plain OFF.
-    std::string ignored() const
-    {
-        std::vector<std::string> parts;
-        if (has_normals)
-            parts.emplace_back("normals");
-        if (has_colours)
-            parts.emplace_back("colours");
-        if (has_texture)
-            parts.emplace_back("texture coordinates");
-        if (parts.empty())
-            return {};
-        std::string s = "ignored vertex " + parts[0];
-        for (size_t k = 1; k < parts.size(); ++k)
-            s += (k + 1 == parts.size() ? " and " : ", ") + parts[k];
-        return s + " (" + keyword + ")";
     }
 };
 
@@ -200,6 +187,41 @@ OffHeader parse_header(OffLines& lines, std::string_view data)
     return h;
 }
 
+// Colour values as read, and whether every one was an integer in 0..255 (Geomview's
+// integer colours) rather than a fraction in 0..1.
+struct ColourColumns
+{
+    std::vector<double> values[4]; // r g b a, one per row
+    bool integers = true;
+    std::int64_t with_alpha = 0;
+
+    void add(const LineReader& reader, std::string_view token, int channel, const char* what)
+    {
+        const double v = parse_double(reader, token, what);
+        integers =
+            integers && token.find_first_of(".eE") == std::string_view::npos && v >= 0 && v <= 255;
+        values[channel].push_back(v);
+        if (channel == 3)
+            ++with_alpha;
+    }
+    // Red, green, blue (and alpha, when any row has one: opaque where a row has none)
+    // appended to `table`, as uchar for integer colours, else double.
+    void keep(Element& table, std::int64_t rows)
+    {
+        const ValueType type = integers ? ValueType::UInt8 : ValueType::Float64;
+        const char* names[] = {"red", "green", "blue", "alpha"};
+        for (int c = 0; c < (with_alpha > 0 ? 4 : 3); ++c)
+        {
+            Property p{names[c], type, false, ValueType::UInt8, std::move(values[c]), {}};
+            p.values.resize(static_cast<size_t>(rows), std::numeric_limits<double>::quiet_NaN());
+            for (double& v : p.values)
+                if (std::isnan(v))
+                    v = integers ? 255.0 : 1.0;
+            table.properties.push_back(std::move(p));
+        }
+    }
+};
+
 // Remembers how many lines carried something that is ignored, and the first one.
 struct Ignored
 {
@@ -219,11 +241,15 @@ struct Ignored
                 std::to_string(found));
 }
 
-void read_vertices(OffLines& lines, const OffHeader& h, Mesh& mesh, Ignored& extra)
+void read_vertices(OffLines& lines, const OffHeader& h, Mesh& mesh, Ignored& extra, Element& table)
 {
     const LineReader& reader = lines.reader();
     const int needed = h.variant.min_values();
     mesh.positions.reserve(static_cast<size_t>(3 * h.vertices));
+    const OffVariant& variant = h.variant;
+    std::vector<double> normals[3], texture[2];
+    ColourColumns colours;
+    std::string_view values[16];
     for (std::int64_t i = 0; i < h.vertices; ++i)
     {
         if (!lines.next())
@@ -236,27 +262,71 @@ void read_vertices(OffLines& lines, const OffHeader& h, Mesh& mesh, Ignored& ext
                 reader.fail(std::string("vertex has no ") + axis + " coordinate");
             mesh.positions.push_back(parse_double(reader, t, std::string(axis) + " coordinate"));
         }
-        // Normals, colours and texture coordinates are ignored but must be numbers.
-        int values = 3;
-        for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next(), ++values)
-            parse_double(reader, t, "vertex value");
-        if (values < needed)
-            reader.fail("vertex has " + std::to_string(values) + " values but " +
-                        h.variant.keyword + " needs at least " + std::to_string(needed) + " (" +
-                        h.variant.value_names() + ")");
+        // Normals, colours and texture coordinates after x y z, in that order; every
+        // value must be a number, also those beyond what the keyword declares.
+        int count = 3;
+        for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next(), ++count)
+        {
+            if (count - 3 < static_cast<int>(std::size(values)))
+                values[count - 3] = t;
+            else
+                parse_double(reader, t, "vertex value");
+        }
+        if (count < needed)
+            reader.fail("vertex has " + std::to_string(count) + " values but " + variant.keyword +
+                        " needs at least " + std::to_string(needed) + " (" + variant.value_names() +
+                        ")");
         // A colour may have an alpha value; anything beyond that is undeclared.
-        if (values > needed + (h.variant.has_colours ? 1 : 0))
+        const bool alpha = variant.has_colours && count > needed;
+        if (count > needed + (alpha ? 1 : 0))
             extra.add(reader);
+        int k = 0;
+        if (variant.has_normals)
+            for (std::vector<double>& n : normals)
+                n.push_back(parse_double(reader, values[k++], "normal value"));
+        if (variant.has_colours)
+            for (int c = 0; c < (alpha ? 4 : 3); ++c)
+            {
+                if (c == 3) // rows before without alpha: opaque (ColourColumns::keep)
+                    colours.values[3].resize(static_cast<size_t>(i),
+                                             std::numeric_limits<double>::quiet_NaN());
+                colours.add(reader, values[k++], c, "vertex colour value");
+            }
+        if (variant.has_texture)
+            for (std::vector<double>& t : texture)
+                t.push_back(parse_double(reader, values[k++], "texture coordinate"));
+        for (; k < count - 3 && k < static_cast<int>(std::size(values)); ++k)
+            parse_double(reader, values[k], "vertex value");
+    }
+    table.count = static_cast<Index>(h.vertices);
+    const auto keep = [&](const char* name, std::vector<double>& column) {
+        table.properties.push_back(
+            Property{name, ValueType::Float64, false, ValueType::UInt8, std::move(column), {}});
+    };
+    if (variant.has_normals)
+        for (int a = 0; a < 3; ++a)
+            keep(std::array{"nx", "ny", "nz"}[static_cast<size_t>(a)], normals[a]);
+    if (variant.has_colours)
+        colours.keep(table, h.vertices);
+    if (variant.has_texture)
+    {
+        keep("texture_u", texture[0]);
+        keep("texture_v", texture[1]);
     }
 }
 
-void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& report)
+void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& report, Element& table)
 {
     const LineReader& reader = lines.reader();
     mesh.face_offsets.reserve(static_cast<size_t>(h.faces + 1));
     mesh.face_vertices.reserve(static_cast<size_t>(3 * h.faces));
     NoteCounter collapsed;
     Ignored coloured;
+    // A face's colour: 1 value (a colour map index) or 3 or 4 (r g b [a]); kept when every
+    // face gives the same kind.
+    ColourColumns colours;
+    std::vector<double> colour_index;
+    int colour_values = -1; // of the first face; -2 once faces differ
     std::vector<Index> face;
     for (std::int64_t f = 0; f < h.faces; ++f)
     {
@@ -288,12 +358,17 @@ void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& rep
             face.push_back(static_cast<Index>(index));
         }
         // A face colour (an index or 3-4 values) may follow; it must be numbers.
+        int values = 0;
         if (!tokens.at_end())
-        {
             coloured.add(reader);
-            for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
+        for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next(), ++values)
+        {
+            if (values < 4)
+                colours.add(reader, t, values, "face colour value");
+            else
                 parse_double(reader, t, "face colour value");
         }
+        colour_values = colour_values == -1 || colour_values == values ? values : -2;
         const auto where = reader.here();
         const FaceCheck check = normalize_face(face);
         if (!check.ok)
@@ -304,24 +379,42 @@ void read_faces(OffLines& lines, const OffHeader& h, Mesh& mesh, ReadReport& rep
         mesh.add_face(face);
     }
     report_collapsed(collapsed, report.notes);
-    if (coloured.lines > 0)
+    table.count = static_cast<Index>(h.faces);
+    if (colour_values == 1)
+        table.properties.push_back(Property{"colormap_index",
+                                            ValueType::Float64,
+                                            false,
+                                            ValueType::UInt8,
+                                            std::move(colours.values[0]),
+                                            {}});
+    else if (colour_values == 3 || colour_values == 4)
+        colours.keep(table, h.faces);
+    else if (coloured.lines > 0)
         report.notes.push_back("ignored the colours of " +
                                count_of(coloured.lines, "face", "faces") + " (first at " +
-                               coloured.first + ")");
+                               coloured.first + "): faces give " +
+                               (colour_values == -2 ? "different numbers of colour values"
+                                                    : "other than 1, 3 or 4 colour values") +
+                               " (kept when every face gives 1, 3 or 4)");
 }
 
 } // namespace
 
-Mesh read_off(std::string_view data, const std::string& name, ReadReport& report)
+Mesh read_off(std::string_view data, const std::string& name, ReadReport& report,
+              MeshAttributes& attributes)
 {
+    attributes = MeshAttributes{};
     report.format = Format::Off;
     report.encoding = Encoding::Ascii;
     OffLines lines(data, name);
     const OffHeader h = parse_header(lines, data);
     Mesh mesh;
     Ignored extra;
-    read_vertices(lines, h, mesh, extra);
-    read_faces(lines, h, mesh, report);
+    read_vertices(lines, h, mesh, extra, attributes.vertex);
+    read_faces(lines, h, mesh, report, attributes.face);
+    for (Element* table : {&attributes.vertex, &attributes.face})
+        if (table->properties.empty())
+            table->count = 0;
     if (lines.next())
     {
         Tokenizer tokens(lines.content());
@@ -334,8 +427,6 @@ Mesh read_off(std::string_view data, const std::string& name, ReadReport& report
                                                   " and " + count_of(h.faces, "face", "faces") +
                                                   ")");
     }
-    if (const std::string variant = h.variant.ignored(); !variant.empty())
-        report.notes.push_back(variant);
     if (extra.lines > 0)
         report.notes.push_back("ignored undeclared extra values on " +
                                count_of(extra.lines, "vertex line", "vertex lines") +

@@ -5,11 +5,13 @@
 #include <cassert>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <unordered_set>
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/attributes.h"
 #include "core/io/byte_reader.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
@@ -19,17 +21,7 @@ namespace meshfair::io {
 namespace {
 
 // The eight PLY value types, in the order of kTypes.
-enum class Type
-{
-    Int8,
-    UInt8,
-    Int16,
-    UInt16,
-    Int32,
-    UInt32,
-    Float32,
-    Float64
-};
+using Type = ValueType;
 
 struct TypeInfo
 {
@@ -67,7 +59,7 @@ enum class Kind
     Other
 };
 
-struct Property
+struct PropertyDecl
 {
     std::string name;
     Type type = Type::Int8; // the scalar type, or the type of a list's items
@@ -75,20 +67,21 @@ struct Property
     bool is_list = false;
     Type count_type = Type::UInt8;
     std::string count_type_name;
-    std::int64_t line = 0;   // header line declaring it
-    std::int64_t column = 0; // and the column of its 'property' keyword
-    int axis = -1;           // 0, 1, 2 for the vertex coordinates x, y, z
-    bool is_indices = false; // the face's (or the strips') vertex index list
-    std::string what;        // names one value in messages: "x coordinate", "'red' value"
-    std::string count_what;  // "'vertex_indices' list count"
+    std::int64_t line = 0;    // header line declaring it
+    std::int64_t column = 0;  // and the column of its 'property' keyword
+    int axis = -1;            // 0, 1, 2 for the vertex coordinates x, y, z
+    bool is_indices = false;  // the face's (or the strips') vertex index list
+    std::string what;         // names one value in messages: "x coordinate", "'red' value"
+    std::string count_what;   // "'vertex_indices' list count"
+    Property* kept = nullptr; // where the values go, for a property kept as an attribute
 };
 
-struct Element
+struct ElementDecl
 {
     std::string name;
     Kind kind = Kind::Other;
     std::int64_t count = 0;
-    std::vector<Property> properties;
+    std::vector<PropertyDecl> properties;
     std::unordered_set<std::string> property_names; // for the duplicate check
     std::int64_t line = 0;                          // header line declaring it
     std::int64_t column = 0;                        // and the column of its 'element' keyword
@@ -98,11 +91,12 @@ struct Element
 struct Header
 {
     Encoding encoding = Encoding::Ascii;
-    std::vector<Element> elements;
-    size_t data_offset = 0; // first byte after end_header's line terminator
+    std::vector<ElementDecl> elements;
+    std::vector<std::string> comments; // comment and obj_info lines, as written
+    size_t data_offset = 0;            // first byte after end_header's line terminator
 };
 
-std::string row_name(const Element& element, std::int64_t row)
+std::string row_name(const ElementDecl& element, std::int64_t row)
 {
     return element.name + " " + std::to_string(row);
 }
@@ -157,7 +151,7 @@ void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
     const std::string_view count = tokens.next();
     if (count.empty() || !tokens.at_end())
         reader.fail("an element line must be 'element NAME COUNT'");
-    Element e;
+    ElementDecl e;
     e.name = std::string(name);
     e.kind = name == "vertex"      ? Kind::Vertex
              : name == "face"      ? Kind::Face
@@ -168,7 +162,7 @@ void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
         reader.fail_at(count, "element count " + std::to_string(e.count) + " is negative");
     // Only the vertex, face and tristrips elements must be unique: one scan each.
     if (e.kind != Kind::Other)
-        for (const Element& other : h.elements)
+        for (const ElementDecl& other : h.elements)
             if (other.name == e.name)
                 reader.fail_at(name,
                                "second '" + e.name + "' element (a PLY mesh has at most one)");
@@ -178,9 +172,9 @@ void parse_element(const LineReader& reader, Tokenizer& tokens, Header& h)
     h.elements.push_back(std::move(e));
 }
 
-void parse_property(const LineReader& reader, Tokenizer& tokens, Element& e)
+void parse_property(const LineReader& reader, Tokenizer& tokens, ElementDecl& e)
 {
-    Property p;
+    PropertyDecl p;
     p.line = reader.line_number();
     p.column = reader.here().column;
     std::string_view first = tokens.next();
@@ -236,8 +230,17 @@ Header parse_header(LineReader& reader, std::string_view data)
     {
         Tokenizer tokens(reader.line());
         const std::string_view keyword = tokens.next();
-        if (keyword.empty() || keyword == "comment" || keyword == "obj_info")
+        if (keyword.empty())
             continue;
+        if (keyword == "comment" || keyword == "obj_info")
+        {
+            std::string_view line =
+                reader.line().substr(static_cast<size_t>(keyword.data() - reader.line().data()));
+            while (!line.empty() && is_blank(line.back()))
+                line.remove_suffix(1);
+            h.comments.emplace_back(line);
+            continue;
+        }
         if (keyword == "end_header")
         {
             if (!tokens.at_end())
@@ -276,7 +279,7 @@ Header parse_header(LineReader& reader, std::string_view data)
     reader.fail("no end_header (the file ends inside the header)");
 }
 
-// Fails at the header line of `declared` (an Element or a Property).
+// Fails at the header line of `declared` (an ElementDecl or a PropertyDecl).
 template <typename Declared>
 [[noreturn]] void fail_line(const std::string& file, const Declared& declared,
                             const std::string& message)
@@ -288,10 +291,10 @@ template <typename Declared>
 // MeshFair cannot read.
 void assign_roles(Header& h, const std::string& file)
 {
-    for (Element& e : h.elements)
+    for (ElementDecl& e : h.elements)
     {
-        const auto find = [&](std::string_view name) -> Property* {
-            for (Property& p : e.properties)
+        const auto find = [&](std::string_view name) -> PropertyDecl* {
+            for (PropertyDecl& p : e.properties)
                 if (p.name == name)
                     return &p;
             return nullptr;
@@ -301,7 +304,7 @@ void assign_roles(Header& h, const std::string& file)
             for (const int axis : {0, 1, 2})
             {
                 const std::string name(1, "xyz"[axis]);
-                Property* p = find(name);
+                PropertyDecl* p = find(name);
                 if (!p)
                     fail_line(file, e, "vertex element has no property '" + name + "'");
                 if (p->is_list)
@@ -313,8 +316,8 @@ void assign_roles(Header& h, const std::string& file)
         }
         else if (e.kind == Kind::Face || e.kind == Kind::Strips)
         {
-            Property* p = find("vertex_indices");
-            Property* alias = find("vertex_index");
+            PropertyDecl* p = find("vertex_indices");
+            PropertyDecl* alias = find("vertex_index");
             if (p && alias)
                 fail_line(file, *alias,
                           e.name + " element has both 'vertex_indices' and 'vertex_index'");
@@ -336,7 +339,7 @@ void assign_roles(Header& h, const std::string& file)
     }
 }
 
-std::string rows_of(const Element& e)
+std::string rows_of(const ElementDecl& e)
 {
     return e.kind == Kind::Vertex ? "vertices"
            : e.kind == Kind::Face ? "faces"
@@ -348,10 +351,10 @@ std::string rows_of(const Element& e)
 // character and one separator per property (the last row needs no line end).
 void check_counts(const Header& h, const std::string& file, size_t available)
 {
-    for (const Element& e : h.elements)
+    for (const ElementDecl& e : h.elements)
     {
         std::uint64_t min_row = 0;
-        for (const Property& p : e.properties)
+        for (const PropertyDecl& p : e.properties)
             min_row +=
                 h.encoding != Encoding::Ascii ? info(p.is_list ? p.count_type : p.type).size : 2;
         const std::uint64_t room = h.encoding == Encoding::Ascii ? available + 1 : available;
@@ -374,7 +377,7 @@ class AsciiRows
 public:
     explicit AsciiRows(LineReader& reader) : reader_(reader) {}
 
-    void begin_row(const Element& e, std::int64_t row)
+    void begin_row(const ElementDecl& e, std::int64_t row)
     {
         element_ = &e;
         row_ = row;
@@ -397,7 +400,7 @@ public:
         }
     }
 
-    std::int64_t count(const Property& p)
+    std::int64_t count(const PropertyDecl& p)
     {
         const std::int64_t n = integer(p, p.count_type, p.count_type_name, p.count_what);
         if (n < 0)
@@ -412,13 +415,18 @@ public:
         return n;
     }
 
-    std::int64_t index(const Property& p) { return integer(p, p.type, p.type_name, p.what); }
+    std::int64_t index(const PropertyDecl& p) { return integer(p, p.type, p.type_name, p.what); }
 
-    double number(const Property& p)
+    double number(const PropertyDecl& p)
     {
         if (info(p.type).is_integer)
             return static_cast<double>(integer(p, p.type, p.type_name, p.what));
         const std::string_view token = take(p);
+        // An attribute may be NaN or infinite (a scanner's missing confidence), as binary
+        // files hold it; MeshFair writes those values so. Coordinates must be finite.
+        if (p.axis < 0 && !p.is_indices)
+            if (const double special = non_finite(token); special != 0)
+                return special;
         const double value = parse_double(reader_, token, p.what);
         if (p.type == Type::Float32 && std::abs(value) >= kFloatOverflow)
             reader_.fail_at(token,
@@ -426,7 +434,7 @@ public:
         return value;
     }
 
-    void skip(const Property& p)
+    void skip(const PropertyDecl& p)
     {
         const std::int64_t n = p.is_list ? count(p) : 1;
         for (std::int64_t k = 0; k < n; ++k)
@@ -453,7 +461,22 @@ public:
     }
 
 private:
-    std::string_view take(const Property& p)
+    // The value of "nan", "inf" or "-inf" (any case, with an optional sign), else 0.
+    static double non_finite(std::string_view token)
+    {
+        std::string_view t = token;
+        const bool negative = t.starts_with('-');
+        if (negative || t.starts_with('+'))
+            t.remove_prefix(1);
+        if (equals_ignoring_case(t, "nan"))
+            return std::numeric_limits<double>::quiet_NaN();
+        if (equals_ignoring_case(t, "inf") || equals_ignoring_case(t, "infinity"))
+            return negative ? -std::numeric_limits<double>::infinity()
+                            : std::numeric_limits<double>::infinity();
+        return 0;
+    }
+
+    std::string_view take(const PropertyDecl& p)
     {
         const std::string_view token = tokens_.next();
         if (token.empty())
@@ -463,7 +486,7 @@ private:
         return token;
     }
 
-    std::int64_t integer(const Property& p, Type type, const std::string& type_name,
+    std::int64_t integer(const PropertyDecl& p, Type type, const std::string& type_name,
                          const std::string& what)
     {
         const std::string_view token = take(p);
@@ -477,7 +500,7 @@ private:
     LineReader& reader_;
     Tokenizer tokens_{std::string_view()};
     std::string_view last_;
-    const Element* element_ = nullptr;
+    const ElementDecl* element_ = nullptr;
     std::int64_t row_ = 0;
 };
 
@@ -501,14 +524,14 @@ public:
     {
     }
 
-    void begin_row(const Element& e, std::int64_t row)
+    void begin_row(const ElementDecl& e, std::int64_t row)
     {
         element_ = &e;
         row_ = row;
     }
     void end_row() {}
 
-    std::int64_t count(const Property& p)
+    std::int64_t count(const PropertyDecl& p)
     {
         bytes_.at(element_->name, row_, p.name);
         list_start_ = start_ = bytes_.offset();
@@ -523,13 +546,13 @@ public:
         return n;
     }
 
-    std::int64_t index(const Property& p)
+    std::int64_t index(const PropertyDecl& p)
     {
         start_ = bytes_.offset();
         return integer(p.type);
     }
 
-    double number(const Property& p)
+    double number(const PropertyDecl& p)
     {
         bytes_.at(element_->name, row_, p.name);
         start_ = bytes_.offset();
@@ -544,7 +567,7 @@ public:
         }
     }
 
-    void skip(const Property& p)
+    void skip(const PropertyDecl& p)
     {
         if (p.is_list)
         {
@@ -600,7 +623,7 @@ private:
     ByteOrder order_;
     size_t start_ = 0;      // offset of the value read last
     size_t list_start_ = 0; // offset of the list count read last
-    const Element* element_ = nullptr;
+    const ElementDecl* element_ = nullptr;
     std::int64_t row_ = 0;
 };
 
@@ -617,7 +640,7 @@ struct Body
 };
 
 template <typename Rows>
-void read_face(Rows& rows, const Property& p, std::int64_t row, Body& body)
+void read_face(Rows& rows, const PropertyDecl& p, std::int64_t row, Body& body)
 {
     const std::int64_t n = rows.count(p);
     if (n < 3)
@@ -650,7 +673,7 @@ void read_face(Rows& rows, const Property& p, std::int64_t row, Body& body)
 // index (k >= 2) closes the triangle of the two before it, every other one reversed so
 // that all keep the strip's orientation: (s0 s1 s2), (s2 s1 s3), (s2 s3 s4), ...
 template <typename Rows>
-void read_strips(Rows& rows, const Property& p, std::int64_t row, Body& body)
+void read_strips(Rows& rows, const PropertyDecl& p, std::int64_t row, Body& body)
 {
     const std::int64_t n = rows.count(p);
     const TypeInfo& type = info(p.type);
@@ -696,10 +719,75 @@ void read_strips(Rows& rows, const Property& p, std::int64_t row, Body& body)
     }
 }
 
+// One row's value (or list) of a property kept as an attribute.
+template <typename Rows>
+void keep_value(Rows& rows, const PropertyDecl& p, Property& kept)
+{
+    if (!p.is_list)
+    {
+        kept.values.push_back(rows.number(p));
+        return;
+    }
+    const std::int64_t n = rows.count(p);
+    if (static_cast<std::int64_t>(kept.values.size()) + n > kMaxElements)
+        rows.fail("more list items in property '" + p.name + "' than MeshFair supports");
+    for (std::int64_t k = 0; k < n; ++k)
+        kept.values.push_back(rows.number(p));
+    kept.offsets.push_back(static_cast<Index>(kept.values.size()));
+}
+
+// Tables in `attributes` for every property MeshFair does not read into the mesh: the
+// vertices' and faces' other properties and every other element (not the tristrips'
+// other properties, whose rows are strips, not faces).
+void prepare_attributes(Header& h, MeshAttributes& attributes)
+{
+    attributes = MeshAttributes{};
+    attributes.comments = h.comments;
+    for (ElementDecl& e : h.elements)
+    {
+        if (e.kind == Kind::Strips)
+            continue;
+        Element* table = e.kind == Kind::Vertex ? &attributes.vertex
+                         : e.kind == Kind::Face ? &attributes.face
+                                                : &attributes.other_elements.emplace_back();
+        table->name = e.name;
+        table->count = static_cast<Index>(e.count);
+        for (const PropertyDecl& p : e.properties)
+            if (p.axis < 0 && !p.is_indices)
+                table->properties.push_back(
+                    Property{p.name, p.type, p.is_list, p.count_type, {}, {}});
+    }
+    // Pointers once no table moves any more.
+    size_t other = 0;
+    for (ElementDecl& e : h.elements)
+    {
+        if (e.kind == Kind::Strips)
+            continue;
+        Element& table = e.kind == Kind::Vertex ? attributes.vertex
+                         : e.kind == Kind::Face ? attributes.face
+                                                : attributes.other_elements[other++];
+        size_t k = 0;
+        for (PropertyDecl& p : e.properties)
+            if (p.axis < 0 && !p.is_indices)
+            {
+                Property& kept = table.properties[k++];
+                p.kept = &kept;
+                if (p.is_list)
+                    kept.offsets.reserve(static_cast<size_t>(e.count) + 1);
+                else
+                    kept.values.reserve(static_cast<size_t>(e.count));
+                if (p.is_list)
+                    kept.offsets.push_back(0);
+            }
+        if (table.properties.empty() && e.kind != Kind::Other)
+            table.count = 0;
+    }
+}
+
 template <typename Rows>
 void read_rows(Rows& rows, const Header& h, Body& body)
 {
-    for (const Element& e : h.elements)
+    for (const ElementDecl& e : h.elements)
     {
         // Rows without properties hold no bytes, and no tokens to put on a line.
         if (e.properties.empty())
@@ -713,7 +801,7 @@ void read_rows(Rows& rows, const Header& h, Body& body)
         {
             rows.begin_row(e, row);
             double xyz[3] = {0, 0, 0};
-            for (const Property& p : e.properties)
+            for (const PropertyDecl& p : e.properties)
             {
                 if (p.is_indices && e.kind == Kind::Strips)
                 {
@@ -722,6 +810,10 @@ void read_rows(Rows& rows, const Header& h, Body& body)
                 else if (p.is_indices)
                 {
                     read_face(rows, p, row, body);
+                }
+                else if (p.kept)
+                {
+                    keep_value(rows, p, *p.kept);
                 }
                 else if (p.axis < 0)
                 {
@@ -769,31 +861,24 @@ private:
 
 void add_notes(const Header& h, ReadReport& report)
 {
-    NameList elements;
-    for (const Element& e : h.elements)
+    for (const ElementDecl& e : h.elements)
     {
-        if (e.kind == Kind::Other)
-        {
-            elements.add("'" + e.name + "' (" + count_of(e.count, "row", "rows") + ")");
+        if (e.kind != Kind::Strips)
             continue;
-        }
         NameList skipped;
-        for (const Property& p : e.properties)
-            if (p.axis < 0 && !p.is_indices)
+        for (const PropertyDecl& p : e.properties)
+            if (!p.is_indices)
                 skipped.add("'" + p.name + "'");
         if (skipped.count() > 0)
-            report.notes.push_back("skipped " + e.name + " properties " + skipped.text());
+            report.notes.push_back("skipped " + e.name + " properties " + skipped.text() +
+                                   " (a strip's values have no face to go with)");
     }
-    if (elements.count() == 1)
-        report.notes.push_back("skipped element " + elements.text());
-    else if (elements.count() > 1)
-        report.notes.push_back("skipped " + std::to_string(elements.count()) +
-                               " elements: " + elements.text());
 }
 
 } // namespace
 
-Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report)
+Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report,
+              MeshAttributes& attributes)
 {
     report.format = Format::Ply;
     LineReader reader(data, name);
@@ -801,9 +886,10 @@ Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report
     report.encoding = h.encoding;
     assign_roles(h, name);
     check_counts(h, name, data.size() - h.data_offset);
+    prepare_attributes(h, attributes);
 
     Body body;
-    for (const Element& e : h.elements)
+    for (const ElementDecl& e : h.elements)
         if (e.kind == Kind::Vertex)
             body.vertex_count = e.count;
     if (h.encoding == Encoding::Ascii)
@@ -820,7 +906,7 @@ Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report
     }
     add_notes(h, report);
     report_collapsed(body.collapsed, report.notes);
-    for (const Element& e : h.elements)
+    for (const ElementDecl& e : h.elements)
         if (e.kind == Kind::Strips)
         {
             report.notes.push_back("decoded element 'tristrips' (" +

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/attributes.h"
 #include "core/io/byte_reader.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
@@ -117,7 +118,7 @@ bool starts_with_solid(std::string_view data)
 }
 
 Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t count,
-                 ReadReport& report)
+                 ReadReport& report, MeshAttributes& attributes)
 {
     report.encoding = Encoding::BinaryLittleEndian;
     if (3 * std::int64_t{count} > kMaxVertices) // welded vertices <= corners
@@ -133,7 +134,11 @@ Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t c
     mesh.face_vertices.reserve(3 * size_t{count});
     Welder welder(mesh, 3 * size_t{count});
     ByteReader bytes(data, name, kBinaryHeaderBytes);
-    std::int64_t attributes = 0;
+    // The two attribute bytes of each triangle (some exporters store a colour there),
+    // kept when any is not zero.
+    std::vector<double> attribute_bytes;
+    attribute_bytes.reserve(count);
+    bool any_attribute = false;
     std::vector<Index> face(3);
     for (std::int64_t t = 0; t < count; ++t)
     {
@@ -156,8 +161,9 @@ Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t c
             }
             face[static_cast<size_t>(k)] = welder.add(p[0], p[1], p[2]);
         }
-        if (bytes.read<std::uint16_t>(ByteOrder::Little) != 0)
-            ++attributes;
+        const std::uint16_t attribute = bytes.read<std::uint16_t>(ByteOrder::Little);
+        any_attribute = any_attribute || attribute != 0;
+        attribute_bytes.push_back(attribute);
         const FaceCheck check = normalize_face(face);
         if (!check.ok)
         {
@@ -168,10 +174,16 @@ Mesh read_binary(std::string_view data, const std::string& name, std::uint32_t c
         mesh.add_face(face);
     }
     report_welding(welder, mesh, report);
-    if (attributes > 0)
-        report.notes.push_back("ignored the attribute bytes of " +
-                               count_of(attributes, "triangle", "triangles") +
-                               " (some exporters store colours there)");
+    if (any_attribute)
+    {
+        attributes.face.count = static_cast<Index>(count);
+        attributes.face.properties.push_back(Property{std::string(kStlAttribute),
+                                                      ValueType::UInt16,
+                                                      false,
+                                                      ValueType::UInt8,
+                                                      std::move(attribute_bytes),
+                                                      {}});
+    }
     return mesh;
 }
 
@@ -327,8 +339,10 @@ private:
 
 } // namespace
 
-Mesh read_stl(std::string_view data, const std::string& name, ReadReport& report)
+Mesh read_stl(std::string_view data, const std::string& name, ReadReport& report,
+              MeshAttributes& attributes)
 {
+    attributes = MeshAttributes{};
     report.format = Format::Stl;
     report.encoding = Encoding::Ascii;
     if (data.empty())
@@ -339,7 +353,7 @@ Mesh read_stl(std::string_view data, const std::string& name, ReadReport& report
     {
         const auto count = ByteReader(data, name, 80).read<std::uint32_t>(ByteOrder::Little);
         if (data.size() == kBinaryHeaderBytes + kBinaryTriangleBytes * std::uint64_t{count})
-            return read_binary(data, name, count, report);
+            return read_binary(data, name, count, report, attributes);
     }
     if (!starts_with_solid(data))
         fail_binary_size(data, name,

@@ -3,6 +3,7 @@
 #include "core/io/text_writer.h"
 
 #include <charconv>
+#include <cmath>
 
 namespace meshfair::io {
 
@@ -12,6 +13,32 @@ void append_double(std::string& out, double value)
     // Without a precision argument std::to_chars gives the shortest round-trip form.
     auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
     out.append(buffer, end);
+}
+
+void append_value(std::string& out, double value, ValueType type, bool always_fraction)
+{
+    if (is_integer_type(type))
+    {
+        append_integer(out, static_cast<std::int64_t>(value));
+        return;
+    }
+    if (std::isnan(value))
+    {
+        out += "nan";
+        return;
+    }
+    const size_t start = out.size();
+    if (type == ValueType::Float32 && std::isfinite(value))
+    {
+        char buffer[32];
+        auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, static_cast<float>(value));
+        out.append(buffer, end);
+    }
+    else
+        append_double(out, value);
+    if (always_fraction && std::isfinite(value) &&
+        out.find_first_of(".e", start) == std::string::npos)
+        out += ".0";
 }
 
 void append_integer(std::string& out, std::int64_t value)

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "core/io/attributes.h"
 #include "core/mesh/mesh.h"
 
 namespace meshfair::io {
@@ -12,6 +13,12 @@ namespace meshfair::io {
 //! \brief Appends the shortest decimal text that reads back (with strtod or
 //! std::from_chars) to exactly `value`. Negative zero is written as "-0".
 void append_double(std::string& out, double value);
+
+//! \brief Appends an attribute value as text for its type: an integer, the shortest
+//! text of a float32 or of a double, "nan", "inf" or "-inf". With `always_fraction`, a
+//! value of a floating type that prints as an integer gets ".0" (OFF tells integer
+//! colours, 0 to 255, from fractions, 0 to 1, by that).
+void append_value(std::string& out, double value, ValueType type, bool always_fraction = false);
 
 //! Appends a decimal integer.
 void append_integer(std::string& out, std::int64_t value);

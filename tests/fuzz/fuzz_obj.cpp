@@ -2,7 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 // OBJ reader: the input is the file, unchanged. Besides the front door's checks, the
 // parse in 2 to 5 line ranges (the last byte picks how many) must give what the serial
-// parse gives: the same mesh bit for bit and the same notes, or the same error message.
+// parse gives: the same mesh bit for bit, the same attributes (texture coordinates,
+// normals, colours, groups) and notes, or the same error message.
 // The ranges are parsed one after another (one thread): what is fuzzed is how the file is
 // cut and the parts joined; the threads themselves are obj_ranges_test's (an OpenMP team
 // per input would also cost more than the parse).
@@ -22,6 +23,7 @@ struct Outcome
 {
     bool accepted = false;
     meshfair::Mesh mesh;
+    meshfair::io::MeshAttributes attributes;
     std::vector<std::string> notes;
     std::string error;
 };
@@ -32,7 +34,7 @@ Outcome parse(std::string_view data, int ranges)
     meshfair::io::ReadReport report;
     try
     {
-        o.mesh = meshfair::io::read_obj_in_ranges(data, "fuzz.obj", report, ranges);
+        o.mesh = meshfair::io::read_obj_in_ranges(data, "fuzz.obj", report, o.attributes, ranges);
         o.accepted = true;
         o.notes = report.notes;
     }
@@ -59,7 +61,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, size_t size)
     const Outcome ranged = parse(text, 2 + data[size - 1] % 4);
     if (serial.accepted != ranged.accepted || serial.error != ranged.error ||
         serial.notes != ranged.notes ||
-        (serial.accepted && !meshfair::fuzz::identical(serial.mesh, ranged.mesh)))
+        (serial.accepted && (!meshfair::fuzz::identical(serial.mesh, ranged.mesh) ||
+                             serial.attributes != ranged.attributes)))
         meshfair::fuzz::fail("the parse in ranges differs from the serial parse: '" + ranged.error +
                              "' vs '" + serial.error + "'");
     return 0;

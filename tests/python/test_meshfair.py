@@ -7,6 +7,7 @@
 # built module, MESHFAIR_CLI and MESHFAIR_ASSETS set.
 import json
 import os
+import re
 import subprocess
 import threading
 import time
@@ -161,12 +162,17 @@ def test_errors_are_python_exceptions_with_the_core_messages(tmp_path):
 
 
 def test_what_a_reader_skips_is_warned_of(tmp_path):
-    # The notes meshfair-cli prints reach Python as meshfair.ReadNote warnings.
+    # The notes meshfair-cli prints reach Python as meshfair.ReadNote warnings, and so do
+    # the attributes (V, F) cannot hold.
     path = tmp_path / "textured.obj"
-    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n")
-    with pytest.warns(meshfair.ReadNote, match=r"textured\.obj': ignored"):
+    path.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\nl 1 2\n")
+    with pytest.warns(meshfair.ReadNote) as caught:
         V, F = meshfair.read(str(path))
     assert F.shape == (1, 3)
+    messages = [str(w.message) for w in caught]
+    assert any(re.search(r"textured\.obj': ignored 1 line", m) for m in messages)
+    assert any(re.search(r"textured\.obj': not returned .*: texture coordinates: 3 vt on 3 corners", m)
+               for m in messages)
     assert issubclass(meshfair.ReadNote, UserWarning)
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # a file without notes warns of nothing

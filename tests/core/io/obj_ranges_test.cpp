@@ -23,12 +23,14 @@ struct Outcome
 {
     bool accepted = false;
     std::uint64_t hash = 0;
+    io::MeshAttributes attributes;
     std::vector<std::string> notes;
     std::string error;
     int parts = 0;
     bool operator==(const Outcome& o) const
     {
-        return accepted == o.accepted && hash == o.hash && notes == o.notes && error == o.error;
+        return accepted == o.accepted && hash == o.hash && attributes == o.attributes &&
+               notes == o.notes && error == o.error;
     }
 };
 
@@ -38,7 +40,8 @@ Outcome read_in(std::string_view data, int ranges)
     io::ReadReport report;
     try
     {
-        const Mesh m = io::read_obj_in_ranges(data, "t.obj", report, ranges, &o.parts);
+        const Mesh m =
+            io::read_obj_in_ranges(data, "t.obj", report, o.attributes, ranges, &o.parts);
         o.accepted = true;
         o.hash = content_hash(m);
         o.notes = report.notes;
@@ -66,7 +69,8 @@ int check_every_split(const std::string& data)
     return split;
 }
 
-// A 6 x 4 grid of quads: 35 vertex lines, then 24 face lines, with attribute and group
+// A 6 x 4 grid of quads: 35 coloured vertex lines, texture coordinates and normals, then
+// 24 face lines (half with texture coordinates and normals), with group and material
 // lines among them.
 std::vector<std::string> grid_lines()
 {
@@ -74,17 +78,28 @@ std::vector<std::string> grid_lines()
     for (int y = 0; y <= 4; ++y)
         for (int x = 0; x <= 6; ++x)
         {
-            lines.push_back("v " + std::to_string(x) + " " + std::to_string(y) + " 0.125");
-            lines.push_back("vt 0 0");
+            lines.push_back("v " + std::to_string(x) + " " + std::to_string(y) + " 0.125 " +
+                            std::to_string(x % 2) + " 0.5 1");
+            lines.push_back("vt " + std::to_string(x) + " " + std::to_string(y));
+            if (x == 0)
+                lines.push_back("vn 0 0 " + std::to_string(y + 1));
         }
     lines.push_back("s 1");
     for (int y = 0; y < 4; ++y)
+    {
+        lines.push_back("usemtl row" + std::to_string(y));
         for (int x = 0; x < 6; ++x)
         {
+            // Texture coordinates and normals on some rows' faces only.
             const int a = y * 7 + x + 1;
-            lines.push_back("f " + std::to_string(a) + "/1 " + std::to_string(a + 1) + "/1 " +
-                            std::to_string(a + 8) + " " + std::to_string(a + 7));
+            std::string face = "f";
+            for (const int v : {a, a + 1, a + 8, a + 7})
+                face += " " + std::to_string(v) +
+                        (y % 2 == 0 ? "/" + std::to_string(v) + "/" + std::to_string(y + 1)
+                                    : std::string());
+            lines.push_back(face);
         }
+    }
     return lines;
 }
 
@@ -126,6 +141,13 @@ TEST_SUITE("ReadObj in ranges")
             "\xEF\xBB\xBFv 0 0 0",      // a byte-order mark that is not the file's start
             "v 1e400 0 0",              // out of range
             "f 0 1 2",                  // index 0
+            "f 1/-1 2/-1 3/-1",         // a texture coordinate counted back
+            "f 1//99 2//1 3//1",        // a normal past the last
+            "f 1/1 2 3",                // texture coordinates at some corners: a note
+            "v 1 2 3",                  // a vertex without the colour the others have
+            "vt 0.5",                   // a texture coordinate of one value
+            "vn 0 0",                   // an error: a normal needs three values
+            "g part two",               // a group between faces
         };
         for (const std::string& special : specials)
             for (size_t at = 0; at <= base.size(); ++at)

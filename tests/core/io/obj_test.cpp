@@ -32,7 +32,7 @@ TEST_SUITE("ReadObj")
     TEST_CASE("polygons are kept and groups are concatenated in file order")
     {
         const Mesh m = parse_obj(
-            "# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+            "# comment\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nvt 0 0\nvn 0 0 1\nvn 0 0 1\n"
             "o first\nf 1 2 3 4\ng second\nf 2 5 3\no third\nf 1/1/1 2//2 -3\n");
         REQUIRE(m.face_count() == 3);
         CHECK(m.face_size(0) == 4);

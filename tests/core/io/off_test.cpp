@@ -30,11 +30,31 @@ std::string off_error(const std::string& text)
     return test::read_error(text, io::Format::Off);
 }
 
+io::MeshAttributes off_attributes(const std::string& text)
+{
+    io::ReadReport report;
+    io::MeshAttributes attributes;
+    io::read_off(text, "t.off", report, attributes);
+    return attributes;
+}
+
+using OffColumns = std::vector<std::pair<std::string, std::vector<double>>>;
+
+// The names and values of a table's properties.
+OffColumns off_columns(const io::Element& table)
+{
+    OffColumns c;
+    for (const io::Property& p : table.properties)
+        c.emplace_back(p.name, p.values);
+    return c;
+}
+
 std::vector<std::string> notes_of(const std::string& text)
 {
     // read_off itself: read_mesh_data adds a note for meshes without faces.
     io::ReadReport report;
-    io::read_off(text, "t.off", report);
+    io::MeshAttributes attributes;
+    io::read_off(text, "t.off", report, attributes);
     return report.notes;
 }
 
@@ -120,16 +140,33 @@ TEST_SUITE("ReadOff")
         CHECK(parse_off(cr) == m);
     }
 
-    TEST_CASE("COFF vertex colours are ignored with one note")
+    TEST_CASE("COFF vertex colours are kept, as integers or fractions, alpha where given")
     {
-        io::ReadReport report;
-        const Mesh m = parse_off(
+        const std::string text =
             "COFF\n5 2 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n1 1 0 0 0 255 255\n"
             "0 1 0 0.5 0.5 0.5 1\n2 0 0 10 20 30\n" +
-                kFaces,
-            &report);
-        CHECK(m == square());
-        CHECK(report.notes == std::vector<std::string>{"ignored vertex colours (COFF)"});
+            kFaces;
+        io::ReadReport report;
+        CHECK(parse_off(text, &report) == square());
+        CHECK(report.notes.empty());
+        const io::MeshAttributes a = off_attributes(text);
+        // A fraction makes them all fractions (double); the row without alpha is opaque.
+        CHECK(off_columns(a.vertex) == OffColumns{{"red", {255, 0, 0, 0.5, 10}},
+                                                  {"green", {0, 255, 0, 0.5, 20}},
+                                                  {"blue", {0, 0, 255, 0.5, 30}},
+                                                  {"alpha", {255, 255, 255, 1, 1}}});
+        CHECK(a.vertex.properties[0].type == io::ValueType::Float64);
+        CHECK(a.vertex.count == 5);
+        // Integers only: uchar, and no alpha column when no row has one.
+        const io::MeshAttributes ints = off_attributes("COFF\n2 0 0\n0 0 0 1 2 3\n1 0 0 4 5 6\n");
+        CHECK(off_columns(ints.vertex) ==
+              OffColumns{{"red", {1, 4}}, {"green", {2, 5}}, {"blue", {3, 6}}});
+        CHECK(ints.vertex.properties[0].type == io::ValueType::UInt8);
+        // Alpha on a later row only: the rows before and after are opaque.
+        const io::MeshAttributes late =
+            off_attributes("COFF\n3 0 0\n0 0 0 1 2 3\n1 0 0 4 5 6 7\n2 0 0 8 9 10\n");
+        CHECK(off_columns(late.vertex).back() ==
+              std::pair<std::string, std::vector<double>>{"alpha", {255, 7, 255}});
     }
 
     TEST_CASE("NOFF normals and every combination of ST, C and N are accepted")
@@ -137,29 +174,51 @@ TEST_SUITE("ReadOff")
         CHECK(parse_off("NOFF\n5 2 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n1 1 0 0 0 1\n0 1 0 0 0 1\n"
                         "2 0 0 0 0 1\n" +
                         kFaces) == square());
-        CHECK(notes_of("NOFF\n1 0 0\n0 0 0 0 0 1\n") ==
-              std::vector<std::string>{"ignored vertex normals (NOFF)"});
-        CHECK(notes_of("CNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1\n") ==
-              std::vector<std::string>{"ignored vertex normals and colours (CNOFF)"});
-        CHECK(notes_of("NCOFF\n1 0 0\n0 0 0 0 0 1 1 0 0\n") ==
-              std::vector<std::string>{"ignored vertex normals and colours (NCOFF)"});
-        CHECK(notes_of("STOFF\n1 0 0\n0 0 0 0.5 0.5\n") ==
-              std::vector<std::string>{"ignored vertex texture coordinates (STOFF)"});
-        CHECK(notes_of("STCNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1 0.5 0.5\n") ==
-              std::vector<std::string>{
-                  "ignored vertex normals, colours and texture coordinates (STCNOFF)"});
+        CHECK(notes_of("NOFF\n1 0 0\n0 0 0 0 0 1\n").empty());
+        CHECK(off_columns(off_attributes("NOFF\n1 0 0\n0 0 0 0 0 1\n").vertex) ==
+              OffColumns{{"nx", {0}}, {"ny", {0}}, {"nz", {1}}});
+        // Normals, then colours, then texture coordinates, whatever the keyword's order.
+        const OffColumns ncolour{{"nx", {0}},  {"ny", {0}},    {"nz", {1}},
+                                 {"red", {1}}, {"green", {0}}, {"blue", {0}}};
+        OffColumns with_alpha = ncolour;
+        with_alpha.emplace_back("alpha", std::vector<double>{1});
+        CHECK(off_columns(off_attributes("CNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1\n").vertex) ==
+              with_alpha);
+        CHECK(off_columns(off_attributes("NCOFF\n1 0 0\n0 0 0 0 0 1 1 0 0\n").vertex) == ncolour);
+        CHECK(off_columns(off_attributes("STOFF\n1 0 0\n0 0 0 0.5 0.25\n").vertex) ==
+              OffColumns{{"texture_u", {0.5}}, {"texture_v", {0.25}}});
+        OffColumns all = with_alpha;
+        all.emplace_back("texture_u", std::vector<double>{0.5});
+        all.emplace_back("texture_v", std::vector<double>{0.25});
+        CHECK(off_columns(
+                  off_attributes("STCNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1 0.5 0.25\n").vertex) == all);
+        CHECK(notes_of("STCNOFF\n1 0 0\n0 0 0 0 0 1 1 0 0 1 0.5 0.25\n").empty());
     }
 
-    TEST_CASE("face colours are ignored with one note naming the first")
+    TEST_CASE("face colours are kept when every face gives the same kind, else noted")
     {
+        const std::string rgba =
+            "OFF\n5 2 0\n" + kVertices + "4 0 1 2 3 0 255 0 1\n3 1 4 2 255 0 0 0.5\n";
         io::ReadReport report;
-        const Mesh m =
-            parse_off("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2 255 0 0 0.5\n", &report);
-        CHECK(m == square());
-        CHECK(report.notes == std::vector<std::string>{"ignored the colours of 1 face (first "
-                                                       "at t.off:9:1)"});
+        CHECK(parse_off(rgba, &report) == square());
+        CHECK(report.notes.empty());
+        CHECK(off_columns(off_attributes(rgba).face) ==
+              OffColumns{
+                  {"red", {0, 255}}, {"green", {255, 0}}, {"blue", {0, 0}}, {"alpha", {1, 0.5}}});
+        CHECK(off_columns(
+                  off_attributes("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3 7\n3 1 4 2 2\n").face) ==
+              OffColumns{{"colormap_index", {7, 2}}});
+        // Some faces without a colour, or with another kind: one note naming the first.
+        const std::string some = "OFF\n5 2 0\n" + kVertices + "4 0 1 2 3\n3 1 4 2 255 0 0 0.5\n";
+        CHECK(notes_of(some) ==
+              std::vector<std::string>{
+                  "ignored the colours of 1 face (first at t.off:9:1): faces give different "
+                  "numbers of colour values (kept when every face gives 1, 3 or 4)"});
+        CHECK(off_attributes(some).face.properties.empty());
         CHECK(notes_of("OFF\n5 2 0\n" + kVertices + "4 0 1 2 3 7\n3 1 4 2 1 1 1\n") ==
-              std::vector<std::string>{"ignored the colours of 2 faces (first at t.off:8:1)"});
+              std::vector<std::string>{
+                  "ignored the colours of 2 faces (first at t.off:8:1): faces give different "
+                  "numbers of colour values (kept when every face gives 1, 3 or 4)"});
     }
 
     TEST_CASE("undeclared values after a vertex are ignored with a note")
@@ -167,8 +226,9 @@ TEST_SUITE("ReadOff")
         CHECK(notes_of("OFF\n3 0 0\n0 0 0\n1 0 0 9 9 9\n0 1 0 9\n") ==
               std::vector<std::string>{
                   "ignored undeclared extra values on 2 vertex lines (first at t.off:4:1)"});
-        // A colour may have an alpha value.
-        CHECK(notes_of("COFF\n1 0 0\n0 0 0 1 1 1 1\n").size() == 1);
+        // A colour may have an alpha value; one more value is undeclared.
+        CHECK(notes_of("COFF\n1 0 0\n0 0 0 1 1 1 1\n").empty());
+        CHECK(notes_of("COFF\n1 0 0\n0 0 0 1 1 1 1 1\n").size() == 1);
     }
 
     TEST_CASE("repeated consecutive indices are collapsed and reported")
@@ -343,7 +403,7 @@ TEST_SUITE("WriteOff")
         m.add_face(quad);
         m.add_face(tri);
         std::string out;
-        io::write_off(m, out);
+        out = io::write_mesh_data(m, io::Format::Off);
         CHECK(out ==
               "OFF\n4 2 0\n0 0.1 -0\n1e+300 -2.5 0.3333333333333333\n5e-324 3 0\n1 1 1\n"
               "4 0 1 2 3\n3 3 2 1\n");

@@ -34,6 +34,30 @@ Mesh parse_ply(const std::string& data, io::ReadReport* report = nullptr)
     return test::read_as(data, io::Format::Ply, report);
 }
 
+io::MeshAttributes ply_attributes(const std::string& data)
+{
+    io::MeshAttributes attributes;
+    io::read_mesh_data(data, io::Format::Ply, "t.ply", nullptr, &attributes);
+    return attributes;
+}
+
+// A property as its name, type, count type (lists) and values, for comparisons.
+io::Property column(const char* name, io::ValueType type, std::vector<double> values)
+{
+    return io::Property{name, type, false, io::ValueType::UInt8, std::move(values), {}};
+}
+io::Property list_column(const char* name, io::ValueType count_type, io::ValueType type,
+                         std::vector<std::vector<double>> rows)
+{
+    io::Property p{name, type, true, count_type, {}, {0}};
+    for (const std::vector<double>& row : rows)
+    {
+        p.values.insert(p.values.end(), row.begin(), row.end());
+        p.offsets.push_back(static_cast<Index>(p.values.size()));
+    }
+    return p;
+}
+
 std::string ply_error(const std::string& data)
 {
     return test::read_error(data, io::Format::Ply);
@@ -245,7 +269,7 @@ TEST_SUITE("ReadPly")
         CHECK(m.position(0) == Vec3{0.1, 3.4028235e38, -7});
     }
 
-    TEST_CASE("extra vertex and face properties are skipped and noted in every encoding")
+    TEST_CASE("extra vertex and face properties are kept in their types in every encoding")
     {
         const std::string declarations =
             "element vertex 3\nproperty float nx\nproperty double x\nproperty float ny\n"
@@ -269,15 +293,30 @@ TEST_SUITE("ReadPly")
         {
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
-            CHECK(parse_ply(ply(encoding, declarations, rows), &report) == expected);
-            CHECK(report.notes ==
-                  std::vector<std::string>{"skipped vertex properties 'nx', 'ny', 'nz', 'red', "
-                                           "'green', 'blue', 'texcoord'",
-                                           "skipped face properties 'flags', 'uv', 'material'"});
+            const std::string data = ply(encoding, declarations, rows);
+            CHECK(parse_ply(data, &report) == expected);
+            CHECK(report.notes.empty());
+            using T = io::ValueType;
+            const io::MeshAttributes a = ply_attributes(data);
+            CHECK(a.vertex.count == 3);
+            CHECK(a.vertex.properties ==
+                  std::vector<io::Property>{
+                      column("nx", T::Float32, {0.25, 0.25, 0.25}),
+                      column("ny", T::Float32, {-1, -1, -1}), column("nz", T::Float32, {0, 0, 0}),
+                      column("red", T::UInt8, {255, 255, 255}),
+                      column("green", T::UInt8, {0, 0, 0}), column("blue", T::UInt8, {17, 17, 17}),
+                      list_column("texcoord", T::UInt8, T::Float32, {{0.5, 0.75}, {}, {1, 2}})});
+            CHECK(a.face.count == 2);
+            CHECK(a.face.properties ==
+                  std::vector<io::Property>{
+                      column("flags", T::UInt8, {7, 0}),
+                      list_column("uv", T::UInt16, T::Float32, {{}, {1, 2, 3, 4, 5, 6}}),
+                      column("material", T::Int32, {-5, 1 << 20})});
+            CHECK(a.other_elements.empty());
         }
     }
 
-    TEST_CASE("other elements before, between and after are skipped and noted")
+    TEST_CASE("other elements before, between and after are kept whole")
     {
         const std::string declarations =
             "element material 2\nproperty uchar ambient_red\nproperty float power\n" +
@@ -295,10 +334,26 @@ TEST_SUITE("ReadPly")
         {
             CAPTURE(io::encoding_name(encoding));
             io::ReadReport report;
-            CHECK(parse_ply(ply(encoding, declarations, rows), &report) == two_triangles());
-            CHECK(report.notes ==
-                  std::vector<std::string>{"skipped 4 elements: 'material' (2 rows), 'edge' (2 "
-                                           "rows), 'nothing' (5 rows), 'range_grid' (1 row)"});
+            const std::string data = ply(encoding, declarations, rows);
+            CHECK(parse_ply(data, &report) == two_triangles());
+            CHECK(report.notes.empty());
+            using T = io::ValueType;
+            const io::MeshAttributes a = ply_attributes(data);
+            CHECK(a.vertex.properties.empty());
+            CHECK(a.face.properties.empty());
+            CHECK(
+                a.other_elements ==
+                std::vector<io::Element>{
+                    {"material",
+                     2,
+                     {column("ambient_red", T::UInt8, {1, 3}),
+                      column("power", T::Float32, {2.5, 4})}},
+                    {"edge",
+                     2,
+                     {column("vertex1", T::Int32, {0, 2}), column("vertex2", T::Int32, {1, 3}),
+                      list_column("chain", T::UInt8, T::Int32, {{0, 1, 2, 3}, {}})}},
+                    {"nothing", 5, {}},
+                    {"range_grid", 1, {list_column("vertex_indices", T::UInt8, T::Int32, {{0}})}}});
         }
     }
 
@@ -500,7 +555,7 @@ TEST_SUITE("ReadPly")
         for (const Encoding encoding : kEncodings)
         {
             std::string out;
-            io::write_ply(m, encoding, out);
+            out = io::write_mesh_data(m, io::Format::Ply, {encoding});
             io::ReadReport report;
             CHECK(parse_ply(out, &report) == m);
             CHECK(report.notes.empty());
@@ -749,8 +804,7 @@ TEST_SUITE("ReadPly")
                                                 tri(0, 2, 3) + Row{{"uchar", 9}}});
         CHECK(ply_error(material + cut) ==
               "t.ply: byte " + std::to_string(material.size() + 48 + 15 + 13) +
-                  " (face 1, property m): file ends inside this element (needs 2 more bytes, 1 "
-                  "left)");
+                  " (face 1, property m): file ends inside this value (needs 2 bytes, 1 left)");
 
         // A list on a skipped element whose count runs past the data.
         const std::string edges =
@@ -795,9 +849,9 @@ TEST_SUITE("WritePly")
         {
             CAPTURE(io::encoding_name(encoding));
             std::string out;
-            io::write_ply(m, encoding, out);
+            out = io::write_mesh_data(m, io::Format::Ply, {encoding});
             io::ReadReport report;
-            const Mesh back = io::read_ply(out, "round-trip", report);
+            const Mesh back = io::read_mesh_data(out, io::Format::Ply, "round-trip", &report);
             CHECK(back == m);
             CHECK(std::memcmp(back.positions.data(), m.positions.data(),
                               m.positions.size() * sizeof(double)) == 0);
@@ -811,7 +865,7 @@ TEST_SUITE("WritePly")
         const Mesh m = test::make_mesh({{0.1, -2, 1e-7}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}},
                                        {{0, 1, 3, 2}, {0, 1, 2}});
         std::string out;
-        io::write_ply(m, Encoding::Ascii, out);
+        out = io::write_mesh_data(m, io::Format::Ply, {Encoding::Ascii});
         CHECK(out == "ply\nformat ascii 1.0\ncomment MeshFair\n" + vertex_decl(4, "double") +
                          face_decl(2) +
                          "end_header\n0.1 -2 1e-07\n1 0 0\n0 1 0\n1 1 0\n4 0 1 3 2\n3 0 1 2\n");
@@ -823,7 +877,7 @@ TEST_SUITE("WritePly")
         for (const Encoding encoding : {Encoding::BinaryLittleEndian, Encoding::BinaryBigEndian})
         {
             std::string out;
-            io::write_ply(m, encoding, out);
+            out = io::write_mesh_data(m, io::Format::Ply, {encoding});
             Bytes expected{encoding == Encoding::BinaryBigEndian, {}};
             for (double x : m.positions)
                 expected.put(x);
@@ -849,10 +903,10 @@ TEST_SUITE("WritePly")
         {
             CAPTURE(io::encoding_name(encoding));
             std::string out;
-            io::write_ply(m, encoding, out);
+            out = io::write_mesh_data(m, io::Format::Ply, {encoding});
             CHECK(out.find(face_decl(2, "uint") + "end_header\n") != std::string::npos);
             io::ReadReport report;
-            CHECK(io::read_ply(out, "long.ply", report) == m);
+            CHECK(io::read_mesh_data(out, io::Format::Ply, "long.ply", &report) == m);
         }
     }
 
@@ -862,7 +916,7 @@ TEST_SUITE("WritePly")
             for (const Encoding encoding : kEncodings)
             {
                 std::string out;
-                io::write_ply(m, encoding, out);
+                out = io::write_mesh_data(m, io::Format::Ply, {encoding});
                 CHECK(out.find(face_decl(0) + "end_header\n") != std::string::npos);
                 CHECK(parse_ply(out) == m);
             }

@@ -260,16 +260,34 @@ TEST_SUITE("ReadStl")
               std::vector<std::string>{"no vertices: the file holds an empty mesh"});
     }
 
-    TEST_CASE("non-zero attribute bytes are ignored with a note")
+    TEST_CASE("non-zero attribute bytes are kept as the face property stl_attribute")
     {
         io::ReadReport report;
-        parse_stl(BinaryStl(2)
-                      .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, 0x7C00)
-                      .triangle({1, 0, 0, 1, 1, 0, 0, 1, 0})
-                      .bytes,
-                  &report);
-        CHECK(report.notes.back() ==
-              "ignored the attribute bytes of 1 triangle (some exporters store colours there)");
+        const std::string coloured = BinaryStl(2)
+                                         .triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}, 0x7C00)
+                                         .triangle({1, 0, 0, 1, 1, 0, 0, 1, 0})
+                                         .bytes;
+        parse_stl(coloured, &report);
+        CHECK(report.notes == std::vector<std::string>{"welded 6 corners into 4 vertices by exact "
+                                                       "position"});
+        io::MeshAttributes a;
+        io::read_mesh_data(coloured, io::Format::Stl, "t.stl", nullptr, &a);
+        CHECK(a.face.count == 2);
+        CHECK(a.face.properties == std::vector<io::Property>{{"stl_attribute",
+                                                              io::ValueType::UInt16,
+                                                              false,
+                                                              io::ValueType::UInt8,
+                                                              {0x7C00, 0},
+                                                              {}}});
+        // Written back into the attribute bytes of a binary STL, on every triangle of a face.
+        const std::string again = io::write_mesh_data(
+            io::read_mesh_data(coloured, io::Format::Stl, "t.stl"), io::Format::Stl, {}, &a);
+        CHECK(again.substr(84 + 48, 2) == std::string("\x00\x7C", 2));
+        CHECK(again.substr(84 + 50 + 48, 2) == std::string("\0\0", 2));
+        // All zeros: nothing kept.
+        io::read_mesh_data(BinaryStl(1).triangle({0, 0, 0, 1, 0, 0, 0, 1, 0}).bytes,
+                           io::Format::Stl, "t.stl", nullptr, &a);
+        CHECK(a.empty());
     }
 
     TEST_CASE("ASCII coordinates are read exactly as strtod reads them")
@@ -421,7 +439,7 @@ TEST_SUITE("WriteStl")
         Mesh m = test::icosphere(1);
         test::perturb(m, 0.01, 3);
         std::string out;
-        io::write_stl(m, io::Encoding::Ascii, out);
+        out = io::write_mesh_data(m, io::Format::Stl, {io::Encoding::Ascii});
         CHECK(out.starts_with("solid meshfair\n  facet normal "));
         CHECK(out.ends_with("    endloop\n  endfacet\nendsolid meshfair\n"));
         const Mesh back = parse_stl(out);
@@ -444,7 +462,7 @@ TEST_SUITE("WriteStl")
              {io::Encoding::BinaryLittleEndian, io::Encoding::BinaryBigEndian})
         {
             std::string out;
-            io::write_stl(m, e, out);
+            out = io::write_mesh_data(m, io::Format::Stl, {e});
             CHECK(out.size() == 84 + 50 * static_cast<size_t>(m.face_count()));
             CHECK(parse_stl(out) == in_order_of_first_use(m));
         }
@@ -463,7 +481,7 @@ TEST_SUITE("WriteStl")
                 for (double& x : input.positions)
                     x = static_cast<float>(x);
             std::string out;
-            io::write_stl(input, e, out);
+            out = io::write_mesh_data(input, io::Format::Stl, {e});
             CHECK(parse_stl(out) == in_order_of_first_use(fan_triangulated(input)));
         }
     }
@@ -472,7 +490,7 @@ TEST_SUITE("WriteStl")
     {
         const Mesh m = test::quad_cube();
         std::string out;
-        io::write_stl(m, io::Encoding::BinaryLittleEndian, out);
+        out = io::write_mesh_data(m, io::Format::Stl, {io::Encoding::BinaryLittleEndian});
         REQUIRE(out.size() == 84 + 12 * 50);
         CHECK(out.substr(0, 80) == "MeshFair binary STL" + std::string(61, ' '));
         CHECK(read_le<std::uint32_t>(out, 80) == 12);
@@ -497,7 +515,7 @@ TEST_SUITE("WriteStl")
         m.add_face(tri);
         m.add_face(flat);
         std::string out;
-        io::write_stl(m, io::Encoding::Ascii, out);
+        out = io::write_mesh_data(m, io::Format::Stl, {io::Encoding::Ascii});
         CHECK(out.find("facet normal 0 -1 0\n") != std::string::npos);
         CHECK(out.find("facet normal 0 0 0\n") != std::string::npos);
     }
@@ -505,8 +523,8 @@ TEST_SUITE("WriteStl")
     TEST_CASE("an empty mesh writes a valid empty file in both encodings")
     {
         std::string ascii, binary;
-        io::write_stl(Mesh{}, io::Encoding::Ascii, ascii);
-        io::write_stl(Mesh{}, io::Encoding::BinaryLittleEndian, binary);
+        ascii = io::write_mesh_data(Mesh{}, io::Format::Stl, {io::Encoding::Ascii});
+        binary = io::write_mesh_data(Mesh{}, io::Format::Stl, {io::Encoding::BinaryLittleEndian});
         CHECK(ascii == "solid meshfair\nendsolid meshfair\n");
         CHECK(binary.size() == 84);
         CHECK(parse_stl(ascii) == Mesh{});
@@ -518,11 +536,12 @@ TEST_SUITE("WriteStl")
         Mesh m = test::tetrahedron();
         m.positions[4] = 1e300;
         std::string out;
-        CHECK_THROWS_WITH_AS(io::write_stl(m, io::Encoding::BinaryLittleEndian, out),
-                             "write_stl: vertex 1 has a coordinate beyond the float32 range of "
-                             "binary STL; write ASCII STL instead",
-                             InvalidInputError);
-        io::write_stl(m, io::Encoding::Ascii, out);
+        CHECK_THROWS_WITH_AS(
+            out = io::write_mesh_data(m, io::Format::Stl, {io::Encoding::BinaryLittleEndian}),
+            "write_stl: vertex 1 has a coordinate beyond the float32 range of "
+            "binary STL; write ASCII STL instead",
+            InvalidInputError);
+        out = io::write_mesh_data(m, io::Format::Stl, {io::Encoding::Ascii});
         CHECK(parse_stl(out).positions[3 * 1 + 1] == 1e300);
     }
 }
