@@ -83,6 +83,11 @@ std::string read_error(const std::string& data, io::Format format)
     return "accepted";
 }
 
+io::Property property(const char* name, io::ValueType type, std::vector<double> values)
+{
+    return io::Property{name, type, false, io::ValueType::UInt8, std::move(values), {}};
+}
+
 Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces)
 {
     Mesh m;

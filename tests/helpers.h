@@ -41,6 +41,9 @@ Mesh read_as(const std::string& data, io::Format format, io::ReadReport* report 
 //! The message of the FormatError that reading `data` raises, or "accepted".
 std::string read_error(const std::string& data, io::Format format);
 
+//! A scalar attribute property: its name, type and one value per row.
+io::Property property(const char* name, io::ValueType type, std::vector<double> values);
+
 //! A mesh from points and faces.
 Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces);
 //! 0, 1, ..., n - 1.

@@ -3,6 +3,8 @@
 // Playing a script: its commands dispatched, its raw input through the input router.
 #include "app/editor/script.h"
 
+#include <iostream>
+
 #include "app/editor/editor_frame.h"
 #include "core/errors.h"
 
@@ -177,6 +179,11 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                             throw WriteError(a.where + ": " + session.state().message);
                         script_error(script.name, a.where, session.state().message);
                     }
+                    // What a save wrote, and what its format could not hold, as the status
+                    // line tells a person.
+                    if (a.writes)
+                        std::cerr << "meshfair: " << a.where << ": " << session.state().message
+                                  << "\n";
                 }
                 if (!a.interaction.empty())
                     session.end_interaction();

@@ -212,11 +212,8 @@ void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& to
     for (std::vector<Index>& f : face)
         f.clear();
     bool given[2] = {false, false}, missing[2] = {false, false};
-    std::string_view first_token;
     for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
     {
-        if (first_token.empty())
-            first_token = t;
         if (!first_part && t.find('-') != std::string_view::npos)
             throw RangeNeedsContext{};
         std::string_view parts[3];
@@ -271,8 +268,7 @@ void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& to
             if (!first_part)
                 throw RangeNeedsContext{};
             if (part.tally.partial_faces[l]++ == 0)
-                part.tally.first_partial[l] =
-                    reader.here(reader.column_of(first_token)).to_string();
+                part.tally.first_partial[l] = reader.here(reader.column_of(keyword)).to_string();
         }
         if (!given[l] || missing[l])
             face[l + 1].clear();
@@ -391,6 +387,7 @@ Mesh finish(ObjPart& part, const std::string& name, ReadReport& report, MeshAttr
                     std::to_string(part.references[l].max_index + 1) + " is past " + last[l] +
                     " (the file defines " + std::to_string(counts[l]) + ")");
     attributes = MeshAttributes{};
+    add_notes(part.tally, report);
     const std::int64_t coloured = part.tally.coloured_vertices;
     if (coloured > 0 && coloured == mesh.vertex_count())
     {
@@ -425,7 +422,6 @@ Mesh finish(ObjPart& part, const std::string& name, ReadReport& report, MeshAttr
                                    (l == 0 ? "texture coordinates (vt)" : "normals (vn)") +
                                    " that no face uses");
     attributes.statements = std::move(part.statements);
-    add_notes(part.tally, report);
     return std::move(mesh);
 }
 

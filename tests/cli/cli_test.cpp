@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -31,6 +32,54 @@ Run cli(const std::string& args)
 std::string bunny()
 {
     return test::shell_quote((test::assets_dir() / "bunny.obj").string());
+}
+
+// A textured scan patch as exporters write it: a wavy 20 x 20 quad grid with a texture
+// seam down its middle (the right half's faces have their own texture coordinates), one
+// normal and one colour per vertex, a material library, a group and a smoothing group.
+std::string textured_patch_obj()
+{
+    const int n = 20;
+    std::string s = "mtllib patch.mtl\no patch\n";
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            s += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
+                 std::to_string(0.3 * std::sin(1.7 * x + 2.3 * y)) + " " +
+                 std::to_string(x / double(n)) + " 0.5 " + std::to_string(y / double(n)) + "\n";
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            s += "vt " + std::to_string(x / double(n)) + " " + std::to_string(y / double(n)) + "\n";
+    for (int y = 0; y <= n; ++y) // the right half's own vt: a seam at x = 10
+        for (int x = n / 2; x <= n; ++x)
+            s += "vt " + std::to_string(0.5 + x / double(2 * n)) + " " +
+                 std::to_string(y / double(n)) + "\n";
+    for (int k = 0; k < (n + 1) * (n + 1); ++k)
+        s += "vn 0 0 1\n";
+    s += "g patch\nusemtl skin\ns 1\n";
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x)
+        {
+            s += "f";
+            for (const auto& [dx, dy] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}})
+            {
+                const int v = (y + dy) * (n + 1) + x + dx + 1;
+                const int t =
+                    x < n / 2 ? v
+                              : (n + 1) * (n + 1) + (y + dy) * (n / 2 + 1) + (x + dx - n / 2) + 1;
+                s += " " + std::to_string(v) + "/" + std::to_string(t) + "/" + std::to_string(v);
+            }
+            s += "\n";
+        }
+    return s;
+}
+
+io::MeshAttributes attributes_of(const std::string& path, Mesh* mesh = nullptr)
+{
+    io::MeshAttributes a;
+    const Mesh m = io::read_mesh(path, nullptr, &a);
+    if (mesh)
+        *mesh = m;
+    return a;
 }
 
 } // namespace
@@ -208,6 +257,72 @@ TEST_SUITE("Cli")
         CHECK(io::read_mesh(out).vertex_count() == 3);
     }
 
+    TEST_CASE("smooth keeps texture coordinates, colours, groups and materials, normals renewed")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string in = (dir / "patch.obj").string(), out = (dir / "smooth.obj").string(),
+                          report = (dir / "r.json").string();
+        test::write_bytes(in, textured_patch_obj());
+        Mesh input;
+        const io::MeshAttributes before = attributes_of(in, &input);
+        REQUIRE(before.texcoords.entry_count() == 441 + 231);
+        const Run r = cli("smooth " + test::shell_quote(in) + " -o " + test::shell_quote(out) +
+                          " --iterations 10 --report " + test::shell_quote(report) + " -q");
+        REQUIRE(r.code == 0);
+        CHECK(r.err.empty()); // OBJ holds everything: no note
+        Mesh output;
+        const io::MeshAttributes after = attributes_of(out, &output);
+        CHECK(output.positions != input.positions);
+        CHECK(output.face_vertices == input.face_vertices);
+        CHECK(after.texcoords == before.texcoords); // the seam included
+        CHECK(after.vertex == before.vertex);
+        CHECK(after.statements == before.statements);
+        // The normals are those of the smoothed surface (one per vertex, as in the file).
+        REQUIRE(after.normals.entry_count() == 441);
+        io::MeshAttributes expected = before;
+        io::recompute_normals(output, expected);
+        CHECK(after.normals.corners == expected.normals.corners);
+        for (size_t k = 0; k < after.normals.values.size(); ++k)
+            CHECK(after.normals.values[k] == expected.normals.values[k]);
+        CHECK(after.normals.values != before.normals.values);
+        const auto j = nlohmann::json::parse(io::read_file(report));
+        CHECK(j["output_notes"].empty());
+        CHECK(j["attributes"][0] == "vertex colours (red green blue: double)");
+
+        // --keep-normals: the file's normals, with a note.
+        const Run keep = cli("smooth " + test::shell_quote(in) + " -o " + test::shell_quote(out) +
+                             " --iterations 10 --keep-normals -q");
+        CHECK(keep.code == 0);
+        CHECK(keep.err == "meshfair-cli: note: '" + out +
+                              "': normals written as read, not recomputed from the positions "
+                              "written\n");
+        CHECK(attributes_of(out).normals == before.normals);
+
+        // To PLY: per-corner texture coordinates (the seam) and colours kept, groups named.
+        const std::string ply = (dir / "smooth.ply").string();
+        const Run to_ply = cli("smooth " + test::shell_quote(in) + " -o " + test::shell_quote(ply) +
+                               " --iterations 10 -q");
+        CHECK(to_ply.code == 0);
+        CHECK(to_ply.err.find("'" + ply +
+                              "': PLY cannot hold the OBJ groups, objects, smoothing "
+                              "groups and materials 'mtllib patch.mtl', 'o patch', 'g patch', "
+                              "'usemtl skin', 's 1'; they are not written") != std::string::npos);
+        Mesh from_ply;
+        const io::MeshAttributes ply_attributes = attributes_of(ply, &from_ply);
+        CHECK(ply_attributes.vertex.find("red")->values == before.vertex.find("red")->values);
+        const io::CornerValues t = io::corner_texcoords(from_ply, ply_attributes);
+        CHECK(t.corners.size() == 1600);
+        bool all_equal = true;
+        for (size_t k = 0; k < t.corners.size(); ++k)
+            for (size_t a = 0; a < 2; ++a)
+                all_equal =
+                    all_equal &&
+                    t.values[2 * static_cast<size_t>(t.corners[k]) + a] ==
+                        before.texcoords
+                            .values[2 * static_cast<size_t>(before.texcoords.corners[k]) + a];
+        CHECK(all_equal);
+    }
+
     TEST_CASE("an unwritable output exits 3 and leaves the existing file intact")
     {
         const fs::path dir = test::temp_dir();
@@ -289,6 +404,23 @@ TEST_SUITE("Cli")
                             test::shell_quote(out.string()) + " --format ply");
         CHECK(ply.code == 0);
         CHECK(io::read_mesh((out / "tri.ply").string()).vertex_count() == 4);
+
+        // Attributes are kept as smooth keeps them, and what the format cannot hold is in
+        // the file's report.
+        test::write_bytes(in / "patch.obj", textured_patch_obj());
+        const Run stl = cli("batch " + test::shell_quote((in / "patch.obj").string()) +
+                            " --recipe " + test::shell_quote(recipe) + " --out-dir " +
+                            test::shell_quote(out.string()) + " --format stl");
+        CHECK(stl.code == 0);
+        const auto line = nlohmann::json::parse(stl.out);
+        CHECK(line["report"]["output_notes"][0] ==
+              "STL cannot hold the vertex properties 'red', 'green', 'blue'; they are not written");
+        const Run obj =
+            cli("batch " + test::shell_quote((in / "patch.obj").string()) + " --recipe " +
+                test::shell_quote(recipe) + " --out-dir " + test::shell_quote(out.string()));
+        CHECK(obj.code == 0);
+        CHECK(attributes_of((out / "patch.obj").string()).texcoords ==
+              attributes_of((in / "patch.obj").string()).texcoords);
     }
 
     TEST_CASE("batch refuses before any work: two inputs to one output, a bad recipe")

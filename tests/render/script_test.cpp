@@ -28,15 +28,15 @@ namespace {
 
 // Plays `script` (JSON text) on the bunny offscreen; returns the run and the screenshot.
 test::CommandRun play(const std::string& script, const fs::path& png,
-                      const std::string& options = "--size 480x360")
+                      const std::string& options = "--size 480x360",
+                      const fs::path& mesh = test::assets_dir() / "bunny.obj")
 {
     const fs::path path = png.parent_path() / (png.stem().string() + ".json");
     test::write_bytes(path, script);
-    return test::run_command("env -u DISPLAY GALLIUM_DRIVER=llvmpipe " +
-                             test::shell_quote(MESHFAIR_EDITOR) + " --offscreen " +
-                             test::shell_quote((test::assets_dir() / "bunny.obj").string()) + " " +
-                             options + " --script " + test::shell_quote(path.string()) +
-                             " --screenshot " + test::shell_quote(png.string()));
+    return test::run_command(
+        "env -u DISPLAY GALLIUM_DRIVER=llvmpipe " + test::shell_quote(MESHFAIR_EDITOR) +
+        " --offscreen " + test::shell_quote(mesh.string()) + " " + options + " --script " +
+        test::shell_quote(path.string()) + " --screenshot " + test::shell_quote(png.string()));
 }
 
 // A stroke across the bunny's flank; a zoom onto its haunch and a lasso there (480 x 360).
@@ -239,6 +239,53 @@ TEST_SUITE("Scripted sessions")
         const Mesh copy = io::read_mesh(saved.string());
         CHECK(copy.positions == bunny.positions);
         CHECK(copy.face_count() == bunny.face_count());
+    }
+
+    TEST_CASE("the editor's save keeps the file's texture coordinates, colours and groups")
+    {
+        // A quad grid with a texture seam, vertex colours, normals, a group and a material.
+        const fs::path dir = test::temp_dir();
+        std::string obj = "mtllib grid.mtl\n";
+        const Mesh grid = test::open_grid(6, 4);
+        for (Index v = 0; v < grid.vertex_count(); ++v)
+            obj += "v " + std::to_string(grid.position(v)[0]) + " " +
+                   std::to_string(grid.position(v)[1]) + " " + std::to_string(0.2 * (v % 3)) +
+                   " 0.25 0.5 " + std::to_string(v / 40.0) + "\n";
+        for (Index f = 0; f < grid.face_count(); ++f)
+            for (int k = 0; k < 4; ++k)
+                obj += "vt " + std::to_string(f / 24.0) + " " + std::to_string(k / 4.0) + "\n";
+        obj += "vn 0 0 1\ng sheet\nusemtl cloth\n";
+        for (Index f = 0; f < grid.face_count(); ++f)
+        {
+            obj += "f";
+            for (int k = 0; k < 4; ++k)
+                obj += " " + std::to_string(grid.face(f)[static_cast<size_t>(k)] + 1) + "/" +
+                       std::to_string(4 * f + k + 1) + "/1";
+            obj += "\n";
+        }
+        const fs::path in = dir / "sheet.obj", saved = dir / "saved.obj", ply = dir / "saved.ply";
+        test::write_bytes(in, obj);
+        const test::CommandRun run = play(R"([{"step": 5}, {"save_mesh": ")" + saved.string() +
+                                              R"("}, {"save_mesh": ")" + ply.string() + R"("}])",
+                                          dir / "sheet.png", "--size 320x240", in);
+        REQUIRE(run.code == 0);
+        io::MeshAttributes before, after, as_ply;
+        const Mesh original = io::read_mesh(in.string(), nullptr, &before);
+        const Mesh copy = io::read_mesh(saved.string(), nullptr, &after);
+        const Mesh ply_copy = io::read_mesh(ply.string(), nullptr, &as_ply);
+        CHECK(copy.positions != original.positions); // smoothed
+        CHECK(copy.face_vertices == original.face_vertices);
+        CHECK(after.texcoords == before.texcoords);
+        CHECK(after.vertex == before.vertex);
+        CHECK(after.statements == before.statements);
+        io::MeshAttributes renewed = before;
+        io::recompute_normals(copy, renewed);
+        CHECK(after.normals == renewed.normals); // of the saved shape
+        CHECK(as_ply.vertex.find("red") != nullptr);
+        // What PLY cannot hold is said where the editor reports (its status line).
+        CHECK(run.err.find("PLY cannot hold the OBJ groups, objects, smoothing groups and "
+                           "materials 'mtllib grid.mtl', 'g sheet', 'usemtl cloth'") !=
+              std::string::npos);
     }
 
     TEST_CASE("scripts are refused with the file and the action named, before anything runs")

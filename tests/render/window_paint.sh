@@ -6,7 +6,8 @@
 #     in colour (green, weight 1/2 at the default strength, under the stroke, over blue, in a
 #     screenshot taken from outside the editor);
 #  2. the recipe exported through the File menu reproduces the saved shape through
-#     meshfair-cli, and the stroke the trace prints, played as a script offscreen, too;
+#     meshfair-cli, and the stroke the trace prints, played as a script offscreen, too; the
+#     save (Ctrl+Shift+S, a name typed) keeps the scan's vertex colours, group and material;
 #  3. "subtract weight" clicked in the Paint panel, a stroke, Ctrl+Z: one undo step each;
 #     an anchor set made with the selection brush, picked from the "paint set" menu, its
 #     map lowered with a curve from the menu and a dragged strength (red at weight 1 in a
@@ -29,6 +30,11 @@ name=paint
 . "$(dirname "$0")/window_support.sh"
 fresh_work_dir "$work"
 "$cli" noise "$bunny" -o "$work/noisy.obj" --sigma 0.3 --seed 4 >/dev/null
+# A scan's colours on every vertex, a group and a material, which a save must keep.
+awk '/^v / { printf "%s %.3f 0.5 %.3f\n", $0, (NR % 97) / 96, (NR % 13) / 12; next }
+     /^f / && !grouped { print "g bunny"; print "usemtl clay"; grouped = 1 } { print }' \
+    "$work/noisy.obj" >"$work/coloured.obj"
+mv "$work/coloured.obj" "$work/noisy.obj"
 cp "$work/noisy.obj" "$work/input.obj"
 start_editor "$meshfair" "$work/noisy.obj" "$work/editor.log" "$work/widgets.tsv"
 
@@ -74,6 +80,11 @@ wait_line "command save: ok"
 same_vertices "$work/cli.obj" "$work/stroked.obj" ||
     fail "meshfair-cli with the exported recipe does not give the stroke's shape"
 same_vertices "$work/input.obj" "$work/stroked.obj" && fail "the stroke moved nothing"
+colours() { awk '/^v / { printf "%.9g %.9g %.9g\n", $5, $6, $7 }' "$1"; }
+cmp -s <(colours "$work/input.obj") <(colours "$work/stroked.obj") ||
+    fail "the save did not keep the vertex colours"
+[ "$(grep -c '^g bunny$\|^usemtl clay$' "$work/stroked.obj")" = 2 ] ||
+    fail "the save did not keep the group and the material"
 stroke=$(grep '^stroke ' "$log" | tail -1 | cut -d' ' -f2-)
 echo "{\"actions\": [$stroke, {\"save_mesh\": \"$work/replayed.obj\"}]}" >"$work/replay.json"
 env -u DISPLAY "$meshfair" --offscreen "$work/input.obj" --script "$work/replay.json" \

@@ -41,11 +41,6 @@ io::MeshAttributes ply_attributes(const std::string& data)
     return attributes;
 }
 
-// A property as its name, type, count type (lists) and values, for comparisons.
-io::Property column(const char* name, io::ValueType type, std::vector<double> values)
-{
-    return io::Property{name, type, false, io::ValueType::UInt8, std::move(values), {}};
-}
 io::Property list_column(const char* name, io::ValueType count_type, io::ValueType type,
                          std::vector<std::vector<double>> rows)
 {
@@ -301,17 +296,19 @@ TEST_SUITE("ReadPly")
             CHECK(a.vertex.count == 3);
             CHECK(a.vertex.properties ==
                   std::vector<io::Property>{
-                      column("nx", T::Float32, {0.25, 0.25, 0.25}),
-                      column("ny", T::Float32, {-1, -1, -1}), column("nz", T::Float32, {0, 0, 0}),
-                      column("red", T::UInt8, {255, 255, 255}),
-                      column("green", T::UInt8, {0, 0, 0}), column("blue", T::UInt8, {17, 17, 17}),
+                      test::property("nx", T::Float32, {0.25, 0.25, 0.25}),
+                      test::property("ny", T::Float32, {-1, -1, -1}),
+                      test::property("nz", T::Float32, {0, 0, 0}),
+                      test::property("red", T::UInt8, {255, 255, 255}),
+                      test::property("green", T::UInt8, {0, 0, 0}),
+                      test::property("blue", T::UInt8, {17, 17, 17}),
                       list_column("texcoord", T::UInt8, T::Float32, {{0.5, 0.75}, {}, {1, 2}})});
             CHECK(a.face.count == 2);
             CHECK(a.face.properties ==
                   std::vector<io::Property>{
-                      column("flags", T::UInt8, {7, 0}),
+                      test::property("flags", T::UInt8, {7, 0}),
                       list_column("uv", T::UInt16, T::Float32, {{}, {1, 2, 3, 4, 5, 6}}),
-                      column("material", T::Int32, {-5, 1 << 20})});
+                      test::property("material", T::Int32, {-5, 1 << 20})});
             CHECK(a.other_elements.empty());
         }
     }
@@ -346,11 +343,12 @@ TEST_SUITE("ReadPly")
                 std::vector<io::Element>{
                     {"material",
                      2,
-                     {column("ambient_red", T::UInt8, {1, 3}),
-                      column("power", T::Float32, {2.5, 4})}},
+                     {test::property("ambient_red", T::UInt8, {1, 3}),
+                      test::property("power", T::Float32, {2.5, 4})}},
                     {"edge",
                      2,
-                     {column("vertex1", T::Int32, {0, 2}), column("vertex2", T::Int32, {1, 3}),
+                     {test::property("vertex1", T::Int32, {0, 2}),
+                      test::property("vertex2", T::Int32, {1, 3}),
                       list_column("chain", T::UInt8, T::Int32, {{0, 1, 2, 3}, {}})}},
                     {"nothing", 5, {}},
                     {"range_grid", 1, {list_column("vertex_indices", T::UInt8, T::Int32, {{0}})}}});
