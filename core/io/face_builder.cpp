@@ -15,14 +15,21 @@ FaceCheck normalize_face(std::vector<Index>& face, std::vector<Index>* texcoords
         if (c && c->empty())
             c = nullptr;
     size_t kept = 0;
-    for (size_t k = 0; k < face.size(); ++k)
-        if (kept == 0 || face[k] != face[kept - 1])
-        {
-            for (std::vector<Index>* c : corners)
-                if (c)
-                    (*c)[kept] = (*c)[k];
-            face[kept++] = face[k];
-        }
+    if (!corners[0] && !corners[1]) // every reader's every face: the plain loop
+    {
+        for (size_t k = 0; k < face.size(); ++k)
+            if (kept == 0 || face[k] != face[kept - 1])
+                face[kept++] = face[k];
+    }
+    else
+        for (size_t k = 0; k < face.size(); ++k)
+            if (kept == 0 || face[k] != face[kept - 1])
+            {
+                for (std::vector<Index>* c : corners)
+                    if (c)
+                        (*c)[kept] = (*c)[k];
+                face[kept++] = face[k];
+            }
     while (kept > 1 && face[kept - 1] == face[0])
         --kept;
     check.collapsed = static_cast<int>(face.size() - kept);

@@ -40,7 +40,8 @@ enum List
     kTexture,
     kNormal
 };
-constexpr const char* kIndexName[] = {"vertex index", "texture coordinate index", "normal index"};
+constexpr std::string_view kIndexName[] = {"vertex index", "texture coordinate index",
+                                           "normal index"};
 constexpr const char* kFirst[] = {"vertex", "texture coordinate (vt)", "normal (vn)"};
 constexpr const char* kDefined[] = {"vertices", "texture coordinates", "normals"};
 
@@ -48,25 +49,28 @@ constexpr const char* kDefined[] = {"vertices", "texture coordinates", "normals"
 // entries of its list defined so far. Forward references (positive indices past the
 // entries read so far) are legal in OBJ and checked against the final count by the
 // caller.
-std::int64_t corner_index(const LineReader& reader, std::string_view part, List list,
-                          std::int64_t so_far)
+// Why index `raw` of `list` is refused (out of the hot path: it builds the message).
+[[noreturn, gnu::cold]] void fail_index(const LineReader& reader, std::string_view part, List list,
+                                        std::int64_t raw, std::int64_t so_far)
 {
-    const std::string what = kIndexName[list];
-    const std::int64_t raw = parse_integer(reader, part, what);
+    const std::string what(kIndexName[list]);
     if (raw == 0)
         reader.fail_at(part, what + " 0 (OBJ indices start at 1, or count back from -1)");
     if (raw < 0)
-    {
-        const std::int64_t resolved = so_far + raw;
-        if (resolved < 0)
-            reader.fail_at(part, what + " " + std::to_string(raw) + " reaches before the first " +
-                                     kFirst[list] + " (" + std::to_string(so_far) + " " +
-                                     kDefined[list] + " are defined before this line)");
-        return resolved;
-    }
-    if (raw > kMaxElements)
-        reader.fail_at(part, what + " " + std::to_string(raw) + " is out of range");
-    return raw - 1;
+        reader.fail_at(part, what + " " + std::to_string(raw) + " reaches before the first " +
+                                 kFirst[list] + " (" + std::to_string(so_far) + " " +
+                                 kDefined[list] + " are defined before this line)");
+    reader.fail_at(part, what + " " + std::to_string(raw) + " is out of range");
+}
+
+inline std::int64_t corner_index(const LineReader& reader, std::string_view part, List list,
+                                 std::int64_t so_far)
+{
+    const std::int64_t raw = parse_integer(reader, part, kIndexName[list]);
+    const std::int64_t resolved = raw < 0 ? so_far + raw : raw - 1;
+    if (raw == 0 || resolved < 0 || raw > kMaxElements)
+        fail_index(reader, part, list, raw, so_far);
+    return resolved;
 }
 
 // Reads "v x y z [r g b]": the colour, when there, goes to `colours` (three values a
@@ -76,12 +80,15 @@ void read_vertex(const LineReader& reader, Tokenizer& tokens, Mesh& mesh,
 {
     if (mesh.positions.size() / 3 >= static_cast<size_t>(kMaxVertices))
         reader.fail("more vertices than MeshFair supports");
-    for (const char* axis : {"x", "y", "z"})
+    // Names for messages, made without a string a line: this runs for every vertex.
+    static constexpr std::string_view kCoordinate[] = {"x coordinate", "y coordinate",
+                                                       "z coordinate"};
+    for (const std::string_view what : kCoordinate)
     {
         const std::string_view t = tokens.next();
         if (t.empty())
-            reader.fail(std::string("vertex has no ") + axis + " coordinate");
-        mesh.positions.push_back(parse_double(reader, t, std::string(axis) + " coordinate"));
+            reader.fail("vertex has no " + std::string(what));
+        mesh.positions.push_back(parse_double(reader, t, what));
     }
     double extra[3] = {0, 0, 0};
     int extras = 0;
@@ -211,50 +218,52 @@ void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& to
                                     static_cast<std::int64_t>(part.lists[1].size() / 3)};
     for (std::vector<Index>& f : face)
         f.clear();
-    bool given[2] = {false, false}, missing[2] = {false, false};
+    // The index of list l a corner names, its forward reference remembered.
+    const auto resolve = [&](std::string_view index_text, int l) {
+        const std::int64_t index =
+            corner_index(reader, index_text, static_cast<List>(l), so_far[l]);
+        ForwardReference& ref = part.references[l];
+        if (index >= so_far[l] && index > ref.max_index)
+        {
+            ref.line = reader.line_number();
+            ref.column = reader.column_of(index_text);
+        }
+        ref.max_index = std::max(ref.max_index, index);
+        return static_cast<Index>(index);
+    };
+    size_t corner_count = 0, given[2] = {0, 0};
     for (std::string_view t = tokens.next(); !t.empty(); t = tokens.next())
     {
+        ++corner_count;
+        const size_t slash = t.find('/');
+        if (slash == std::string_view::npos) // "7": a vertex alone, the common case
+        {
+            if (!first_part && t.front() == '-')
+                throw RangeNeedsContext{};
+            face[kVertex].push_back(resolve(t, kVertex));
+            continue;
+        }
         if (!first_part && t.find('-') != std::string_view::npos)
             throw RangeNeedsContext{};
-        std::string_view parts[3];
-        int count = 0;
-        for (std::string_view rest = t;; ++count)
+        // "v/vt", "v//vn" or "v/vt/vn".
+        std::string_view parts[3] = {t.substr(0, slash), t.substr(slash + 1), {}};
+        if (const size_t second = parts[1].find('/'); second != std::string_view::npos)
         {
-            const size_t slash = rest.find('/');
-            if (count == 3)
+            parts[2] = parts[1].substr(second + 1);
+            parts[1] = parts[1].substr(0, second);
+            if (parts[2].find('/') != std::string_view::npos)
                 reader.fail_at(
                     t, "face corner " + quoted(t) + " has more than three indices (v/vt/vn)");
-            parts[count] = rest.substr(0, slash);
-            if (slash == std::string_view::npos)
-            {
-                ++count;
-                break;
-            }
-            rest.remove_prefix(slash + 1);
         }
         if (parts[0].empty())
             reader.fail_at(t, "face corner " + quoted(t) + " has no vertex index");
-        for (int l = kVertex; l <= kNormal; ++l)
-        {
-            if (l > kVertex && parts[l].empty())
+        face[kVertex].push_back(resolve(parts[0], kVertex));
+        for (int l = kTexture; l <= kNormal; ++l)
+            if (!parts[l].empty())
             {
-                missing[l - 1] = true;
-                face[l].push_back(kInvalidIndex);
-                continue;
+                face[l].push_back(resolve(parts[l], l));
+                ++given[l - 1];
             }
-            const std::int64_t index =
-                corner_index(reader, parts[l], static_cast<List>(l), so_far[l]);
-            ForwardReference& ref = part.references[l];
-            if (index >= so_far[l] && index > ref.max_index)
-            {
-                ref.line = reader.line_number();
-                ref.column = reader.column_of(parts[l]);
-            }
-            ref.max_index = std::max(ref.max_index, index);
-            if (l > kVertex)
-                given[l - 1] = true;
-            face[l].push_back(static_cast<Index>(index));
-        }
     }
     if (face[kVertex].size() < 3)
         reader.fail(
@@ -262,17 +271,14 @@ void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& to
             count_of(static_cast<std::int64_t>(face[kVertex].size()), "vertex", "vertices") +
             " (a face needs at least 3)");
     for (int l = 0; l < 2; ++l)
-    {
-        if (given[l] && missing[l])
+        if (given[l] > 0 && given[l] < corner_count) // at some corners only: dropped, noted
         {
             if (!first_part)
                 throw RangeNeedsContext{};
             if (part.tally.partial_faces[l]++ == 0)
                 part.tally.first_partial[l] = reader.here(reader.column_of(keyword)).to_string();
-        }
-        if (!given[l] || missing[l])
             face[l + 1].clear();
-    }
+        }
     const FaceCheck check = normalize_face(face[kVertex], &face[kTexture], &face[kNormal]);
     if (!check.ok)
         reader.fail(check.problem, reader.column_of(keyword));
@@ -312,13 +318,15 @@ ObjPart parse_part(std::string_view data, const std::string& name, bool first_pa
         const std::string_view keyword = tokens.next();
         if (keyword.empty() || keyword.front() == '#')
             continue;
-        if (keyword == "v")
+        // The two keywords of nearly every line, tested first by their one character.
+        const bool one_letter = keyword.size() == 1;
+        if (one_letter && keyword[0] == 'v')
         {
             read_vertex(reader, tokens, part.mesh, part.colours, tally);
             if (!first_part && tally.vertex_extras > 0)
                 throw RangeNeedsContext{};
         }
-        else if (keyword == "f")
+        else if (one_letter && keyword[0] == 'f')
         {
             read_face(reader, keyword, tokens, part, first_part, face);
         }

@@ -237,6 +237,17 @@ TEST_SUITE("Attributes")
         const Read back = read(write(r.mesh, r.attributes, Format::Obj).data, Format::Obj);
         CHECK(back.attributes == r.attributes);
 
+        // A corner repeated (collapsed, with a note) takes its texture coordinate and
+        // normal with it: the others keep theirs.
+        const Read collapsed = read(
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 2 0\nvt 0 1\n"
+            "vn 1 0 0\nvn 0 1 0\nvn 0 0 1\nvn 1 1 1\n"
+            "f 1/1/1 2/2/2 2/3/3 3/4/4\n",
+            Format::Obj);
+        CHECK(collapsed.mesh.face_vertices == std::vector<Index>{0, 1, 2});
+        CHECK(collapsed.attributes.texcoords.corners == std::vector<Index>{0, 1, 3});
+        CHECK(collapsed.attributes.normals.corners == std::vector<Index>{0, 1, 3});
+
         // Texture coordinates at only some corners of a face: dropped from it, with a note.
         const Read partial = read("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3/1\n", Format::Obj);
         CHECK(partial.attributes.texcoords.empty());
@@ -303,6 +314,21 @@ TEST_SUITE("Attributes")
         for (size_t k = 0; k < 6; ++k)
             check_unit_near(at_corner(s_back.attributes.normals, k),
                             vertex_normal(s.mesh, s.mesh.face_vertices[k]));
+
+        // One vn shared by every corner (exporters that merge equal normals): each vertex
+        // gets its own normal, not one for the whole file.
+        std::string shared =
+            "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nvn 0 0 1\n"
+            "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
+        const Read one = read(shared, Format::Obj);
+        const Read one_back = read(write(one.mesh, one.attributes, Format::Obj, io::Encoding::Ascii,
+                                         io::Normals::Recompute)
+                                       .data,
+                                   Format::Obj);
+        CHECK(one_back.attributes.normals.entry_count() == 4);
+        for (size_t k = 0; k < 6; ++k)
+            check_unit_near(at_corner(one_back.attributes.normals, k),
+                            vertex_normal(one.mesh, one.mesh.face_vertices[k]));
 
         // PLY vertex and face normals alike; a vertex in no face keeps its normal.
         Mesh grid = test::open_grid(2, 1);
