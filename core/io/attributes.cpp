@@ -9,6 +9,7 @@
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/io/text_reader.h"
 
 namespace meshfair::io {
 
@@ -443,8 +444,10 @@ std::vector<std::string> describe_attributes(const MeshAttributes& a)
         out.push_back("normals: " + std::to_string(a.normals.entry_count()) + " vn on " +
                       std::to_string(corners_used(a.normals)) + " corners");
     for (const Element& e : a.other_elements)
-        out.push_back("element '" + e.name + "' (" + std::to_string(e.count) + " rows, " +
-                      std::to_string(e.properties.size()) + " properties)");
+        out.push_back(
+            "element '" + e.name + "' (" + count_of(e.count, "row", "rows") + ", " +
+            count_of(static_cast<std::int64_t>(e.properties.size()), "property", "properties") +
+            ")");
     if (!a.statements.empty())
     {
         std::map<std::string, int> kinds;
@@ -481,7 +484,7 @@ void Unwritten::add_table(const Element& table, const std::vector<const Property
 void Unwritten::add_elements(const std::vector<Element>& elements)
 {
     for (const Element& e : elements)
-        add("elements", "'" + e.name + "' (" + std::to_string(e.count) + " rows)");
+        add("elements", "'" + e.name + "' (" + count_of(e.count, "row", "rows") + ")");
 }
 
 void Unwritten::flush(std::vector<std::string>& notes) const

@@ -43,6 +43,7 @@ enum List
 constexpr std::string_view kIndexName[] = {"vertex index", "texture coordinate index",
                                            "normal index"};
 constexpr const char* kFirst[] = {"vertex", "texture coordinate (vt)", "normal (vn)"};
+constexpr const char* kOne[] = {"vertex", "texture coordinate", "normal"};
 constexpr const char* kDefined[] = {"vertices", "texture coordinates", "normals"};
 
 // Resolves one index of a face corner ("7" of "7/1/3", or "-2") against the number of
@@ -58,8 +59,9 @@ constexpr const char* kDefined[] = {"vertices", "texture coordinates", "normals"
         reader.fail_at(part, what + " 0 (OBJ indices start at 1, or count back from -1)");
     if (raw < 0)
         reader.fail_at(part, what + " " + std::to_string(raw) + " reaches before the first " +
-                                 kFirst[list] + " (" + std::to_string(so_far) + " " +
-                                 kDefined[list] + " are defined before this line)");
+                                 kFirst[list] + " (" +
+                                 count_of(so_far, kOne[list], kDefined[list]) +
+                                 (so_far == 1 ? " is" : " are") + " defined before this line)");
     reader.fail_at(part, what + " " + std::to_string(raw) + " is out of range");
 }
 
@@ -426,8 +428,11 @@ Mesh finish(ObjPart& part, const std::string& name, ReadReport& report, MeshAttr
             c.corners.resize(mesh.face_vertices.size(), kInvalidIndex);
         }
         else if (counts[l + 1] > 0)
-            report.notes.push_back("ignored " + std::to_string(counts[l + 1]) + " " +
-                                   (l == 0 ? "texture coordinates (vt)" : "normals (vn)") +
+            report.notes.push_back("ignored " +
+                                   (l == 0
+                                        ? count_of(counts[l + 1], "texture coordinate (vt)",
+                                                   "texture coordinates (vt)")
+                                        : count_of(counts[l + 1], "normal (vn)", "normals (vn)")) +
                                    " that no face uses");
     attributes.statements = std::move(part.statements);
     return std::move(mesh);

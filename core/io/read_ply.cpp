@@ -720,19 +720,26 @@ void read_strips(Rows& rows, const PropertyDecl& p, std::int64_t row, Body& body
 }
 
 // One row's value (or list) of a property kept as an attribute.
+// A value of `type`: an ASCII file's decimal text of a float property is the float nearest
+// to it, as a binary file would hold it, so that every encoding writes back the same value.
+double typed(double value, Type type)
+{
+    return type == Type::Float32 ? static_cast<double>(static_cast<float>(value)) : value;
+}
+
 template <typename Rows>
 void keep_value(Rows& rows, const PropertyDecl& p, Property& kept)
 {
     if (!p.is_list)
     {
-        kept.values.push_back(rows.number(p));
+        kept.values.push_back(typed(rows.number(p), p.type));
         return;
     }
     const std::int64_t n = rows.count(p);
     if (static_cast<std::int64_t>(kept.values.size()) + n > kMaxElements)
         rows.fail("more list items in property '" + p.name + "' than MeshFair supports");
     for (std::int64_t k = 0; k < n; ++k)
-        kept.values.push_back(rows.number(p));
+        kept.values.push_back(typed(rows.number(p), p.type));
     kept.offsets.push_back(static_cast<Index>(kept.values.size()));
 }
 
@@ -906,6 +913,16 @@ Mesh read_ply(std::string_view data, const std::string& name, ReadReport& report
     }
     add_notes(h, report);
     report_collapsed(body.collapsed, report.notes);
+    // The strips' triangles have no row of the face element's other properties.
+    if (!attributes.face.properties.empty() && attributes.face.count != body.mesh.face_count())
+    {
+        NameList names;
+        for (const Property& p : attributes.face.properties)
+            names.add("'" + p.name + "'");
+        report.notes.push_back("skipped face properties " + names.text() +
+                               " (the triangles of the strips have no values for them)");
+        attributes.face = Element{"face", 0, {}};
+    }
     for (const ElementDecl& e : h.elements)
         if (e.kind == Kind::Strips)
         {

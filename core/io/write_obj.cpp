@@ -101,11 +101,13 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
         out += comment;
         out += '\n';
     }
-    // Material libraries first, where OBJ files name them; the other statements before
-    // the faces they applied to.
-    for (const ObjStatement& s : attributes.statements)
-        if (s.text.starts_with("mtllib"))
-            append_statement(out, s);
+    // The statements before the first face at the top, where files name their material
+    // libraries and first groups; the others before the faces they applied to.
+    const auto& statements = attributes.statements;
+    size_t next_statement = 0;
+    for (; next_statement < statements.size() && statements[next_statement].before_face == 0;
+         ++next_statement)
+        append_statement(out, statements[next_statement]);
     double scale[3] = {1, 1, 1};
     if (vertex.has_colour())
         for (int c = 0; c < 3; ++c)
@@ -128,14 +130,11 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
     }
     append_entries(out, "vt", texcoords);
     append_entries(out, "vn", normals);
-    size_t next_statement = 0;
-    const auto& statements = attributes.statements;
     for (Index f = 0; f < mesh.face_count(); ++f)
     {
         for (; next_statement < statements.size() && statements[next_statement].before_face <= f;
              ++next_statement)
-            if (!statements[next_statement].text.starts_with("mtllib"))
-                append_statement(out, statements[next_statement]);
+            append_statement(out, statements[next_statement]);
         const Index begin = mesh.face_offsets[f], end = mesh.face_offsets[f + 1];
         const bool has_t = face_has(texcoords, begin, end);
         const bool has_n = face_has(normals, begin, end);
@@ -160,8 +159,7 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
         out += '\n';
     }
     for (; next_statement < statements.size(); ++next_statement)
-        if (!statements[next_statement].text.starts_with("mtllib"))
-            append_statement(out, statements[next_statement]);
+        append_statement(out, statements[next_statement]);
 }
 
 } // namespace meshfair::io

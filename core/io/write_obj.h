@@ -12,7 +12,8 @@ namespace meshfair::io {
 
 //! \brief Appends a Wavefront OBJ to `out`: "v x y z [r g b]", "vt", "vn", 1-based
 //! "f v/vt/vn ..." and the groups, objects, smoothing groups and materials before the
-//! faces they applied to; coordinates in shortest round-trip form.
+//! faces they applied to (those before the first face at the top); coordinates in
+//! shortest round-trip form.
 //!
 //! Vertex colours are written as fractions (an integer type's value over its largest);
 //! per-vertex texture coordinates and normals become one vt or vn per vertex, and a

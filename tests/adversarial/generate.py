@@ -64,10 +64,19 @@ put("obj/unknown_keyword.obj", QUAD + "frobnicate 1 2\nf 1 2 3 4\n")
 put("obj/vertex_colour_columns.obj", "v 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nf 1 2 3\n")
 put("obj/forward_reference.obj", "f 1 2 3\n" + TRI)
 put("obj/binary_garbage.obj", bytes(range(256)) * 4)
+# Texture coordinate and normal indices are checked as vertex indices are.
+put("obj/vt_index_past_end.obj", TRI + "vt 0 0\nf 1/1 2/1 3/2\n")
+put("obj/vn_index_before_start.obj", TRI + "vn 0 0 1\nf 1//1 2//1 3//-2\n")
+put("obj/vn_two_values.obj", TRI + "vn 0 1\nf 1 2 3\n")
+put("obj/corner_four_indices.obj", TRI + "vt 0 0\nvn 0 0 1\nf 1/1/1/1 2 3\n")
+put("obj/vt_some_corners.obj", TRI + "vt 0 0\nf 1/1 2 3/1\n")
 
 # ---- OFF ---------------------------------------------------------------------------
 OFF_QUAD = "OFF\n4 1 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"
 put("off/empty.off", "")
+# Face colours of different kinds (none, r g b a, an index): noted and not kept.
+put("off/face_colours_mixed.off",
+    "OFF\n4 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3 255 0 0 255\n3 1 2 3 4\n")
 put("off/header_only.off", "OFF\n")
 put("off/missing_counts.off", "OFF\n0 0 0\n1 0 0\n1 1 0\n3 0 1 2\n")
 put("off/counts_on_header_line.off", "OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
@@ -228,6 +237,17 @@ put("ply/tristrips_uint_restart.ply",
     ascii_body(faces=()) + "7 0 1 2 4294967295 0 2 3\n")
 put("ply/tristrips_and_faces.ply", ply_header("ascii", 4, 1, extra=STRIPS) +
     ascii_body(faces=((0, 1, 2),)) + "3 0 2 3\n")
+# Faces with a property of their own and strips, whose triangles have none: noted, dropped.
+put("ply/tristrips_and_face_property.ply",
+    ply_header("ascii", 4, 1, face_prop="property list uchar int vertex_indices\n"
+               "property uchar flags\n", extra=STRIPS) +
+    ascii_body(faces=()) + "3 0 1 2 7\n3 0 2 3\n")
+# Attributes that are NaN or infinite (a scanner's missing values) are kept; coordinates
+# that are not finite are refused.
+put("ply/attribute_nan_ascii.ply",
+    ply_header("ascii", 4, 1, vertex_props="property double x\nproperty double y\n"
+               "property double z\nproperty float confidence\n") +
+    "0 0 0 nan\n1 0 0 -inf\n1 1 0 inf\n0 1 0 0.5\n4 0 1 2 3\n")
 
 # ---- STL ---------------------------------------------------------------------------
 def stl_binary(triangles, header=b"binary STL written by hand", count=None, attr=0):

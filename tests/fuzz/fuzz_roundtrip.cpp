@@ -2,12 +2,16 @@
 // Copyright 2026 the MeshFair authors.
 // Read, write in every format and encoding, read back, compare. Steering: the reader is
 // chosen from the content (sniff_format), so seeds of every format work unchanged.
-// OBJ, OFF and PLY must give the mesh back bit for bit. STL fan-triangulates, welds
+// OBJ, OFF and PLY must give the mesh back bit for bit, written with the attributes the
+// file held (converted to the other formats, never refused); in the file's own format the
+// attributes must come back as they were (normals kept, NaN equal to NaN; a PLY's
+// comments gain MeshFair's own). STL fan-triangulates, welds
 // equal positions and (binary) stores float32: the read-back triangles must be the fan
 // triangles of the faces, corner for corner, at the same (float32-rounded) positions;
 // refusing the file back is allowed only when welding makes a triangle degenerate, and
 // refusing to write binary STL only for coordinates beyond the float32 range.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -89,12 +93,61 @@ void check_stl(const Mesh& mesh, io::Encoding encoding)
     }
 }
 
-void check_exact(const Mesh& mesh, io::Format format, io::Encoding encoding)
+// Attribute equality with NaN equal to NaN (a PLY's float properties may hold it).
+bool same_values(const std::vector<double>& a, const std::vector<double>& b)
+{
+    if (a.size() != b.size())
+        return false;
+    for (size_t k = 0; k < a.size(); ++k)
+        if (!(a[k] == b[k] || (std::isnan(a[k]) && std::isnan(b[k]))))
+            return false;
+    return true;
+}
+
+bool same_table(const io::Element& a, const io::Element& b)
+{
+    if (a.name != b.name || a.count != b.count || a.properties.size() != b.properties.size())
+        return false;
+    for (size_t k = 0; k < a.properties.size(); ++k)
+    {
+        const io::Property &p = a.properties[k], &q = b.properties[k];
+        if (p.name != q.name || p.type != q.type || p.is_list != q.is_list ||
+            (p.is_list && (p.count_type != q.count_type || p.offsets != q.offsets)) ||
+            !same_values(p.values, q.values))
+            return false;
+    }
+    return true;
+}
+
+bool same_attributes(const io::MeshAttributes& a, const io::MeshAttributes& b)
+{
+    if (!same_table(a.vertex, b.vertex) || !same_table(a.face, b.face) ||
+        a.other_elements.size() != b.other_elements.size())
+        return false;
+    for (size_t k = 0; k < a.other_elements.size(); ++k)
+        if (!same_table(a.other_elements[k], b.other_elements[k]))
+            return false;
+    return a.texcoords == b.texcoords && a.normals == b.normals && a.statements == b.statements &&
+           a.comments == b.comments;
+}
+
+void check_exact(const Mesh& mesh, const io::MeshAttributes& attributes, io::Format source,
+                 io::Format format, io::Encoding encoding)
 {
     const std::string what =
         std::string(io::format_name(format)) + " " + std::string(io::encoding_name(encoding));
-    const std::string data = io::write_mesh_data(mesh, format, io::WriteOptions{encoding});
-    const auto back = read_or_refuse(data, format);
+    const io::WriteOptions options{encoding, io::Normals::Keep};
+    std::string data;
+    try
+    {
+        data = io::write_mesh_data(mesh, format, options, &attributes);
+    }
+    catch (const std::exception& e)
+    {
+        fail(what + ": write with the attributes refused: " + e.what());
+    }
+    io::MeshAttributes back_attributes;
+    const auto back = read_or_refuse(data, format, nullptr, &back_attributes);
     if (!back)
     {
         // Read again without catching, so the report shows the reader's message.
@@ -112,6 +165,14 @@ void check_exact(const Mesh& mesh, io::Format format, io::Encoding encoding)
              std::to_string(mesh.vertex_count()) + " written");
     if (!identical(*back, mesh))
         fail(what + ": the mesh read back differs from the mesh written");
+    if (format != source)
+        return;
+    io::MeshAttributes expected = attributes;
+    if (format == io::Format::Ply && std::find(expected.comments.begin(), expected.comments.end(),
+                                               "comment MeshFair") == expected.comments.end())
+        expected.comments.insert(expected.comments.begin(), "comment MeshFair");
+    if (!same_attributes(back_attributes, expected))
+        fail(what + ": the attributes read back differ from those written");
 }
 
 int test_one_input(const std::uint8_t* data, size_t size)
@@ -119,14 +180,16 @@ int test_one_input(const std::uint8_t* data, size_t size)
     if (size > kMaxInput)
         return 0;
     const std::string_view text = as_text(data, size);
-    const auto mesh = read_or_refuse(text, sniff_format(text));
+    const io::Format source = sniff_format(text);
+    io::MeshAttributes attributes;
+    const auto mesh = read_or_refuse(text, source, nullptr, &attributes);
     if (!mesh)
         return 0;
-    check_exact(*mesh, io::Format::Obj, io::Encoding::Ascii);
-    check_exact(*mesh, io::Format::Off, io::Encoding::Ascii);
+    check_exact(*mesh, attributes, source, io::Format::Obj, io::Encoding::Ascii);
+    check_exact(*mesh, attributes, source, io::Format::Off, io::Encoding::Ascii);
     for (const auto e :
          {io::Encoding::Ascii, io::Encoding::BinaryLittleEndian, io::Encoding::BinaryBigEndian})
-        check_exact(*mesh, io::Format::Ply, e);
+        check_exact(*mesh, attributes, source, io::Format::Ply, e);
     check_stl(*mesh, io::Encoding::Ascii);
     check_stl(*mesh, io::Encoding::BinaryLittleEndian);
     return 0;

@@ -58,12 +58,13 @@ void fail(const std::string& what)
     __builtin_trap();
 }
 
-std::optional<Mesh> read_or_refuse(std::string_view data, io::Format format, io::ReadReport* report)
+std::optional<Mesh> read_or_refuse(std::string_view data, io::Format format, io::ReadReport* report,
+                                   io::MeshAttributes* attributes)
 {
     std::optional<Mesh> mesh;
     try
     {
-        mesh = io::read_mesh_data(data, format, "fuzz", report);
+        mesh = io::read_mesh_data(data, format, "fuzz", report, attributes);
     }
     catch (const InvalidInputError& e)
     {
@@ -74,6 +75,8 @@ std::optional<Mesh> read_or_refuse(std::string_view data, io::Format format, io:
     try
     {
         validate_mesh(*mesh);
+        if (attributes)
+            io::check_attributes(*mesh, *attributes); // what every writer requires
     }
     catch (const std::exception& e)
     {

@@ -35,7 +35,8 @@ bool verbose();
 //! exception propagates, so libFuzzer reports it. An accepted mesh that does not satisfy
 //! validate_mesh traps.
 std::optional<Mesh> read_or_refuse(std::string_view data, io::Format format,
-                                   io::ReadReport* report = nullptr);
+                                   io::ReadReport* report = nullptr,
+                                   io::MeshAttributes* attributes = nullptr);
 
 //! The format a file's content looks like: PLY magic, an [ST][C][N][4][n]OFF keyword,
 //! STL ("solid" or a binary size that matches its triangle count), else OBJ.

@@ -7,6 +7,7 @@
 
 #include "app/editor/panels/panel_context.h"
 #include "app/render/palette.h"
+#include "core/io/attributes.h"
 
 namespace meshfair::app {
 
@@ -58,6 +59,9 @@ void mesh_panel(const PanelContext& ui)
     ImGui::Text("edges     %s", with_separators(t.edge_count()).c_str());
     ImGui::Text("boundary  %s   singular  %s", with_separators(t.boundary_edge_count).c_str(),
                 with_separators(t.singular_edge_count).c_str());
+    // What the file holds beside the shape, which a save writes back.
+    for (const std::string& attribute : io::describe_attributes(document.attributes))
+        ImGui::TextWrapped("kept: %s", attribute.c_str());
     for (const std::string& note : document.report.notes)
         ImGui::TextWrapped("note: %s", note.c_str());
 }

@@ -254,14 +254,14 @@ TEST_SUITE("Attributes")
         CHECK(partial.notes == std::vector<std::string>{
                                    "ignored the texture coordinates of 1 face that give them at "
                                    "only some corners (first at in:5:1)",
-                                   "ignored 1 texture coordinates (vt) that no face uses"});
+                                   "ignored 1 texture coordinate (vt) that no face uses"});
 
         const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
         CHECK(test::read_error(tri + "f 1/2 2/1 3/1\n", Format::Obj) ==
               "t.obj:6:5: texture coordinate index 2 is past the last texture coordinate (vt) "
               "(the file defines 1)");
         CHECK(test::read_error(tri + "f 1//1 2//1 3//-2\n", Format::Obj) ==
-              "t.obj:6:16: normal index -2 reaches before the first normal (vn) (1 normals are "
+              "t.obj:6:16: normal index -2 reaches before the first normal (vn) (1 normal is "
               "defined before this line)");
         CHECK(test::read_error(tri + "f 1/1/1/1 2 3\n", Format::Obj) ==
               "t.obj:6:3: face corner '1/1/1/1' has more than three indices (v/vt/vn)");
@@ -490,7 +490,7 @@ TEST_SUITE("Attributes")
                   "OBJ cannot hold the vertex properties 'alpha', 'quality'; they are not "
                   "written",
                   "OBJ cannot hold the face properties 'flags'; they are not written",
-                  "OBJ cannot hold the elements 'edge' (3 rows), 'camera' (1 rows), 'empty' (2 "
+                  "OBJ cannot hold the elements 'edge' (3 rows), 'camera' (1 row), 'empty' (2 "
                   "rows); they are not written"});
         const Read grid_back = read(grid_obj.data, Format::Obj);
         CHECK(grid_back.attributes.vertex.find(io::kBlue)->values[0] == 1.0); // 255 / 255
