@@ -28,9 +28,10 @@ packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libc
 # and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
 # save tests and the files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the
 # editor's real-window test: synthetic keys, a screenshot taken from outside, its pixels,
-# a close request sent as a window manager sends it), python3-pytest (the module's tests).
+# a close request sent as a window manager sends it), python3-pytest (the module's tests),
+# munge and slurm-wlm (docs/batch.md's job array on a single-node cluster the test starts).
 [ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
-    strace xdotool x11-apps imagemagick libx11-dev python3-pytest)
+    strace xdotool x11-apps imagemagick libx11-dev python3-pytest munge slurm-wlm)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -458,8 +458,11 @@ std::vector<std::string> describe_attributes(const MeshAttributes& a)
             list += (list.empty() ? "" : ", ") + std::to_string(n) + " " + keyword;
         out.push_back("groups and materials: " + list);
     }
-    if (!a.comments.empty())
-        out.push_back("header comments: " + std::to_string(a.comments.size()));
+    // MeshFair's own signature is not the file's content.
+    const auto comments = std::count_if(a.comments.begin(), a.comments.end(),
+                                        [](const std::string& c) { return c != "comment MeshFair"; });
+    if (comments > 0)
+        out.push_back("header comments: " + std::to_string(comments));
     return out;
 }
 
