@@ -7,20 +7,12 @@
 # Needs: clang, libclang-rt-14-dev (installed by .ci/setup.sh test).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+# shellcheck source=.ci/clang_build.sh
+source .ci/clang_build.sh
+clang_build_step "$@"
 build=build-asan
-step=${1:-all}
-case "$step" in
-    build | test | all) ;;
-    *)
-        echo "usage: $0 [build|test]" >&2
-        exit 2
-        ;;
-esac
 if [ "$step" != test ]; then
-    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++ \
-        -DCMAKE_UNITY_BUILD=ON -DMESHFAIR_SANITIZE=ON -DMESHFAIR_WERROR=ON \
-        -DMESHFAIR_EDITOR_BENCH=OFF -DMESHFAIR_BUILD_PYTHON=OFF >/dev/null
-    cmake --build "$build" -j"$(nproc)"
+    clang_build "$build" -DMESHFAIR_SANITIZE=ON
 fi
 [ "$step" != build ] || exit 0
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=1

@@ -20,9 +20,9 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "app/common/address_sanitizer.h"
+#include "app/common/sanitizer_malloc.h"
 
-#if !MESHFAIR_ADDRESS_SANITIZER
+#if !MESHFAIR_SANITIZER_OWNS_MALLOC
 
 extern "C" void* __libc_malloc(std::size_t);
 extern "C" void* __libc_calloc(std::size_t, std::size_t);

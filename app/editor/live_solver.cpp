@@ -396,6 +396,9 @@ void LiveSolver::worker()
             restart_.reset();
             busy_ = true;
             const std::uint64_t generation = generation_;
+            // The run before is this thread's while it restarts: taken under the lock, as
+            // the interface thread reads run_ (whether there is one) under it.
+            std::unique_ptr<LocalityRun> previous = std::move(run_);
             lock.unlock();
 
             const auto t = std::chrono::steady_clock::now();
@@ -427,13 +430,13 @@ void LiveSolver::worker()
                         }
                 // The same mesh and the same parts: the topology of the run before is this
                 // run's (a dab of the smoothing brush changes weights, not connectivity).
-                if (run_ && run_->topology().parts == required_topology(r.recipe) &&
-                    run_->topology().vertex_count == r.base.vertex_count() &&
-                    run_->mesh().face_offsets == r.base.face_offsets &&
-                    run_->mesh().face_vertices == r.base.face_vertices)
+                if (previous && previous->topology().parts == required_topology(r.recipe) &&
+                    previous->topology().vertex_count == r.base.vertex_count() &&
+                    previous->mesh().face_offsets == r.base.face_offsets &&
+                    previous->mesh().face_vertices == r.base.face_vertices)
                 {
-                    Topology topology = std::move(*run_).take_topology();
-                    run_.reset(); // it has no topology left
+                    Topology topology = std::move(*previous).take_topology();
+                    previous.reset(); // it has no topology left
                     run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
                                                         r.recipe, std::move(topology));
                 }

@@ -167,9 +167,18 @@ void set_unit(const Vec3& sum, double* out[3])
         *out[a] = sum[a] / length;
 }
 
-Property* mutable_property(Element& table, const Property* p)
+// The normals `nx ny nz` of `table` (found as `channels`) set to the unit vectors of `sums`,
+// one per row.
+void set_normals(Element& table, const Channels& channels, const std::vector<Vec3>& sums)
 {
-    return p ? &table.properties[static_cast<size_t>(p - table.properties.data())] : nullptr;
+    Property* n[3];
+    for (size_t a = 0; a < 3; ++a)
+        n[a] = &table.properties[static_cast<size_t>(channels.normal[a] - table.properties.data())];
+    for (size_t r = 0; r < sums.size(); ++r)
+    {
+        double* out[3] = {&n[0]->values[r], &n[1]->values[r], &n[2]->values[r]};
+        set_unit(sums[r], out);
+    }
 }
 
 } // namespace
@@ -189,30 +198,10 @@ void recompute_normals(const Mesh& mesh, MeshAttributes& attributes)
             for (const Index v : mesh.face(f))
                 for (int a = 0; a < 3; ++a)
                     sum[static_cast<size_t>(v)][a] += area[static_cast<size_t>(f)][a];
-        Property* n[3];
-        for (int a = 0; a < 3; ++a)
-            n[a] = mutable_property(attributes.vertex, vertex.normal[a]);
-        for (Index v = 0; v < mesh.vertex_count(); ++v)
-        {
-            double* out[3] = {&n[0]->values[static_cast<size_t>(v)],
-                              &n[1]->values[static_cast<size_t>(v)],
-                              &n[2]->values[static_cast<size_t>(v)]};
-            set_unit(sum[static_cast<size_t>(v)], out);
-        }
+        set_normals(attributes.vertex, vertex, sum);
     }
     if (face.has_normal())
-    {
-        Property* n[3];
-        for (int a = 0; a < 3; ++a)
-            n[a] = mutable_property(attributes.face, face.normal[a]);
-        for (Index f = 0; f < mesh.face_count(); ++f)
-        {
-            double* out[3] = {&n[0]->values[static_cast<size_t>(f)],
-                              &n[1]->values[static_cast<size_t>(f)],
-                              &n[2]->values[static_cast<size_t>(f)]};
-            set_unit(area[static_cast<size_t>(f)], out);
-        }
-    }
+        set_normals(attributes.face, face, area);
     CornerValues& normals = attributes.normals;
     if (!normals.empty() && normals.dimension == 3)
     {
@@ -459,8 +448,9 @@ std::vector<std::string> describe_attributes(const MeshAttributes& a)
         out.push_back("groups and materials: " + list);
     }
     // MeshFair's own signature is not the file's content.
-    const auto comments = std::count_if(a.comments.begin(), a.comments.end(),
-                                        [](const std::string& c) { return c != "comment MeshFair"; });
+    const auto comments =
+        std::count_if(a.comments.begin(), a.comments.end(),
+                      [](const std::string& c) { return c != "comment MeshFair"; });
     if (comments > 0)
         out.push_back("header comments: " + std::to_string(comments));
     return out;

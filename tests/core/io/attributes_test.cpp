@@ -302,33 +302,25 @@ TEST_SUITE("Attributes")
         CHECK(back.attributes.vertex == in.attributes.vertex);
 
         // Smooth shading (one vn per vertex): the area-weighted normal of the new positions.
-        std::string smooth =
-            "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 "
-            "1\nvn 0 0 1\nf 1//1 2//2 3//3\nf 1//1 3//3 4//4\n";
-        const Read s = read(smooth, Format::Obj);
-        const Read s_back = read(
-            write(s.mesh, s.attributes, Format::Obj, io::Encoding::Ascii, io::Normals::Recompute)
-                .data,
-            Format::Obj);
-        CHECK(s_back.attributes.normals.entry_count() == 4);
-        for (size_t k = 0; k < 6; ++k)
-            check_unit_near(at_corner(s_back.attributes.normals, k),
-                            vertex_normal(s.mesh, s.mesh.face_vertices[k]));
-
-        // One vn shared by every corner (exporters that merge equal normals): each vertex
-        // gets its own normal, not one for the whole file.
-        std::string shared =
-            "v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\nvn 0 0 1\n"
-            "f 1//1 2//1 3//1\nf 1//1 3//1 4//1\n";
-        const Read one = read(shared, Format::Obj);
-        const Read one_back = read(write(one.mesh, one.attributes, Format::Obj, io::Encoding::Ascii,
-                                         io::Normals::Recompute)
-                                       .data,
-                                   Format::Obj);
-        CHECK(one_back.attributes.normals.entry_count() == 4);
-        for (size_t k = 0; k < 6; ++k)
-            check_unit_near(at_corner(one_back.attributes.normals, k),
-                            vertex_normal(one.mesh, one.mesh.face_vertices[k]));
+        // Smooth shading (one vn per vertex), and one vn shared by every corner (exporters
+        // that merge equal normals): each vertex gets the area-weighted normal of the new
+        // positions, its own.
+        for (const char* normals : {"vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\n"
+                                    "f 1//1 2//2 3//3\nf 1//1 3//3 4//4\n",
+                                    "vn 0 0 1\nf 1//1 2//1 3//1\nf 1//1 3//1 4//1\n"})
+        {
+            CAPTURE(normals);
+            const Read s =
+                read(std::string("v 0 0 0\nv 1 0 0\nv 1 1 0.5\nv 0 1 0\n") + normals, Format::Obj);
+            const Read renewed = read(write(s.mesh, s.attributes, Format::Obj, io::Encoding::Ascii,
+                                            io::Normals::Recompute)
+                                          .data,
+                                      Format::Obj);
+            CHECK(renewed.attributes.normals.entry_count() == 4);
+            for (size_t k = 0; k < 6; ++k)
+                check_unit_near(at_corner(renewed.attributes.normals, k),
+                                vertex_normal(s.mesh, s.mesh.face_vertices[k]));
+        }
 
         // PLY vertex and face normals alike; a vertex in no face keeps its normal.
         Mesh grid = test::open_grid(2, 1);

@@ -11,7 +11,7 @@
 #include <cstdlib>
 #include <new>
 
-#include "app/common/address_sanitizer.h"
+#include "app/common/sanitizer_malloc.h"
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
 #include "tests/helpers.h"
@@ -22,7 +22,7 @@ std::atomic<long> g_allocations{0};
 
 } // namespace
 
-#define MESHFAIR_COUNT_MALLOC (!MESHFAIR_ADDRESS_SANITIZER)
+#define MESHFAIR_COUNT_MALLOC (!MESHFAIR_SANITIZER_OWNS_MALLOC)
 
 #if MESHFAIR_COUNT_MALLOC
 // glibc's own entry points; defining malloc here interposes it for every shared library.
