@@ -329,7 +329,8 @@ CornerValues corner_texcoords(const Mesh& mesh, const MeshAttributes& attributes
                 if (p.offsets[static_cast<size_t>(f) + 1] - begin != 2 * mesh.face_size(f))
                     continue;
                 for (Index k = 0; k < mesh.face_size(f); ++k)
-                    c.corners[static_cast<size_t>(mesh.face_offsets[f] + k)] = begin / 2 + k;
+                    c.corners[static_cast<size_t>(mesh.face_offsets[f]) + static_cast<size_t>(k)] =
+                        begin / 2 + k;
                 any = true;
             }
             // Entries are pairs of values, so every list must start at an even offset.

@@ -3,6 +3,7 @@
 #include "core/io/read_obj.h"
 
 #include <algorithm>
+#include <array>
 #include <exception>
 #include <string>
 #include <vector>
@@ -24,9 +25,9 @@ struct ObjTally
     std::int64_t parameter_lines = 0; // vp
     std::int64_t vertex_extras = 0;   // v lines with a w (or values that are not r g b)
     std::string first_vertex_extra;
-    std::int64_t coloured_vertices = 0;     // v lines with r g b after x y z
-    std::int64_t partial_faces[2] = {0, 0}; // faces with vt (vn) at only some corners
-    std::string first_partial[2];
+    std::int64_t coloured_vertices = 0;          // v lines with r g b after x y z
+    std::array<std::int64_t, 2> partial_faces{}; // faces with vt (vn) at only some corners
+    std::array<std::string, 2> first_partial;
     std::int64_t unknown_lines = 0;
     std::string first_unknown;
     NoteCounter collapsed;
@@ -185,12 +186,12 @@ struct ObjPart
 {
     Mesh mesh;
     ObjTally tally;
-    std::vector<double> colours;   // r g b per vertex, once a vertex has one
-    std::vector<double> lists[2];  // vt and vn entries, three values each
-    int texture_dimension = 0;     // the most values a vt line gave
-    std::vector<Index> corners[2]; // vt and vn index per corner, once a face has one
+    std::vector<double> colours;               // r g b per vertex, once a vertex has one
+    std::array<std::vector<double>, 2> lists;  // vt and vn entries, three values each
+    int texture_dimension = 0;                 // the most values a vt line gave
+    std::array<std::vector<Index>, 2> corners; // vt and vn index per corner, once a face has one
     std::vector<ObjStatement> statements;
-    ForwardReference references[3]; // vertices, vt, vn (lines known in the first part)
+    std::array<ForwardReference, 3> references; // vertices, vt, vn (lines known in the first part)
     std::int64_t face_count() const { return mesh.face_count(); }
 };
 
@@ -212,7 +213,7 @@ std::string statement_text(std::string_view keyword, Tokenizer& tokens)
 
 // One face line: its corners "v", "v/vt", "v//vn" or "v/vt/vn" into the part.
 void read_face(const LineReader& reader, std::string_view keyword, Tokenizer& tokens, ObjPart& part,
-               bool first_part, std::vector<Index> (&face)[3])
+               bool first_part, std::array<std::vector<Index>, 3>& face)
 {
     Mesh& mesh = part.mesh;
     const std::int64_t so_far[3] = {mesh.vertex_count(),
@@ -313,7 +314,7 @@ ObjPart parse_part(std::string_view data, const std::string& name, bool first_pa
     ObjPart part;
     ObjTally& tally = part.tally;
     LineReader reader(data, name);
-    std::vector<Index> face[3];
+    std::array<std::vector<Index>, 3> face;
     while (reader.next())
     {
         Tokenizer tokens(reader.line());
