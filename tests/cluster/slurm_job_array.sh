@@ -82,6 +82,15 @@ MinJobAge=3600
 NodeName=meshfair-node NodeAddr=127.0.0.1 NodeHostname=$(hostname) CPUs=$cpus State=UNKNOWN
 PartitionName=test Nodes=meshfair-node Default=YES MaxTime=INFINITE State=UP
 CONF
+# No cgroup is used (processes tracked through /proc, tasks not bound), and slurmd looks
+# for none: an empty folder of its own stands for the cgroup mount point, which a chroot or
+# a container may not have.
+mkdir -p "$run/cgroup"
+cat >"$run/cgroup.conf" <<CONF
+CgroupPlugin=cgroup/v1
+CgroupMountpoint=$run/cgroup
+CgroupAutomount=no
+CONF
 slurmctld -D -i &
 pids+=($!)
 slurmd -D -N meshfair-node &
