@@ -307,6 +307,16 @@ std::string hard_edges_note(const std::string& format, std::int64_t hard)
            " vertices with different normals on different faces (hard edges) get their mean";
 }
 
+bool all_finite(std::span<const double> values)
+{
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+std::string nonfinite_note(const std::string& format, const std::string& what)
+{
+    return format + " cannot hold NaN or infinite values: the " + what + " are not written";
+}
+
 CornerValues corner_texcoords(const Mesh& mesh, const MeshAttributes& attributes,
                               const Property** source)
 {

@@ -185,6 +185,13 @@ CornerValues corner_texcoords(const Mesh& mesh, const MeshAttributes& attributes
 //! \brief The normals as per-corner values: an OBJ's vn, or the vertex table's `nx ny nz`.
 CornerValues corner_normals(const Mesh& mesh, const MeshAttributes& attributes);
 
+//! True when every value is finite (text formats other than PLY hold no NaN or infinity).
+bool all_finite(std::span<const double> values);
+
+//! The note for values a text format cannot hold: "OBJ cannot hold NaN or infinite values:
+//! the normals are not written".
+std::string nonfinite_note(const std::string& format, const std::string& what);
+
 //! One line per kind of attribute, for `info` and reports: "vertex colours (red green
 //! blue: uchar)", "texture coordinates: 3225 vt on 12000 corners", ...
 std::vector<std::string> describe_attributes(const MeshAttributes& attributes);

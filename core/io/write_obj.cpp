@@ -69,13 +69,28 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
     Unwritten unwritten("OBJ");
     const Channels vertex = find_channels(attributes.vertex);
     const Property* texcoord_source = nullptr;
-    const CornerValues texcoords = corner_texcoords(mesh, attributes, &texcoord_source);
-    const CornerValues normals = corner_normals(mesh, attributes);
+    CornerValues texcoords = corner_texcoords(mesh, attributes, &texcoord_source);
+    CornerValues normals = corner_normals(mesh, attributes);
+    // OBJ's numbers are finite: values that are not leave their kind out, with a note.
+    const bool colours = vertex.has_colour() && all_finite(vertex.rgb[0]->values) &&
+                         all_finite(vertex.rgb[1]->values) && all_finite(vertex.rgb[2]->values);
+    if (vertex.has_colour() && !colours)
+        notes.push_back(nonfinite_note("OBJ", "vertex colours"));
+    if (!all_finite(texcoords.values))
+    {
+        notes.push_back(nonfinite_note("OBJ", "texture coordinates"));
+        texcoords = {};
+    }
+    if (!all_finite(normals.values))
+    {
+        notes.push_back(nonfinite_note("OBJ", "normals"));
+        normals = {};
+    }
 
     std::vector<const Property*> written_vertex, written_face;
     if (vertex.has_colour())
         written_vertex.insert(written_vertex.end(), std::begin(vertex.rgb), std::end(vertex.rgb));
-    if (!normals.empty() && attributes.normals.empty())
+    if (attributes.normals.empty() && vertex.has_normal()) // written, or in a note
         written_vertex.insert(written_vertex.end(), std::begin(vertex.normal),
                               std::end(vertex.normal));
     if (texcoord_source)
@@ -109,7 +124,7 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
          ++next_statement)
         append_statement(out, statements[next_statement]);
     double scale[3] = {1, 1, 1};
-    if (vertex.has_colour())
+    if (colours)
         for (int c = 0; c < 3; ++c)
             scale[c] = colour_scale(vertex.rgb[c]->type);
     for (Index i = 0; i < mesh.vertex_count(); ++i)
@@ -120,7 +135,7 @@ void write_obj(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
             out += ' ';
             append_double(out, mesh.positions[3 * i + c]);
         }
-        if (vertex.has_colour())
+        if (colours)
             for (int c = 0; c < 3; ++c)
             {
                 out += ' ';

@@ -116,6 +116,20 @@ void write_off(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
     }
     else if (const Property* index = attributes.face.find("colormap_index"))
         add_channels(face_columns, &index, 1, false, written_face);
+    // OFF's numbers are finite: a kind with a value that is not is left out, with a note.
+    const auto keep_finite = [&](std::vector<Column>& columns, const char* what) {
+        for (const Column& c : columns)
+            if (!all_finite(*c.values))
+            {
+                notes.push_back(nonfinite_note("OFF", what));
+                columns.clear();
+                return;
+            }
+    };
+    keep_finite(normal_columns, "vertex normals");
+    keep_finite(colour_columns, "vertex colours");
+    keep_finite(texture_columns, "texture coordinates");
+    keep_finite(face_columns, "face colours");
     unwritten.add_table(attributes.vertex, written_vertex);
     unwritten.add_table(attributes.face, written_face);
     unwritten.add_elements(attributes.other_elements);
@@ -123,11 +137,11 @@ void write_off(const Mesh& mesh, const MeshAttributes& attributes, std::string& 
         unwritten.add("OBJ groups, objects, smoothing groups and materials", "'" + s.text + "'");
     unwritten.flush(notes);
 
-    if (has_texture)
+    if (!texture_columns.empty())
         out += "ST";
     if (!colour_columns.empty())
         out += "C";
-    if (has_normals)
+    if (!normal_columns.empty())
         out += "N";
     out += "OFF\n";
     for (const std::string& comment : attributes.comments)

@@ -509,6 +509,36 @@ TEST_SUITE("Attributes")
               std::vector<double>{0, 0, 1});
     }
 
+    TEST_CASE("NaN or infinite values stay out of OBJ and OFF, with a note")
+    {
+        // A PLY may hold them (a scanner's missing normal); OBJ and OFF readers refuse them.
+        const Read ply = read(
+            "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+            "property float y\nproperty float z\nproperty float nx\n"
+            "property float ny\nproperty float nz\nproperty float u\n"
+            "property float v\nelement face 1\n"
+            "property list uchar int vertex_indices\nend_header\n"
+            "0 0 0 0 -inf 1 0 0\n1 0 0 0 0 1 nan 0\n0 1 0 0 0 1 0 1\n3 0 1 2\n",
+            Format::Ply);
+        for (const Format f : {Format::Obj, Format::Off})
+        {
+            const Written w = write(ply.mesh, ply.attributes, f);
+            const std::string name(f == Format::Obj ? "OBJ" : "OFF");
+            CHECK(w.notes ==
+                  std::vector<std::string>{
+                      "normals written as read, not recomputed from the positions written",
+                      name + " cannot hold NaN or infinite values: the " +
+                          (f == Format::Obj ? "texture coordinates" : "vertex normals") +
+                          " are not written",
+                      name + " cannot hold NaN or infinite values: the " +
+                          (f == Format::Obj ? "normals" : "texture coordinates") +
+                          " are not written"});
+            const Read back = read(w.data, f); // a file its readers accept
+            CHECK(back.mesh == ply.mesh);
+            CHECK(back.attributes.empty());
+        }
+    }
+
     TEST_CASE("attributes that do not fit the mesh are refused before anything is written")
     {
         const Mesh grid = test::open_grid(1, 1);
