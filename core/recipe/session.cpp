@@ -486,8 +486,13 @@ void Session::invert_blocks()
     Scalar* inverse = joint_ ? system_.inverse.data() : system_.block.data();
     for (const Index i : free_)
         if (!spd_inverse3(system_.diagonal[i], &system_.block[6 * i], &inverse[6 * i]))
-            throw SolverError("Session: the 3x3 system of vertex " + std::to_string(i) +
-                              " is not positive definite");
+            // Positive definite in exact arithmetic (docs/math.md); in doubles only while
+            // the normal term's weights stay within some 1e15 of the diagonal's: a recipe
+            // beyond that is refused as the input it is.
+            throw RecipeError("normal",
+                              "its weights overwhelm the other terms at a vertex: the vertex's "
+                              "3x3 system is not positive definite in double precision (a "
+                              "smaller mu or smaller per-face weights make it so)");
     if (!joint_)
     {
         system_.inverse = std::move(system_.block);

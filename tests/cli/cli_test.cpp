@@ -241,6 +241,29 @@ TEST_SUITE("Cli")
         CHECK(cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --lambda fast").code ==
               2);
         CHECK_FALSE(fs::exists(out));
+
+        // Weights that no double can hold beside the others (on a tilted plane every face
+        // has the same normal, so a vertex's normal block is of rank one): refused, not an
+        // internal error.
+        std::string plane;
+        for (int y = 0; y <= 4; ++y)
+            for (int x = 0; x <= 4; ++x)
+                plane += "v " + std::to_string(x) + " " + std::to_string(y) + " " +
+                         std::to_string(0.3 * x + 0.7 * y) + "\n";
+        for (int y = 0; y < 4; ++y)
+            for (int x = 0; x < 4; ++x)
+                plane += "f " + std::to_string(y * 5 + x + 1) + " " +
+                         std::to_string(y * 5 + x + 2) + " " + std::to_string(y * 5 + x + 7) + " " +
+                         std::to_string(y * 5 + x + 6) + "\n";
+        const std::string mesh = (dir / "plane.obj").string();
+        test::write_bytes(mesh, plane);
+        test::write_bytes(recipe, R"({"normal": {"faces": "all", "mu": 1e300}})");
+        const Run extreme = cli("smooth " + test::shell_quote(mesh) + " -o " +
+                                test::shell_quote(out) + " --recipe " + test::shell_quote(recipe));
+        CHECK(extreme.code == 2);
+        CHECK(extreme.err.find("normal: its weights overwhelm the other terms at a vertex") !=
+              std::string::npos);
+        CHECK_FALSE(fs::exists(out));
     }
 
     TEST_CASE("writing STL says which vertices it cannot hold")
