@@ -317,6 +317,26 @@ std::string nonfinite_note(const std::string& format, const std::string& what)
     return format + " cannot hold NaN or infinite values: the " + what + " are not written";
 }
 
+namespace {
+
+// `dimension` vertex columns as per-corner values: one entry per vertex, each corner
+// naming its vertex's.
+CornerValues vertex_columns_at_corners(const Mesh& mesh, const Property* const* columns,
+                                       int dimension)
+{
+    CornerValues c;
+    c.dimension = dimension;
+    const auto d = static_cast<size_t>(dimension);
+    c.values.resize(d * static_cast<size_t>(mesh.vertex_count()));
+    for (size_t v = 0; v < static_cast<size_t>(mesh.vertex_count()); ++v)
+        for (size_t a = 0; a < d; ++a)
+            c.values[d * v + a] = columns[a]->values[v];
+    c.corners = mesh.face_vertices;
+    return c;
+}
+
+} // namespace
+
 CornerValues corner_texcoords(const Mesh& mesh, const MeshAttributes& attributes,
                               const Property** source)
 {
@@ -357,16 +377,9 @@ CornerValues corner_texcoords(const Mesh& mesh, const MeshAttributes& attributes
     const Channels vertex = find_channels(attributes.vertex);
     if (!vertex.has_uv())
         return {};
-    c.dimension = 2;
-    c.values.resize(2 * static_cast<size_t>(mesh.vertex_count()));
-    for (Index v = 0; v < mesh.vertex_count(); ++v)
-        for (int a = 0; a < 2; ++a)
-            c.values[2 * static_cast<size_t>(v) + static_cast<size_t>(a)] =
-                vertex.uv[a]->values[static_cast<size_t>(v)];
-    c.corners = mesh.face_vertices;
     if (source)
         *source = vertex.uv[0];
-    return c;
+    return vertex_columns_at_corners(mesh, vertex.uv, 2);
 }
 
 CornerValues corner_normals(const Mesh& mesh, const MeshAttributes& attributes)
@@ -376,15 +389,7 @@ CornerValues corner_normals(const Mesh& mesh, const MeshAttributes& attributes)
     const Channels vertex = find_channels(attributes.vertex);
     if (!vertex.has_normal())
         return {};
-    CornerValues c;
-    c.dimension = 3;
-    c.values.resize(3 * static_cast<size_t>(mesh.vertex_count()));
-    for (Index v = 0; v < mesh.vertex_count(); ++v)
-        for (int a = 0; a < 3; ++a)
-            c.values[3 * static_cast<size_t>(v) + static_cast<size_t>(a)] =
-                vertex.normal[a]->values[static_cast<size_t>(v)];
-    c.corners = mesh.face_vertices;
-    return c;
+    return vertex_columns_at_corners(mesh, vertex.normal, 3);
 }
 
 namespace {

@@ -192,7 +192,6 @@ struct ObjPart
     std::array<std::vector<Index>, 2> corners; // vt and vn index per corner, once a face has one
     std::vector<ObjStatement> statements;
     std::array<ForwardReference, 3> references; // vertices, vt, vn (lines known in the first part)
-    std::int64_t face_count() const { return mesh.face_count(); }
 };
 
 struct RangeNeedsContext

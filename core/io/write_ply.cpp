@@ -87,33 +87,6 @@ public:
         }
     }
 
-    // A coordinate: always a double (no switch on the type for the mesh's own values).
-    void put_coordinate(double v)
-    {
-        if (ascii_)
-        {
-            if (!row_start_)
-                out_ += ' ';
-            row_start_ = false;
-            append_double(out_, v);
-            return;
-        }
-        append_binary(out_, v, big_);
-    }
-
-    void put_index(Index v)
-    {
-        if (ascii_)
-        {
-            if (!row_start_)
-                out_ += ' ';
-            row_start_ = false;
-            append_integer(out_, v);
-            return;
-        }
-        append_binary(out_, static_cast<std::int32_t>(v), big_);
-    }
-
     // Row `r` of a property.
     void put(const Property& p, Index r)
     {
@@ -320,8 +293,8 @@ void write_ply(const Mesh& mesh, const MeshAttributes& attributes, Encoding enco
         for (Index i = 0; i < mesh.vertex_count(); ++i)
         {
             for (int c = 0; c < 3; ++c)
-                w.put_coordinate(
-                    mesh.positions[3 * static_cast<size_t>(i) + static_cast<size_t>(c)]);
+                w.put(mesh.positions[3 * static_cast<size_t>(i) + static_cast<size_t>(c)],
+                      ValueType::Float64);
             for (const Property* p : columns.vertex)
                 w.put(*p, i);
             w.end_row();
@@ -344,7 +317,7 @@ void write_ply(const Mesh& mesh, const MeshAttributes& attributes, Encoding enco
         {
             w.put(mesh.face_size(f), has_long_faces ? ValueType::UInt32 : ValueType::UInt8);
             for (const Index v : mesh.face(f))
-                w.put_index(v);
+                w.put(v, ValueType::Int32);
             for (const Property* p : columns.face)
                 w.put(*p, f);
             w.end_row();
