@@ -484,6 +484,10 @@ TEST_SUITE("Attributes")
                   "OBJ cannot hold the face properties 'flags'; they are not written",
                   "OBJ cannot hold the elements 'edge' (3 rows), 'camera' (1 row), 'empty' (2 "
                   "rows); they are not written"});
+        // The PLY's header comments become OBJ comments (formats.md's table).
+        CHECK(
+            grid_obj.data.find("\n# comment TextureFile grid.png\n# obj_info scanned in 2012\n") !=
+            std::string::npos);
         const Read grid_back = read(grid_obj.data, Format::Obj);
         CHECK(grid_back.attributes.vertex.find(io::kBlue)->values[0] == 1.0); // 255 / 255
         CHECK(grid_back.attributes.vertex.find(io::kRed)->values[2] == 2.0 / 255);
@@ -494,6 +498,7 @@ TEST_SUITE("Attributes")
         // PLY -> OFF: integer colours stay integers; the face flags and lists are named.
         const Written grid_off = write(grid, pa, Format::Off);
         CHECK(grid_off.data.starts_with("CNOFF\n"));
+        CHECK(grid_off.data.find("\n# comment TextureFile grid.png\n") != std::string::npos);
         CHECK(read(grid_off.data, Format::Off).attributes.vertex.find(io::kRed)->type ==
               ValueType::UInt8);
 
