@@ -7,11 +7,14 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <ctime>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
@@ -54,8 +57,55 @@ std::vector<T> vector_of(const std::string& bytes, size_t count, const fs::path&
                                 " bytes, expected " + std::to_string(count * sizeof(T)) +
                                 " (not this mesh's recovery file)");
     std::vector<T> v(count);
-    std::memcpy(v.data(), bytes.data(), bytes.size());
+    if (count > 0)
+        std::memcpy(v.data(), bytes.data(), bytes.size());
     return v;
+}
+
+// Coordinates: a file's bytes that are not finite numbers are damage, not a shape.
+std::vector<Scalar> coordinates_of(const std::string& bytes, size_t count, const fs::path& file)
+{
+    std::vector<Scalar> v = vector_of<Scalar>(bytes, count, file);
+    for (size_t k = 0; k < v.size(); ++k)
+        if (!std::isfinite(v[k]))
+            throw InvalidInputError("'" + file.string() + "': vertex " + std::to_string(k / 3) +
+                                    " has a coordinate that is not a finite number");
+    return v;
+}
+
+Scalar finite_of(const Json& j)
+{
+    const Scalar v = j.get<Scalar>();
+    if (!std::isfinite(v))
+        throw std::invalid_argument("a coordinate is not a finite number");
+    return v;
+}
+
+// The state file's numbers: what no editor writes is damage. `j` holds `key`.
+Scalar real_at(const Json& j, const char* key, bool zero_allowed)
+{
+    const Scalar v = j.at(key).get<Scalar>();
+    if (!std::isfinite(v) || v < 0 || (v == 0 && !zero_allowed))
+        throw std::invalid_argument(std::string(key) + " must be a number " +
+                                    (zero_allowed ? ">= 0" : "> 0"));
+    return v;
+}
+Scalar positive_at(const Json& j, const char* key)
+{
+    return real_at(j, key, false);
+}
+Scalar non_negative_at(const Json& j, const char* key)
+{
+    return real_at(j, key, true);
+}
+int count_at(const Json& j, const char* key, int lo)
+{
+    const Json& v = j.at(key);
+    if (!v.is_number_integer() || v.get<std::int64_t>() < lo ||
+        v.get<std::int64_t>() > std::numeric_limits<int>::max())
+        throw std::invalid_argument(std::string(key) + " must be an integer from " +
+                                    std::to_string(lo) + " to 2147483647");
+    return static_cast<int>(v.get<std::int64_t>());
 }
 
 Json vec3s(const std::vector<Vec3>& v)
@@ -70,7 +120,11 @@ std::vector<Vec3> vec3s_of(const Json& j)
 {
     std::vector<Vec3> v;
     for (const Json& p : j)
-        v.push_back({p.at(0).get<Scalar>(), p.at(1).get<Scalar>(), p.at(2).get<Scalar>()});
+    {
+        if (p.size() != 3)
+            throw std::invalid_argument("a point or normal must be [x, y, z]");
+        v.push_back({finite_of(p[0]), finite_of(p[1]), finite_of(p[2])});
+    }
     return v;
 }
 
@@ -89,6 +143,23 @@ Json set_json(const ConstraintSet& s)
             {"weights", s.weights}};
 }
 
+// Element indices in [0, end): `what` names them in the message.
+std::vector<Index> indices_of(const Json& j, Index end, const char* what)
+{
+    if (!j.is_array())
+        throw std::invalid_argument(std::string("a set's ") + what + " must be a list");
+    std::vector<Index> out;
+    out.reserve(j.size());
+    for (const Json& i : j)
+    {
+        if (!i.is_number_integer() || i.get<std::int64_t>() < 0 || i.get<std::int64_t>() >= end)
+            throw std::invalid_argument(std::string("a set's ") + what +
+                                        " must be indices of this mesh's " + what);
+        out.push_back(static_cast<Index>(i.get<std::int64_t>()));
+    }
+    return out;
+}
+
 ConstraintSet set_of(const Json& j, Index vertices, Index faces)
 {
     ConstraintSet s;
@@ -97,28 +168,33 @@ ConstraintSet set_of(const Json& j, Index vertices, Index faces)
     if (!kind)
         throw std::invalid_argument("unknown set kind");
     s.kind = *kind;
-    s.vertices = j.at("vertices").get<std::vector<Index>>();
-    s.faces = j.at("faces").get<std::vector<Index>>();
-    for (const Index v : s.vertices)
-        if (v < 0 || v >= vertices)
-            throw std::invalid_argument("vertex out of range");
-    for (const Index f : s.faces)
-        if (f < 0 || f >= faces)
-            throw std::invalid_argument("face out of range");
+    s.vertices = indices_of(j.at("vertices"), vertices, "vertices");
+    s.faces = indices_of(j.at("faces"), faces, "faces");
     s.targets = vec3s_of(j.at("targets"));
     s.normals = vec3s_of(j.at("normals"));
-    s.color = j.at("color").get<std::array<float, 3>>();
+    if (!s.targets.empty() && s.targets.size() != s.vertices.size())
+        throw std::invalid_argument("a set's targets must be one per vertex");
+    if (!s.normals.empty() && s.normals.size() != s.faces.size())
+        throw std::invalid_argument("a set's normals must be one per face");
+    const Json& color = j.at("color");
+    if (!color.is_array() || color.size() != 3)
+        throw std::invalid_argument("a set's colour must be [r, g, b]");
+    for (int c = 0; c < 3; ++c)
+    {
+        const Scalar v = color[static_cast<size_t>(c)].get<Scalar>();
+        if (!(v >= 0 && v <= 1))
+            throw std::invalid_argument("a set's colour must be fractions in [0, 1]");
+        s.color[static_cast<size_t>(c)] = static_cast<float>(v);
+    }
     s.visible = j.at("visible").get<bool>();
     s.enabled = j.value("enabled", true); // files of earlier versions have neither
     if (j.contains("mu") && !j.at("mu").is_null())
-    {
-        s.mu = j.at("mu").get<Scalar>();
-        if (!(*s.mu >= 0) || !std::isfinite(*s.mu))
-            throw std::invalid_argument("a set's mu must be a number >= 0");
-    }
+        s.mu = non_negative_at(j, "mu");
     s.weights = j.value("weights", std::vector<Scalar>{}); // earlier files have no maps
-    if (!s.weights.empty() && s.weights.size() != s.vertices.size())
-        throw std::invalid_argument("a weight map needs one weight per vertex");
+    if (!s.weights.empty() && (s.weights.size() != s.vertices.size() || !takes_weight_map(s.kind)))
+        throw std::invalid_argument(
+            "a weight map needs an anchor or region set, and one "
+            "weight per vertex");
     for (const Scalar w : s.weights)
         if (!(w >= 0) || !std::isfinite(w) || (s.kind == ConstraintKind::Region && w > 1))
             throw std::invalid_argument(
@@ -156,26 +232,32 @@ SolverSettings settings_of(const Json& j)
 {
     SolverSettings s;
     s.optimal_step = j.at("optimal_step").get<bool>();
-    s.lambda = j.at("lambda").get<Scalar>();
-    s.tolerance = j.at("tolerance").get<Scalar>();
-    s.iterations_per_frame = j.at("iterations_per_frame").get<int>();
-    s.steps_per_run = j.value("steps_per_run", s.steps_per_run); // older files have none
+    s.lambda = positive_at(j, "lambda");
+    s.tolerance = non_negative_at(j, "tolerance");
+    s.iterations_per_frame = count_at(j, "iterations_per_frame", 1);
+    if (j.contains("steps_per_run")) // older files have none
+        s.steps_per_run = count_at(j, "steps_per_run", 1);
     s.until_converged = j.value("until_converged", s.until_converged);
-    s.anchor_mu = j.at("anchor_mu").get<Scalar>();
-    s.centroid_mu = j.at("centroid_mu").get<Scalar>();
+    s.anchor_mu = non_negative_at(j, "anchor_mu");
+    s.centroid_mu = non_negative_at(j, "centroid_mu");
     s.denominator = j.at("exact_denominator").get<bool>() ? CentroidDenominator::Exact
                                                           : CentroidDenominator::Paper;
-    s.normal_mu = j.at("normal_mu").get<Scalar>();
+    s.normal_mu = non_negative_at(j, "normal_mu");
     s.normal_source =
         j.at("smoothed_normals").get<bool>() ? NormalSource::Smoothed : NormalSource::Initial;
-    s.normal_smoothing_iterations = j.at("normal_smoothing_iterations").get<int>();
-    s.normal_smoothing_lambda = j.at("normal_smoothing_lambda").get<Scalar>();
-    s.soft_normal_mu = j.at("soft_normal_mu").get<Scalar>();
+    s.normal_smoothing_iterations = count_at(j, "normal_smoothing_iterations", 0);
+    s.normal_smoothing_lambda = positive_at(j, "normal_smoothing_lambda");
+    s.soft_normal_mu = non_negative_at(j, "soft_normal_mu");
     s.joint = j.at("joint").get<bool>();
-    s.gamma = j.at("gamma").get<Scalar>();
+    s.gamma = non_negative_at(j, "gamma");
     // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
     s.method = j.value("taubin", false) ? Method::Taubin : Method::Jacobi;
-    s.taubin_mu = j.value("taubin_mu", s.taubin_mu);
+    if (j.contains("taubin_mu"))
+    {
+        s.taubin_mu = j.at("taubin_mu").get<Scalar>();
+        if (!std::isfinite(s.taubin_mu))
+            throw std::invalid_argument("taubin_mu must be a finite number");
+    }
     if (j.contains("bilateral") && !j["bilateral"].is_null())
         s.bilateral = parse_bilateral(j["bilateral"], "settings.bilateral");
     s.keep_volume = j.value("keep_volume", false);
@@ -258,33 +340,53 @@ std::optional<RecoveryInfo> find_recovery(const std::string& mesh_path, const st
 void restore_recovery(const RecoveryInfo& info, Document& d)
 {
     const fs::path dir(info.dir);
+    RecoveryFiles files;
+    files.dir = info.dir;
+    files.state = io::read_file((dir / "state.json").string());
+    files.positions = io::read_file((dir / "positions.bin").string());
+    files.base = io::read_file((dir / "base.bin").string());
+    files.selection = io::read_file((dir / "selection.bin").string());
+    restore_recovery_files(files, d);
+}
+
+void restore_recovery_files(const RecoveryFiles& files, Document& d)
+{
+    const fs::path dir(files.dir);
     const fs::path state_file = dir / "state.json";
     Document next = d;
     try
     {
-        const Json j = Json::parse(io::read_file(state_file.string()));
+        const Json j = Json::parse(files.state);
         const Index nv = d.mesh.vertex_count(), nf = d.mesh.face_count();
-        if (j.at("vertices").get<Index>() != nv || j.at("faces").get<Index>() != nf)
+        const std::int64_t saved_nv = count_at(j, "vertices", 0),
+                           saved_nf = count_at(j, "faces", 0);
+        if (saved_nv != nv || saved_nf != nf)
             throw InvalidInputError("'" + state_file.string() + "': saved for a mesh of " +
-                                    std::to_string(j.at("vertices").get<Index>()) +
-                                    " vertices and " + std::to_string(j.at("faces").get<Index>()) +
-                                    " faces, this one has " + std::to_string(nv) + " and " +
-                                    std::to_string(nf));
+                                    std::to_string(saved_nv) + " vertices and " +
+                                    std::to_string(saved_nf) + " faces, this one has " +
+                                    std::to_string(nv) + " and " + std::to_string(nf));
         const size_t n3 = 3 * static_cast<size_t>(nv);
-        next.mesh.positions = vector_of<Scalar>(io::read_file((dir / "positions.bin").string()), n3,
-                                                dir / "positions.bin");
-        next.base_positions =
-            vector_of<Scalar>(io::read_file((dir / "base.bin").string()), n3, dir / "base.bin");
+        next.mesh.positions = coordinates_of(files.positions, n3, dir / "positions.bin");
+        next.base_positions = coordinates_of(files.base, n3, dir / "base.bin");
         std::vector<char> selection =
-            vector_of<char>(io::read_file((dir / "selection.bin").string()),
-                            static_cast<size_t>(nv + nf), dir / "selection.bin");
+            vector_of<char>(files.selection, static_cast<size_t>(nv) + static_cast<size_t>(nf),
+                            dir / "selection.bin");
+        for (size_t k = 0; k < selection.size(); ++k)
+            if (selection[k] != 0 && selection[k] != 1)
+                throw InvalidInputError("'" + (dir / "selection.bin").string() + "': byte " +
+                                        std::to_string(k) + " is " +
+                                        std::to_string(static_cast<unsigned char>(selection[k])) +
+                                        ", not a selection flag (0 or 1)");
         next.selected_vertices.assign(selection.begin(), selection.begin() + nv);
         next.selected_faces.assign(selection.begin() + nv, selection.end());
         next.sets.clear();
-        for (const Json& s : j.at("sets"))
+        const Json& sets = j.at("sets");
+        if (!sets.is_array())
+            throw std::invalid_argument("sets must be a list");
+        for (const Json& s : sets)
             next.sets.push_back(set_of(s, nv, nf));
         next.solver = settings_of(j.at("solver"));
-        next.steps_from_base = j.at("steps_from_base").get<int>();
+        next.steps_from_base = count_at(j, "steps_from_base", 0);
         next.reproducible = j.at("reproducible").get<bool>();
     }
     catch (const InvalidInputError&)

@@ -591,6 +591,84 @@ ScriptAction parse_action(const Json& j, const Reader& r)
 
 } // namespace
 
+void script_error(const std::string& name, const std::string& where, const std::string& why)
+{
+    throw InvalidInputError("'" + name + "': " + where + ": " + why);
+}
+
+InputEvent input_event(InputEvent::Type type, ScreenPoint p, MouseButton button, Modifiers mods)
+{
+    InputEvent e;
+    e.type = type;
+    e.x = p.x;
+    e.y = p.y;
+    e.button = button;
+    e.mods = mods;
+    return e;
+}
+
+std::vector<InputEvent> key_events(const KeyChord& chord)
+{
+    std::vector<InputEvent> events;
+    const auto key_event = [&](InputEvent::Type type, int code, Modifiers mods) {
+        InputEvent e;
+        e.type = type;
+        e.key = code;
+        e.mods = mods;
+        events.push_back(e);
+    };
+    // The modifiers go down one after the other, each event carrying those held before it.
+    Modifiers held;
+    if (chord.mods.ctrl)
+    {
+        key_event(InputEvent::Type::KeyPress, key::LeftControl, held);
+        held.ctrl = true;
+    }
+    if (chord.mods.shift)
+    {
+        key_event(InputEvent::Type::KeyPress, key::LeftShift, held);
+        held.shift = true;
+    }
+    if (chord.mods.alt)
+    {
+        key_event(InputEvent::Type::KeyPress, key::LeftAlt, held);
+        held.alt = true;
+    }
+    key_event(InputEvent::Type::KeyPress, chord.key, held);
+    // A printable key without Ctrl or Alt also types its character.
+    if (!held.ctrl && !held.alt && chord.key >= key::Space && chord.key < key::Escape)
+    {
+        InputEvent c;
+        c.type = InputEvent::Type::Char;
+        c.key =
+            chord.key >= 'A' && chord.key <= 'Z' && !held.shift ? chord.key - 'A' + 'a' : chord.key;
+        events.push_back(c);
+    }
+    key_event(InputEvent::Type::KeyRelease, chord.key, held);
+    if (held.alt)
+        key_event(InputEvent::Type::KeyRelease, key::LeftAlt, held);
+    held.alt = false;
+    if (held.shift)
+        key_event(InputEvent::Type::KeyRelease, key::LeftShift, held);
+    held.shift = false;
+    if (held.ctrl)
+        key_event(InputEvent::Type::KeyRelease, key::LeftControl, held);
+    return events;
+}
+
+// A drag as a mouse gives it: move there, press, move through the points, release.
+std::vector<InputEvent> drag_events(const std::vector<ScreenPoint>& points, MouseButton button,
+                                    Modifiers mods)
+{
+    std::vector<InputEvent> events{
+        input_event(InputEvent::Type::MouseMove, points.front()),
+        input_event(InputEvent::Type::MousePress, points.front(), button, mods)};
+    for (size_t k = 1; k < points.size(); ++k)
+        events.push_back(input_event(InputEvent::Type::MouseMove, points[k]));
+    events.push_back(input_event(InputEvent::Type::MouseRelease, points.back(), button, mods));
+    return events;
+}
+
 Script parse_script(const std::string& text, const std::string& name)
 {
     Json j;
