@@ -24,9 +24,10 @@
 namespace meshfair::app {
 
 namespace fs = std::filesystem;
-using Json = nlohmann::json;
 
 namespace {
+
+using Json = nlohmann::json;
 
 std::string absolute(const std::string& path)
 {

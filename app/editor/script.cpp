@@ -86,27 +86,28 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
         switch (a.kind)
         {
             case Kind::Commands:
-                for (const Command& c : a.commands)
-                {
-                    Command command = c;
-                    if (auto* s = std::get_if<cmd::SetSolverSettings>(&command))
+                for (int round = 0; round < a.repeat; ++round)
+                    for (const Command& c : a.commands)
                     {
-                        s->settings =
-                            merged_settings(s->settings, a.keys, session.document().solver);
-                    }
-                    if (!session.dispatch(command, Interaction{a.interaction}) &&
-                        session.state().message_is_error)
-                    {
+                        Command command = c;
+                        if (auto* s = std::get_if<cmd::SetSolverSettings>(&command))
+                        {
+                            s->settings =
+                                merged_settings(s->settings, a.keys, session.document().solver);
+                        }
+                        if (!session.dispatch(command, Interaction{a.interaction}) &&
+                            session.state().message_is_error)
+                        {
+                            if (a.writes)
+                                throw WriteError(a.where + ": " + session.state().message);
+                            script_error(script.name, a.where, session.state().message);
+                        }
+                        // What a save wrote, and what its format could not hold, as the status
+                        // line tells a person.
                         if (a.writes)
-                            throw WriteError(a.where + ": " + session.state().message);
-                        script_error(script.name, a.where, session.state().message);
+                            std::cerr << "meshfair: " << a.where << ": " << session.state().message
+                                      << "\n";
                     }
-                    // What a save wrote, and what its format could not hold, as the status
-                    // line tells a person.
-                    if (a.writes)
-                        std::cerr << "meshfair: " << a.where << ": " << session.state().message
-                                  << "\n";
-                }
                 if (!a.interaction.empty())
                     session.end_interaction();
                 if (a.waits_for_heat)

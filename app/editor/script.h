@@ -33,6 +33,9 @@ struct ScriptAction
     Kind kind = Kind::Commands;
     std::string where; //!< "actions[3]", for messages
     std::vector<Command> commands;
+    //! Commands: the list is dispatched this many times in turn ("undo": 500 is one Undo
+    //! played 500 times, not 500 commands held).
+    int repeat = 1;
     std::vector<InputEvent> events;
     std::string text;
     int count = 1;

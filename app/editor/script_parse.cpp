@@ -287,8 +287,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     {
         if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
             r.bad(kind, "must be a count from 1 to 100000");
-        for (long long k = 0; k < v.get<long long>(); ++k)
-            command(kind == "undo" ? Command(Undo{}) : Command(Redo{}));
+        command(kind == "undo" ? Command(Undo{}) : Command(Redo{}));
+        a.repeat = static_cast<int>(v.get<long long>());
     }
     else if (kind == "view")
     {

@@ -9,7 +9,8 @@ fuzz_build="${MESHFAIR_FUZZ_BUILD_DIR:-$fuzz_root/build-fuzz}"
 fuzz_cov_build="${MESHFAIR_FUZZ_COVERAGE_DIR:-$fuzz_root/build-cov}"
 
 FUZZ_TARGETS=(fuzz_obj fuzz_off fuzz_ply_ascii fuzz_ply_le fuzz_ply_be fuzz_stl_ascii
-    fuzz_stl_binary fuzz_front_door fuzz_recipe fuzz_roundtrip fuzz_solver)
+    fuzz_stl_binary fuzz_front_door fuzz_recipe fuzz_roundtrip fuzz_solver fuzz_script
+    fuzz_recovery)
 
 # The libFuzzer options of every run, and of fuzzing runs (replays run each file whole;
 # the targets ignore inputs beyond 64 KiB themselves).
@@ -60,6 +61,8 @@ fuzz_dict() {
         fuzz_ply_*) echo "$fuzz_dir/dict/ply.dict" ;;
         fuzz_stl_*) echo "$fuzz_dir/dict/stl.dict" ;;
         fuzz_recipe) echo "$fuzz_dir/dict/recipe.dict" ;;
+        fuzz_script) echo "$fuzz_dir/dict/script.dict" ;;
+        fuzz_recovery) echo "$fuzz_dir/dict/recovery.dict" ;;
         *)
             mkdir -p "$fuzz_build/dict"
             cat "$fuzz_dir"/dict/{obj,off,ply,stl}.dict >"$fuzz_build/dict/mesh.dict"
@@ -126,6 +129,8 @@ fuzz_seeds() {
         fuzz_ply_*) _fuzz_copy adversarial '' "$out" "$adv/ply" ;;
         fuzz_stl_*) _fuzz_copy adversarial '' "$out" "$adv/stl" ;;
         fuzz_recipe) _fuzz_copy adversarial '' "$out" "$adv/recipe" "$fuzz_root/assets/recipes" ;;
+        fuzz_script) _fuzz_copy tests '' "$out" "$fuzz_root/tests/render/scripts" ;;
+        fuzz_recovery) _fuzz_copy generated '' "$out" "$g/recovery" ;;
     esac
     case $t in
         fuzz_obj | fuzz_off) _fuzz_copy generated '' "$out" "$g/${t#fuzz_}" ;;

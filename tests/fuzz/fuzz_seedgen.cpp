@@ -4,7 +4,9 @@
 // by the library itself, into OUT/<kind>/<mesh>.<ext>. Kinds: obj off ply_ascii ply_le
 // ply_be stl_ascii stl_binary, and ply_body_{ascii,le,be}: the body of the PLY file
 // behind the 3-byte prefix (vertex count, face count, types 0x01 = double coordinates,
-// uchar counts, int indices) that fuzz_ply_* expand into a canned header.
+// uchar counts, int indices) that fuzz_ply_* expand into a canned header. And recovery/:
+// the editor's recovery files of a few sessions on fuzz_recovery's mesh, written by
+// write_recovery and packed as fuzz_recovery reads them.
 // Usage: fuzz_seedgen OUT
 
 #include <cmath>
@@ -15,7 +17,10 @@
 #include <utility>
 #include <vector>
 
+#include "app/editor/recovery.h"
 #include "core/io/io.h"
+#include "tests/fuzz/fuzz_support.h"
+#include "tests/fuzz/recovery_input.h"
 
 namespace {
 
@@ -85,6 +90,126 @@ void write(const std::filesystem::path& path, const std::string& data)
         throw std::runtime_error("cannot write " + path.string());
 }
 
+// Sessions on small_mesh: untouched; and edited, with a set of every kind (targets,
+// normals, weight maps, weights of their own) and every solver option set.
+std::vector<std::pair<std::string, app::Document>> sessions()
+{
+    using namespace app;
+    std::vector<std::pair<std::string, Document>> out;
+    Document d = make_document(fuzz::small_mesh(), "/fuzz/mesh.obj");
+    out.emplace_back("untouched", d);
+    d.mesh.positions[4] += 0.25;
+    d.base_positions[7] -= 0.5;
+    d.selected_vertices[3] = 1;
+    d.selected_faces[2] = 1;
+    d.sets = {{"region",
+               ConstraintKind::Region,
+               {0, 1, 2, 3},
+               {},
+               {},
+               {},
+               {1, 0, 0},
+               true,
+               true,
+               std::nullopt,
+               {1, 0.5, 0.25, 1}},
+              {"faces",
+               ConstraintKind::Region,
+               {},
+               {4, 5},
+               {},
+               {},
+               {1, 0, 1},
+               true,
+               true,
+               std::nullopt,
+               {}},
+              {"pins",
+               ConstraintKind::Pin,
+               {4, 8},
+               {},
+               {{0, 0, 1.5}, {0.5, 2, 0.5}},
+               {},
+               {0, 1, 0},
+               true,
+               true,
+               std::nullopt,
+               {}},
+              {"anchors",
+               ConstraintKind::Anchor,
+               {5, 6, 9},
+               {},
+               {},
+               {},
+               {0, 0, 1},
+               false,
+               true,
+               2.5,
+               {1, 2, 0}},
+              {"centroids",
+               ConstraintKind::Centroid,
+               {},
+               {0, 1},
+               {},
+               {},
+               {1, 1, 0},
+               true,
+               true,
+               std::nullopt,
+               {}},
+              {"up",
+               ConstraintKind::Normal,
+               {},
+               {2, 3},
+               {},
+               {{0, 1, 0}, {0, 0.6, 0.8}},
+               {0, 1, 1},
+               true,
+               false,
+               0.5,
+               {}},
+              {"hard",
+               ConstraintKind::HardNormal,
+               {},
+               {6},
+               {},
+               {},
+               {0.5, 0.5, 0.5},
+               true,
+               true,
+               std::nullopt,
+               {}},
+              {"soft",
+               ConstraintKind::SoftNormal,
+               {},
+               {7},
+               {},
+               {},
+               {0.2, 0.4, 0.6},
+               true,
+               true,
+               3.0,
+               {}}};
+    d.solver.lambda = 0.25;
+    d.solver.iterations_per_frame = 3;
+    d.solver.normal_source = NormalSource::Smoothed;
+    d.solver.joint = true;
+    d.solver.denominator = CentroidDenominator::Exact;
+    d.solver.method = Method::Taubin;
+    d.solver.bilateral = BilateralWeights{2.0, 0.3, 3, FaceNeighborhood::Vertex, 1.0};
+    d.solver.keep_volume = true;
+    d.solver.falloff = Falloff{5.0, false, FalloffCurve::Sharp, 2.0, true, false};
+    d.steps_from_base = 17;
+    d.reproducible = false;
+    out.emplace_back("edited", d);
+    d.solver.optimal_step = true;
+    d.solver.method = Method::Jacobi;
+    d.solver.bilateral.reset();
+    d.solver.falloff.reset();
+    out.emplace_back("optimal", d);
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -129,6 +254,23 @@ int main(int argc, char** argv)
             write(out / (std::string("ply_body_") + (kind.dir + 4)) / (name + ".body"), prefixed);
             ++files;
         }
+    const std::filesystem::path root = out / "recovery-folders";
+    for (const auto& [name, document] : sessions())
+    {
+        app::write_recovery(document, (root / name).string());
+        for (const auto& entry : std::filesystem::directory_iterator(root / name))
+        {
+            const auto file = [&](const char* f) {
+                return io::read_file((entry.path() / f).string());
+            };
+            const app::RecoveryFiles packed{entry.path().string(), file("state.json"),
+                                            file("positions.bin"), file("base.bin"),
+                                            file("selection.bin")};
+            write(out / "recovery" / (name + ".bin"), fuzz::recovery_input(packed));
+            ++files;
+        }
+    }
+    std::filesystem::remove_all(root);
     std::printf("fuzz_seedgen: wrote %d seeds under %s\n", files, out.c_str());
     return 0;
 }

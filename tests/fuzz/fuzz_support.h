@@ -12,6 +12,7 @@
 
 #include "core/io/io.h"
 #include "core/mesh/mesh.h"
+#include "core/recipe/recipe.h"
 
 namespace meshfair::fuzz {
 
@@ -57,6 +58,16 @@ std::string canned_ply_header(io::Encoding encoding, unsigned vertices, unsigned
 
 //! Bitwise equality of two meshes (positions compared as bits, so -0.0 differs from 0.0).
 bool identical(const Mesh& a, const Mesh& b);
+
+//! \brief A cube of 6 quads with one corner cut off by a triangle-pentagon pair: 10
+//! vertices, 8 faces of sizes 3, 4 and 5, and a boundary (the recipe and recovery targets'
+//! mesh).
+Mesh small_mesh();
+
+//! \brief Every number of the recipe within +-1000 (step lengths, targets, normals, weights;
+//! a term's mu times a per-element weight within +-1e6): a recipe whose steps must stay
+//! finite on small_mesh.
+bool bounded(const Recipe& recipe);
 
 //! True when every value is finite.
 bool all_finite(const double* values, size_t count);
