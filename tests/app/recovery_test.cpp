@@ -83,6 +83,16 @@ void orphan(const std::string& dir)
     io::write_file_atomically(state.string(), text);
 }
 
+// Writes the recovery files of `d` under `root`; returns their folder.
+std::string written_folder(const Document& d, const std::string& root)
+{
+    write_recovery(d, root);
+    std::string folder;
+    for (const auto& entry : fs::directory_iterator(root))
+        folder = entry.path().string();
+    return folder;
+}
+
 } // namespace
 
 TEST_SUITE("Recovery")
@@ -125,10 +135,7 @@ TEST_SUITE("Recovery")
         const fs::path dir = test::temp_dir();
         const std::string root = (dir / "recovery").string();
         const Document d = edited(dir);
-        write_recovery(d, root);
-        std::string folder;
-        for (const auto& entry : fs::directory_iterator(root))
-            folder = entry.path().string();
+        const std::string folder = written_folder(d, root);
         orphan(folder);
         const RecoveryInfo info = *find_recovery(d.path, root);
 
@@ -154,86 +161,84 @@ TEST_SUITE("Recovery")
         CHECK_THROWS_WITH_AS(restore_recovery(info, same),
                              doctest::Contains("damaged recovery file"), InvalidInputError);
     }
-}
 
-TEST_CASE("recovery files holding what no editor writes are refused, with what is wrong named")
-{
-    const fs::path dir = test::temp_dir();
-    const std::string root = (dir / "recovery").string();
-    const Document d = edited(dir);
-    write_recovery(d, root);
-    std::string folder;
-    for (const auto& entry : fs::directory_iterator(root))
-        folder = entry.path().string();
-    const auto file = [&](const char* name) {
-        return io::read_file((fs::path(folder) / name).string());
-    };
-    const RecoveryFiles written{folder, file("state.json"), file("positions.bin"), file("base.bin"),
-                                file("selection.bin")};
+    TEST_CASE("recovery files holding what no editor writes are refused, with what is wrong named")
     {
-        Document fresh = load_document(d.path);
-        restore_recovery_files(written, fresh);
-        CHECK(fresh.mesh.positions == d.mesh.positions);
-        CHECK(fresh.sets == d.sets);
-        CHECK(fresh.solver == d.solver);
-    }
-    using Json = nlohmann::json;
-    const Json state = Json::parse(written.state);
-    // Each a change of one file, and the words the refusal must hold.
-    struct Damage
-    {
-        const char* what;
-        std::function<void(RecoveryFiles&, Json&)> apply;
-    };
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    const std::vector<Damage> damages = {
-        {"vertex 2 has a coordinate",
-         [&](RecoveryFiles& f, Json&) { std::memcpy(f.positions.data() + 7 * 8, &nan, 8); }},
-        {"base.bin': vertex 0",
-         [&](RecoveryFiles& f, Json&) { std::memcpy(f.base.data(), &nan, 8); }},
-        {"byte 5 is 2", [](RecoveryFiles& f, Json&) { f.selection[5] = 2; }},
-        {"indices of this mesh's vertices",
-         [](RecoveryFiles&, Json& j) { j["sets"][0]["vertices"][1] = 42; }},
-        {"indices of this mesh's faces",
-         [](RecoveryFiles&, Json& j) { j["sets"][1]["faces"][0] = 1.5; }},
-        {"targets must be one per vertex",
-         [](RecoveryFiles&, Json& j) { j["sets"][0]["targets"].erase(1); }},
-        {"normals must be one per face",
-         [](RecoveryFiles&, Json& j) {
-             j["sets"][1]["normals"].push_back({0, 0, 1});
-         }},
-        {"[x, y, z]",
-         [](RecoveryFiles&, Json& j) {
-             j["sets"][0]["targets"][0] = {1, 2};
-         }},
-        {"colour must be fractions",
-         [](RecoveryFiles&, Json& j) { j["sets"][2]["color"][1] = 1e300; }},
-        {"weight map needs an anchor or region set",
-         [](RecoveryFiles&, Json& j) {
-             j["sets"][0]["weights"] = {0.5, 0.5};
-         }},
-        {"mu must be a number >= 0", [](RecoveryFiles&, Json& j) { j["sets"][1]["mu"] = -1; }},
-        {"lambda must be a number > 0", [](RecoveryFiles&, Json& j) { j["solver"]["lambda"] = 0; }},
-        {"iterations_per_frame must be an integer from 1",
-         [](RecoveryFiles&, Json& j) { j["solver"]["iterations_per_frame"] = 0; }},
-        {"normal_smoothing_iterations must be an integer",
-         [](RecoveryFiles&, Json& j) { j["solver"]["normal_smoothing_iterations"] = 1e20; }},
-        {"steps_from_base must be an integer",
-         [](RecoveryFiles&, Json& j) { j["steps_from_base"] = -3; }},
-        {"sets must be a list", [](RecoveryFiles&, Json& j) { j["sets"] = 7; }},
-    };
-    for (const Damage& damage : damages)
-    {
-        CAPTURE(damage.what);
-        RecoveryFiles files = written;
-        Json j = state;
-        damage.apply(files, j);
-        files.state = j.dump(1);
-        Document fresh = load_document(d.path);
-        const std::vector<Scalar> before = fresh.mesh.positions;
-        CHECK_THROWS_WITH_AS(restore_recovery_files(files, fresh), doctest::Contains(damage.what),
-                             InvalidInputError);
-        CHECK(fresh.mesh.positions == before);
-        CHECK(fresh.sets.empty());
+        const fs::path dir = test::temp_dir();
+        const std::string root = (dir / "recovery").string();
+        const Document d = edited(dir);
+        const std::string folder = written_folder(d, root);
+        const auto file = [&](const char* name) {
+            return io::read_file((fs::path(folder) / name).string());
+        };
+        const RecoveryFiles written{folder, file("state.json"), file("positions.bin"),
+                                    file("base.bin"), file("selection.bin")};
+        {
+            Document fresh = load_document(d.path);
+            restore_recovery_files(written, fresh);
+            CHECK(fresh.mesh.positions == d.mesh.positions);
+            CHECK(fresh.sets == d.sets);
+            CHECK(fresh.solver == d.solver);
+        }
+        using Json = nlohmann::json;
+        const Json state = Json::parse(written.state);
+        // Each a change of one file, and the words the refusal must hold.
+        struct Damage
+        {
+            const char* what;
+            std::function<void(RecoveryFiles&, Json&)> apply;
+        };
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        const std::vector<Damage> damages = {
+            {"vertex 2 has a coordinate",
+             [&](RecoveryFiles& f, Json&) { std::memcpy(f.positions.data() + 7 * 8, &nan, 8); }},
+            {"base.bin': vertex 0",
+             [&](RecoveryFiles& f, Json&) { std::memcpy(f.base.data(), &nan, 8); }},
+            {"byte 5 is 2", [](RecoveryFiles& f, Json&) { f.selection[5] = 2; }},
+            {"indices of this mesh's vertices",
+             [](RecoveryFiles&, Json& j) { j["sets"][0]["vertices"][1] = 42; }},
+            {"indices of this mesh's faces",
+             [](RecoveryFiles&, Json& j) { j["sets"][1]["faces"][0] = 1.5; }},
+            {"targets must be one per vertex",
+             [](RecoveryFiles&, Json& j) { j["sets"][0]["targets"].erase(1); }},
+            {"normals must be one per face",
+             [](RecoveryFiles&, Json& j) {
+                 j["sets"][1]["normals"].push_back({0, 0, 1});
+             }},
+            {"[x, y, z]",
+             [](RecoveryFiles&, Json& j) {
+                 j["sets"][0]["targets"][0] = {1, 2};
+             }},
+            {"colour must be fractions",
+             [](RecoveryFiles&, Json& j) { j["sets"][2]["color"][1] = 1e300; }},
+            {"weight map needs an anchor or region set",
+             [](RecoveryFiles&, Json& j) {
+                 j["sets"][0]["weights"] = {0.5, 0.5};
+             }},
+            {"mu must be a number >= 0", [](RecoveryFiles&, Json& j) { j["sets"][1]["mu"] = -1; }},
+            {"lambda must be a number > 0",
+             [](RecoveryFiles&, Json& j) { j["solver"]["lambda"] = 0; }},
+            {"iterations_per_frame must be an integer from 1",
+             [](RecoveryFiles&, Json& j) { j["solver"]["iterations_per_frame"] = 0; }},
+            {"normal_smoothing_iterations must be an integer",
+             [](RecoveryFiles&, Json& j) { j["solver"]["normal_smoothing_iterations"] = 1e20; }},
+            {"steps_from_base must be an integer",
+             [](RecoveryFiles&, Json& j) { j["steps_from_base"] = -3; }},
+            {"sets must be a list", [](RecoveryFiles&, Json& j) { j["sets"] = 7; }},
+        };
+        for (const Damage& damage : damages)
+        {
+            CAPTURE(damage.what);
+            RecoveryFiles files = written;
+            Json j = state;
+            damage.apply(files, j);
+            files.state = j.dump(1);
+            Document fresh = load_document(d.path);
+            const std::vector<Scalar> before = fresh.mesh.positions;
+            CHECK_THROWS_WITH_AS(restore_recovery_files(files, fresh),
+                                 doctest::Contains(damage.what), InvalidInputError);
+            CHECK(fresh.mesh.positions == before);
+            CHECK(fresh.sets.empty());
+        }
     }
 }
