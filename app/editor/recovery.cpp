@@ -119,10 +119,12 @@ Json vec3s(const std::vector<Vec3>& v)
 
 std::vector<Vec3> vec3s_of(const Json& j)
 {
+    if (!j.is_array())
+        throw std::invalid_argument("targets and normals must be lists");
     std::vector<Vec3> v;
     for (const Json& p : j)
     {
-        if (p.size() != 3)
+        if (!p.is_array() || p.size() != 3)
             throw std::invalid_argument("a point or normal must be [x, y, z]");
         v.push_back({finite_of(p[0]), finite_of(p[1]), finite_of(p[2])});
     }
@@ -326,6 +328,8 @@ std::optional<RecoveryInfo> find_recovery(const std::string& mesh_path, const st
     try
     {
         const Json j = Json::parse(io::read_file((dir / "state.json").string()));
+        if (!j.at("pid").is_number_integer())
+            return std::nullopt; // damaged
         RecoveryInfo info{dir.string(), j.at("mesh").get<std::string>(), j.at("pid").get<long>(),
                           j.at("saved_at").get<std::string>()};
         if (info.mesh_path != absolute(mesh_path) || running(info.pid))

@@ -42,6 +42,12 @@ struct Reader
                 "must be a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
         return j.get<double>();
     }
+    int integer(const Json& j, const std::string& key, int lo, int hi) const
+    {
+        if (!j.is_number_integer() || j.get<long long>() < lo || j.get<long long>() > hi)
+            bad(key, "must be a count from " + std::to_string(lo) + " to " + std::to_string(hi));
+        return static_cast<int>(j.get<long long>());
+    }
     ScreenPoint point(const Json& j, const std::string& key) const
     {
         if (!j.is_array() || j.size() != 2)
@@ -183,11 +189,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         return Vec3{r.number(x[0], key, -1e9, 1e9), r.number(x[1], key, -1e9, 1e9),
                     r.number(x[2], key, -1e9, 1e9)};
     };
-    const auto count = [&](int lo, int hi) {
-        if (!v.is_number_integer() || v.get<long long>() < lo || v.get<long long>() > hi)
-            r.bad(kind, "must be a count from " + std::to_string(lo) + " to " + std::to_string(hi));
-        return static_cast<int>(v.get<long long>());
-    };
+    const auto count = [&](int lo, int hi) { return r.integer(v, kind, lo, hi); };
     const auto command = [&](Command c) { a.commands.push_back(std::move(c)); };
     using namespace cmd;
 
@@ -285,10 +287,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     }
     else if (kind == "undo" || kind == "redo")
     {
-        if (!v.is_number_integer() || v.get<long long>() < 1 || v.get<long long>() > 100000)
-            r.bad(kind, "must be a count from 1 to 100000");
+        a.repeat = count(1, 100000);
         command(kind == "undo" ? Command(Undo{}) : Command(Redo{}));
-        a.repeat = static_cast<int>(v.get<long long>());
     }
     else if (kind == "view")
     {
@@ -397,10 +397,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         }
         if (v.contains("steps"))
         {
-            const Json& n = v["steps"];
-            if (!n.is_number_integer() || n.get<long long>() < 1 || n.get<long long>() > 10000)
-                r.bad(kind + ".steps", "must be a count from 1 to 10000");
-            p.steps = static_cast<int>(n.get<long long>());
+            p.steps = r.integer(v["steps"], kind + ".steps", 1, 10000);
         }
         if (!stroke)
             command(SetPaintSettings{p});
@@ -448,9 +445,9 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                     s.lambda = r.number(value, k, 1e-9, 1e3);
             }
             else if (key == "iterations_per_frame")
-                s.iterations_per_frame = static_cast<int>(r.number(value, k, 1, 100000));
+                s.iterations_per_frame = r.integer(value, k, 1, 100000);
             else if (key == "steps_per_run")
-                s.steps_per_run = static_cast<int>(r.number(value, k, 1, 100000));
+                s.steps_per_run = r.integer(value, k, 1, 100000);
             else if (key == "until_converged")
             {
                 if (!value.is_boolean())
@@ -470,7 +467,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else if (key == "gamma")
                 s.gamma = r.number(value, k, 0, 1e12);
             else if (key == "normal_smoothing_iterations")
-                s.normal_smoothing_iterations = static_cast<int>(r.number(value, k, 0, 100000));
+                s.normal_smoothing_iterations = r.integer(value, k, 0, 100000);
             else if (key == "normal_smoothing_lambda")
                 s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
             else if (key == "joint")
