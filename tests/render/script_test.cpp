@@ -324,6 +324,11 @@ TEST_SUITE("Scripted sessions")
         CHECK(message("[{\"undo\": 0}]") ==
               "'s.json': actions[0].undo: must be a count from 1 "
               "to 100000");
+        CHECK(message(R"([{"solver": {"iterations_per_frame": 2.5}}])") ==
+              "'s.json': actions[0].solver.iterations_per_frame: must be a count from 1 to "
+              "100000");
+        CHECK(message(R"([{"paint_settings": {"steps": 3.0}}])") ==
+              "'s.json': actions[0].paint_settings.steps: must be a count from 1 to 10000");
         CHECK(message("[{\"select\": \"grow\", \"modifiers\": [\"shift\"]}]") ==
               "'s.json': actions[0].modifiers: only drag, click or click_widget takes 'modifiers'");
         CHECK(message("[{\"drag\": [[0, 0], [1, 1]], \"modifiers\": [\"hyper\"]}]") ==
