@@ -448,11 +448,30 @@ std::vector<std::string> describe_attributes(const MeshAttributes& a)
     if (!a.normals.empty())
         out.push_back("normals: " + std::to_string(a.normals.entry_count()) + " vn on " +
                       std::to_string(corners_used(a.normals)) + " corners");
-    for (const Element& e : a.other_elements)
+    // The first few by name, the rest counted: a header of thousands of elements is a
+    // line of the report, not thousands.
+    const size_t listed = std::min(a.other_elements.size(), kElementsListed);
+    for (size_t k = 0; k < listed; ++k)
+    {
+        const Element& e = a.other_elements[k];
         out.push_back(
             "element '" + e.name + "' (" + count_of(e.count, "row", "rows") + ", " +
             count_of(static_cast<std::int64_t>(e.properties.size()), "property", "properties") +
             ")");
+    }
+    if (a.other_elements.size() > listed)
+    {
+        std::int64_t rows = 0, properties = 0;
+        for (size_t k = listed; k < a.other_elements.size(); ++k)
+        {
+            rows += a.other_elements[k].count;
+            properties += static_cast<std::int64_t>(a.other_elements[k].properties.size());
+        }
+        out.push_back(count_of(static_cast<std::int64_t>(a.other_elements.size() - listed),
+                               "more element", "more elements") +
+                      " (" + count_of(rows, "row", "rows") + ", " +
+                      count_of(properties, "property", "properties") + " in all)");
+    }
     if (!a.statements.empty())
     {
         std::map<std::string, int> kinds;
@@ -501,10 +520,10 @@ void Unwritten::flush(std::vector<std::string>& notes) const
     for (const auto& [kind, names] : kinds_)
     {
         std::string list;
-        for (size_t k = 0; k < names.size() && k < 8; ++k)
+        for (size_t k = 0; k < names.size() && k < kElementsListed; ++k)
             list += (k == 0 ? "" : ", ") + names[k];
-        if (names.size() > 8)
-            list += " and " + std::to_string(names.size() - 8) + " more";
+        if (names.size() > kElementsListed)
+            list += " and " + std::to_string(names.size() - kElementsListed) + " more";
         notes.push_back(format_ + " cannot hold the " + kind + " " + list +
                         "; they are not written");
     }

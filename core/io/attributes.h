@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <cstddef>
 #include <span>
 #include <string>
 #include <string_view>
@@ -192,8 +193,13 @@ bool all_finite(std::span<const double> values);
 //! the normals are not written".
 std::string nonfinite_note(const std::string& format, const std::string& what);
 
+//! How many of a file's other elements describe_attributes and the notes of what a format
+//! cannot hold name one by one; the rest are counted.
+inline constexpr size_t kElementsListed = 8;
+
 //! One line per kind of attribute, for `info` and reports: "vertex colours (red green
-//! blue: uchar)", "texture coordinates: 3225 vt on 12000 corners", ...
+//! blue: uchar)", "texture coordinates: 3225 vt on 12000 corners", ...; other elements one
+//! line each up to kElementsListed, then "N more elements (R rows, P properties in all)".
 std::vector<std::string> describe_attributes(const MeshAttributes& attributes);
 
 //! \brief What a writer leaves out, gathered into one note per kind:

@@ -49,6 +49,12 @@ constexpr bool kSanitized = false;
 #endif
 
 constexpr long kMiB = 1024 * 1024;
+// The time bound of a 1 MiB shape. It speaks of the release build; AddressSanitizer's
+// allocator and shadow memory make the allocating readers 2-3x slower, and twice that
+// again on a loaded machine (ply_many_properties: 0.19 s release, 0.63 s sanitized on an
+// idle machine, 0.79 s beside the rest of the sanitized tests in a fresh Debian root), so
+// the sanitized build keeps the growth check below and a bound 3x the release one.
+constexpr double kSecondsPerMiB = kSanitized ? 3.0 : 1.0;
 // Address space granted to a child. ASan reserves terabytes of shadow address space,
 // so a sanitized build is limited by the peak-RSS check alone.
 constexpr rlim_t kAddressLimit = 1024 * kMiB;
@@ -500,11 +506,12 @@ int main(int argc, char** argv)
                                          std::to_string(limit_kib) + " KiB");
                 // Over the bound, timed twice more keeping the fastest: one slow run on a
                 // loaded machine is the scheduler's, a slow reader is slow every time.
-                for (int retry = 0; retry < 2 && k == 0 && seconds[0] > 1.0; ++retry)
+                for (int retry = 0; retry < 2 && k == 0 && seconds[0] > kSecondsPerMiB; ++retry)
                     seconds[0] = std::min(
                         seconds[0], seconds_of({cli, "info", path.string()}, scratch, scratch, &r));
-                if (k == 0 && seconds[0] > 1.0)
-                    fail(shape.name, "1 MiB took " + std::to_string(seconds[0]) + " s (limit 1 s)");
+                if (k == 0 && seconds[0] > kSecondsPerMiB)
+                    fail(shape.name, "1 MiB took " + std::to_string(seconds[0]) + " s (limit " +
+                                         std::to_string(kSecondsPerMiB) + " s)");
                 if (k == 1)
                     std::cout << "  " << shape.name << ": "
                               << (r.code == 0 ? "accepted" : "refused") << ", 1 MiB in "

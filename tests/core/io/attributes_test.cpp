@@ -389,6 +389,27 @@ TEST_SUITE("Attributes")
         CHECK(ascii.find(" 0.125 0.25 ") != std::string::npos);
     }
 
+    TEST_CASE("a header of many elements is described by the first few and a count")
+    {
+        std::string ply = "ply\nformat ascii 1.0\n";
+        for (int k = 0; k < 20; ++k)
+            ply += "element e" + std::to_string(k) + (k == 11 ? " 2\nproperty uchar q\n" : " 0\n");
+        ply +=
+            "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 1\nproperty list uchar int vertex_indices\nend_header\n1\n2\n"
+            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+        const Read in = read(ply, Format::Ply);
+        REQUIRE(in.attributes.other_elements.size() == 20);
+        const std::vector<std::string> lines = io::describe_attributes(in.attributes);
+        REQUIRE(lines.size() == io::kElementsListed + 1);
+        CHECK(lines[0] == "element 'e0' (0 rows, 0 properties)");
+        CHECK(lines[7] == "element 'e7' (0 rows, 0 properties)");
+        CHECK(lines[8] == "12 more elements (2 rows, 1 property in all)");
+        // Every element is still kept and written back.
+        CHECK(read(write(in.mesh, in.attributes, Format::Ply).data, Format::Ply)
+                  .attributes.other_elements == in.attributes.other_elements);
+    }
+
     TEST_CASE("OFF: normals, colours with alpha, texture coordinates and face colours round-trip")
     {
         const std::string text =
