@@ -201,8 +201,6 @@ bool all_finite(const double* values, size_t count)
     return true;
 }
 
-// A cube of 6 quads with one corner cut off by a triangle-pentagon pair: 10 vertices,
-// 8 faces of sizes 3, 4 and 5, and a boundary.
 Mesh small_mesh()
 {
     Mesh m;
