@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "app/bench/vec3_math.h"
+#include "core/geometry/face_geometry.h"
 
 namespace meshfair::bench {
 
@@ -445,9 +446,101 @@ Mesh cad_part_mesh(Scalar edge)
     return convex_polyhedron_mesh(cad_part_half_spaces(), edge);
 }
 
+namespace {
+
+//! The faces of `mesh` that keep(f) accepts, with the vertices they use (renumbered in
+//! order of first use).
+template <class Keep>
+Mesh faces_where(const Mesh& mesh, Keep keep)
+{
+    std::vector<Index> renumber(mesh.vertex_count(), kInvalidIndex);
+    Mesh out;
+    for (Index f = 0; f < mesh.face_count(); ++f)
+    {
+        if (!keep(f))
+            continue;
+        std::vector<Index> face;
+        for (const Index v : mesh.face(f))
+        {
+            if (renumber[v] == kInvalidIndex)
+            {
+                renumber[v] = out.vertex_count();
+                out.add_vertex(mesh.positions[3 * v], mesh.positions[3 * v + 1],
+                               mesh.positions[3 * v + 2]);
+            }
+            face.push_back(renumber[v]);
+        }
+        out.add_face(face);
+    }
+    return out;
+}
+
+} // namespace
+
+Mesh scan_patch_mesh(Scalar edge)
+{
+    const auto height = [](Scalar x, Scalar y) {
+        const Scalar ridge = 0.25 * std::max<Scalar>(0, 0.6 - std::abs(x - 0.1));
+        const Scalar bump =
+            0.12 * std::exp(-((x + 0.55) * (x + 0.55) + (y - 0.45) * (y - 0.45)) / 0.04);
+        return ridge + bump;
+    };
+    const auto inside = [](Scalar x, Scalar y) {
+        return std::hypot(x, y) < 1 + 0.08 * std::sin(5 * std::atan2(y, x));
+    };
+    const int n = static_cast<int>(std::ceil(2.2 / edge));
+    Mesh mesh;
+    std::vector<Index> id(static_cast<size_t>(n + 1) * (n + 1), kInvalidIndex);
+    const auto at = [&](int i, int j) -> Index& {
+        return id[static_cast<size_t>(j) * (n + 1) + i];
+    };
+    const auto point = [&](int i, int j) {
+        return std::array<Scalar, 2>{-1.1 + i * edge, -1.1 + j * edge};
+    };
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i)
+        {
+            const auto [x, y] = point(i, j);
+            if (inside(x, y))
+            {
+                at(i, j) = mesh.vertex_count();
+                mesh.add_vertex(x, y, height(x, y));
+            }
+        }
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+        {
+            // Counter-clockwise seen from +z: the normals point up.
+            const Index a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            if (a != kInvalidIndex && b != kInvalidIndex && c != kInvalidIndex)
+                mesh.add_face(std::vector<Index>{a, b, c});
+            if (a != kInvalidIndex && c != kInvalidIndex && d != kInvalidIndex)
+                mesh.add_face(std::vector<Index>{a, c, d});
+        }
+    // Without the vertices no face uses (a corner of the disk's edge alone).
+    return faces_where(mesh, [](Index) { return true; });
+}
+
+Mesh holed_part_mesh(Scalar edge)
+{
+    const Mesh part = cad_part_mesh(edge);
+    // On the top (z = 1), the front (y = 0), the left (x = 0), the chamfer, the edge
+    // x = 0, y = 0 (a crease) and the corner (0, 1.5, 1).
+    const std::array<Vec3, 6> centres = {Vec3{1.0, 0.7, 1.0},  Vec3{1.2, 0.0, 0.4},
+                                         Vec3{0.0, 0.8, 0.5},  Vec3{0.6, 0.15, 0.85},
+                                         Vec3{0.0, 0.0, 0.45}, Vec3{0.0, 1.5, 1.0}};
+    const Scalar radius = 0.12;
+    return faces_where(part, [&](Index f) {
+        const Vec3 c = face_centroid(part, part.positions, f);
+        return std::ranges::none_of(centres, [&](const Vec3& p) {
+            return std::hypot(c[0] - p[0], c[1] - p[1], c[2] - p[2]) < radius;
+        });
+    });
+}
+
 std::vector<std::string> generated_mesh_names()
 {
-    return {"cube", "cylinder", "cad-part", "cut-sphere", "quad-box"};
+    return {"cube", "cylinder", "cad-part", "cut-sphere", "quad-box", "scan-patch", "holed-part"};
 }
 
 Mesh generated_mesh(const std::string& name)
@@ -462,6 +555,10 @@ Mesh generated_mesh(const std::string& name)
         return cut_sphere_mesh();
     if (name == "quad-box")
         return rounded_box_quad_mesh();
+    if (name == "scan-patch")
+        return scan_patch_mesh();
+    if (name == "holed-part")
+        return holed_part_mesh();
     std::string known;
     for (const std::string& n : generated_mesh_names())
         known += (known.empty() ? "" : ", ") + n;

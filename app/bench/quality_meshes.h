@@ -12,8 +12,9 @@
 namespace meshfair::bench {
 
 // Clean meshes with sharp features for meshfair-quality (app/bench/quality_main.cpp). Each
-// is a closed, consistently outward-oriented 2-manifold with near-uniform edge lengths (the
-// noise is scaled by the mean edge length), about 10k vertices by default.
+// is a consistently oriented 2-manifold with near-uniform edge lengths (the noise is scaled
+// by the mean edge length), about 10k vertices by default; all are closed but the scan
+// patch (one boundary loop) and the holed part (six holes), as scans come.
 
 //! \brief An axis-aligned cube of edge `side` centred at the origin, each face an n x n grid
 //! of squares split into two triangles along the same diagonal. #V = 6 n^2 + 2.
@@ -77,8 +78,21 @@ std::vector<HalfSpace> cad_part_half_spaces();
 //! convex_polyhedron_mesh(cad_part_half_spaces(), edge).
 Mesh cad_part_mesh(Scalar edge = 0.04);
 
+//! \brief An open scan-like patch: the height field z = h(x, y) over a wobbly disk of radius
+//! about 1 (r < 1 + 0.08 sin 5 phi), sampled on a grid of spacing `edge`, each square split
+//! along one diagonal, the squares the disk cuts kept as far as their triangles lie in it
+//! (a ragged border, as a scan's). h is a ridge (a crease of 28 degrees along x = 0.1),
+//! two valleys (creases of 14 degrees along x = -0.5 and x = 0.7) and a smooth bump.
+//! Faces point up (+z). One boundary loop.
+Mesh scan_patch_mesh(Scalar edge = 0.02);
+
+//! \brief The CAD-like part with six round holes of radius 0.12 cut out (the faces whose
+//! centroid lies within it of six points of its surface, on flat faces, creases and a
+//! corner), unused vertices dropped: a closed model with holes, six boundary loops.
+Mesh holed_part_mesh(Scalar edge = 0.04);
+
 //! Names of the generated meshes, in report order: cube, cylinder, cad-part, cut-sphere,
-//! quad-box.
+//! quad-box, scan-patch, holed-part.
 std::vector<std::string> generated_mesh_names();
 
 //! \brief The generated mesh of that name, at its default size.

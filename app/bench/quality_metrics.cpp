@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "app/bench/vec3_math.h"
+#include "core/energies/volume_constraint.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/parallel.h"
 
@@ -210,6 +211,28 @@ Scalar signed_volume(const Mesh& mesh, std::span<const Scalar> x)
             six_volume += dot(a, cross(point(x, face[k]) - o, point(x, face[k + 1]) - o));
     }
     return six_volume / 6;
+}
+
+Scalar capped_volume(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x)
+{
+    const VolumeConstraint volumes(mesh, topology, x,
+                                   std::vector<char>(static_cast<size_t>(mesh.vertex_count()), 0));
+    Scalar sum = 0;
+    for (const Scalar v : volumes.target_volumes())
+        sum += v;
+    return sum;
+}
+
+Index turned_over_faces(const Mesh& mesh, std::span<const Scalar> x, std::span<const Scalar> before)
+{
+    Index count = 0;
+    for (Index f = 0; f < mesh.face_count(); ++f)
+    {
+        const Vec3 a = face_area_vector(mesh, before, f), b = face_area_vector(mesh, x, f);
+        if ((a[0] != 0 || a[1] != 0 || a[2] != 0) && dot(a, b) <= 0)
+            ++count;
+    }
+    return count;
 }
 
 Scalar volume_change_percent(const Mesh& mesh, std::span<const Scalar> x,

@@ -58,6 +58,18 @@ Scalar mean_relative_distance(const SurfaceDistance& clean, std::span<const Scal
 //! for a closed outward-oriented mesh.
 Scalar signed_volume(const Mesh& mesh, std::span<const Scalar> x);
 
+//! \brief The volume of an open mesh as the volume constraint keeps it: each component's,
+//! with its boundary loops capped by fans from their centroids (VolumeConstraint,
+//! docs/math.md), summed. The enclosed volume where the mesh is closed.
+//! \pre the topology has TopologyParts::Corners and TopologyParts::Edges.
+Scalar capped_volume(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x);
+
+//! \brief How many faces are turned over at x against `before`: their Newell vectors point
+//! away from each other (more than 90 degrees apart). Faces of zero area before do not
+//! count.
+Index turned_over_faces(const Mesh& mesh, std::span<const Scalar> x,
+                        std::span<const Scalar> before);
+
 //! \brief Delta V: 100 (V(x) - V(clean_x)) / V(clean_x), in percent (signed_volume).
 Scalar volume_change_percent(const Mesh& mesh, std::span<const Scalar> x,
                              std::span<const Scalar> clean_x);

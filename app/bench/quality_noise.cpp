@@ -67,6 +67,8 @@ std::string noise_name(NoiseModel model)
             return "gaussian-random";
         case NoiseModel::Impulsive:
             return "impulsive";
+        case NoiseModel::GaussianScan:
+            return "gaussian-scan";
     }
     return "?";
 }
@@ -78,6 +80,8 @@ std::vector<NoiseCase> standard_noise_cases()
         for (const Scalar level : {0.2, 0.4, 0.7})
             cases.push_back({model, level});
     cases.push_back({NoiseModel::Impulsive, 0.7});
+    for (const Scalar level : {0.2, 0.4, 0.7})
+        cases.push_back({NoiseModel::GaussianScan, level});
     return cases;
 }
 
@@ -155,6 +159,14 @@ std::vector<Scalar> noisy_positions(const Mesh& clean, const NoiseCase& noise, s
             }
             break;
         }
+        case NoiseModel::GaussianScan:
+            for (Index i = 0; i < nv; ++i)
+            {
+                const Scalar offset = sigma * random.normal();
+                for (int a = 0; a < 3; ++a)
+                    x[3 * i + a] += offset * kScanDirection[a];
+            }
+            break;
     }
     return x;
 }

@@ -17,8 +17,15 @@ enum class NoiseModel
 {
     GaussianNormal, //!< Gaussian offset N(0, sigma^2) along the clean vertex normal
     GaussianRandom, //!< Gaussian offset N(0, sigma^2) along a uniformly random direction
-    Impulsive       //!< kImpulsiveFraction of the vertices moved by +-sigma along the normal
+    Impulsive,      //!< kImpulsiveFraction of the vertices moved by +-sigma along the normal
+    //! Gaussian offset N(0, sigma^2) along one direction for every vertex, kScanDirection:
+    //! a range scanner's error, along its line of sight whatever the surface's normal
+    GaussianScan
 };
+
+//! The line of sight of GaussianScan: (0.2, -0.3, -1) normalized, a scanner looking down
+//! and a little aside.
+inline constexpr Vec3 kScanDirection{0.18814417367671948, -0.2822162605150792, -0.9407208683835974};
 
 //! Share of the vertices the impulsive model moves.
 inline constexpr Scalar kImpulsiveFraction = 0.1;
@@ -30,12 +37,12 @@ struct NoiseCase
     Scalar level = 0.4;
 };
 
-//! "gaussian-normal", "gaussian-random" or "impulsive".
+//! "gaussian-normal", "gaussian-random", "impulsive" or "gaussian-scan".
 std::string noise_name(NoiseModel model);
 
-//! \brief The benchmark's seven cases: Gaussian along the normals and in random directions
-//! at levels 0.2, 0.4 and 0.7, and impulsive at 0.7 (10% of the vertices moved by exactly
-//! +-0.7 mean edge lengths, random signs).
+//! \brief The benchmark's ten cases: Gaussian along the normals, in random directions and
+//! along the scanning direction at levels 0.2, 0.4 and 0.7, and impulsive at 0.7 (10% of the
+//! vertices moved by exactly +-0.7 mean edge lengths, random signs).
 std::vector<NoiseCase> standard_noise_cases();
 
 //! \brief Area-weighted unit vertex normals (3 #V): the normalized sum of the incident faces'
@@ -52,6 +59,7 @@ std::vector<Scalar> vertex_normals(const Mesh& mesh, std::span<const Scalar> x);
 //!   offset has the same root-mean-square length sigma as along the normals.
 //! - Impulsive: round(kImpulsiveFraction #V) vertices drawn without replacement, each moved
 //!   by s_i sigma n_i with a random sign s_i = +-1; the others stay.
+//! - GaussianScan: x_i + sigma g_i d, d = kScanDirection for every vertex.
 //! \pre level >= 0. \throw std::invalid_argument for a negative or non-finite level.
 std::vector<Scalar> noisy_positions(const Mesh& clean, const NoiseCase& noise, std::uint64_t seed);
 

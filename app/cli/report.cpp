@@ -141,6 +141,14 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
         }
     j["terms"] = per_term;
     j["lambda"] = result.lambdas;
+    if (recipe.prevent_flips)
+    {
+        // The vertices whose steps FlipGuard shortened, step by step, and in all.
+        long long total = 0;
+        for (const Index n : result.shortened)
+            total += n;
+        j["flip_guard"] = {{"shortened", result.shortened}, {"total", total}};
+    }
     if (!session.normal_smoothing_trace().empty())
         j["normal_smoothing_energy"] = session.normal_smoothing_trace();
     j["notes"] = read_report.notes;
@@ -162,6 +170,11 @@ std::string smooth_summary(const Json& report, const std::string& output)
          format_number(t["setup"].get<double>()) + ", solve " +
          format_number(t["solve"].get<double>()) + ", write " +
          format_number(t["write"].get<double>()) + "\n";
+    if (report.contains("flip_guard"))
+        s += "flip guard: " + std::to_string(report["flip_guard"]["total"].get<long long>()) +
+             " vertex steps shortened so that no face turns over\n";
+    for (const auto& note : report["notes"])
+        s += "note: " + note.get<std::string>() + "\n";
     s += "wrote " + output + "\n";
     return s;
 }

@@ -305,13 +305,8 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
         problems.push_back(
             "normal sets with their own directions need the 'initial' source and "
             "no joint mode for the other normal sets");
-    if (settings.falloff)
-    {
-        const bool border = settings.falloff->border && any_of_kind(sets, ConstraintKind::Region);
-        const bool pins = settings.falloff->pins && any_of_kind(sets, ConstraintKind::Pin);
-        if (!border && !pins)
-            problems.push_back("the falloff needs a region (its border) or pins to fade from");
-    }
+    // A falloff with no region nor pin to fade from is no problem: the whole mesh is free,
+    // and the run's note says so (Session::notes).
     if (settings.method == Method::Taubin && (settings.optimal_step || settings.joint))
         problems.push_back("Taubin's method takes a fixed lambda and no joint mode");
     if (settings.method == Method::Taubin && !(settings.taubin_mu < -settings.lambda))
@@ -330,7 +325,8 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     r.method = settings.method;
     r.taubin_mu = settings.taubin_mu;
     if (settings.keep_volume)
-        r.volume = KeepVolume{};
+        r.volume = settings.volume;
+    r.prevent_flips = settings.prevent_flips;
     r.falloff = settings.falloff;
     // A region's weight map: vertices of freedom 0 stay out, those of freedom in (0, 1) are
     // held by anchors of region_anchor_weight after the anchor sets' (which win).
@@ -681,6 +677,8 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
     if (r.normal_smoothing)
         s.bilateral = r.normal_smoothing->bilateral;
     s.keep_volume = r.volume.has_value();
+    s.volume = r.volume.value_or(KeepVolume{});
+    s.prevent_flips = r.prevent_flips;
     s.falloff = r.falloff;
     return out;
 }

@@ -94,8 +94,11 @@ struct SolverSettings
     Scalar taubin_mu = -0.53;
     //! Feature-preserving normal smoothing (with smoothed normals or joint mode), when set.
     std::optional<BilateralWeights> bilateral;
-    //! Keep the enclosed volume of each closed component.
+    //! Keep the enclosed volume of each component (open ones as `volume` says).
     bool keep_volume = false;
+    KeepVolume volume;
+    //! Shorten the steps that would turn faces over (Recipe::prevent_flips).
+    bool prevent_flips = false;
     //! Anchors fading from the regions' border and from the pins, when set.
     std::optional<Falloff> falloff;
     bool operator==(const SolverSettings&) const = default;

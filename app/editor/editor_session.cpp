@@ -251,6 +251,27 @@ void EditorSession::prepare_ui()
         synced_.energy = state_.solver.energy_version;
     }
     state_.problems = solver_.problems();
+    if (synced_.restarts != state_.solver.restarts)
+    {
+        // What the new run does besides the recipe's letter (open components' volumes kept
+        // by their capped boundary loops, ...): in the trace, and in the status bar unless
+        // an error is there.
+        synced_.restarts = state_.solver.restarts;
+        std::string told;
+        for (const std::string& note : state_.solver.notes)
+        {
+            told += (told.empty() ? "" : "; ") + note;
+            if (trace_ != nullptr)
+                std::fprintf(trace_, "run note: %s\n", note.c_str());
+        }
+        if (trace_ != nullptr && !told.empty())
+            std::fflush(trace_);
+        if (!told.empty() && !(state_.message_is_error && !state_.message.empty()))
+        {
+            state_.message = told;
+            state_.message_is_error = false;
+        }
+    }
     if (synced_.notes != document_.versions.set_members)
     {
         state_.notes = constraint_notes(document_.sets);

@@ -161,6 +161,7 @@ private:
         std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
             border, counts;
         std::optional<std::uint64_t> energy;
+        int restarts = 0; //!< the solver's restarts whose notes the status bar has told
         //! The weight map shown (the sets' version and the set painted), if any.
         std::optional<std::pair<std::uint64_t, std::string>> weights;
         std::string glyphs_hidden; //!< the set left out of the glyphs (its map is shown)

@@ -404,6 +404,7 @@ void LiveSolver::worker()
             const auto t = std::chrono::steady_clock::now();
             std::unique_ptr<LocalityRun> run;
             std::string error;
+            std::vector<std::string> notes;
             TermEnergies energy;
             std::vector<Scalar> published;
             bool moved = false; // a pin moved: the start positions differ from those shown
@@ -445,6 +446,7 @@ void LiveSolver::worker()
                                                         r.recipe);
                 if (!r.start.empty())
                     run->session().set_positions(r.start);
+                notes = run->session().notes();
                 energy = run->energy();
                 vertex_face_offsets_ = std::move(r.vertex_face_offsets);
                 vertex_faces_ = std::move(r.vertex_faces);
@@ -478,6 +480,7 @@ void LiveSolver::worker()
                 run_ = std::move(run);
                 status_.ready = run_ != nullptr;
                 status_.error = error;
+                status_.notes = std::move(notes);
                 status_.precompute_ms = ms;
                 ++status_.restarts;
                 // Playing if asked for since the restart was requested (and it worked).

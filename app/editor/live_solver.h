@@ -26,13 +26,16 @@ struct EnergySample
 //! What the solver has done, for the solver panel.
 struct SolverStatus
 {
-    bool ready = false;               //!< precomputed for the current recipe
-    bool playing = false;             //!< stepping on the worker thread
-    bool converged = false;           //!< stopped by the recipe's tolerance
-    int steps = 0;                    //!< steps of the current run
-    int played = 0;                   //!< steps since the last play began
-    int goal = 0;                     //!< steps that play runs (0: until it settles)
-    std::string error;                //!< why the last restart failed (the recipe did not fit)
+    bool ready = false;     //!< precomputed for the current recipe
+    bool playing = false;   //!< stepping on the worker thread
+    bool converged = false; //!< stopped by the recipe's tolerance
+    int steps = 0;          //!< steps of the current run
+    int played = 0;         //!< steps since the last play began
+    int goal = 0;           //!< steps that play runs (0: until it settles)
+    std::string error;      //!< why the last restart failed (the recipe did not fit)
+    //! What the run does besides the recipe's letter (Session::notes: how open components'
+    //! volumes are kept, a falloff with nothing to fade from)
+    std::vector<std::string> notes;
     double step_ms = 0;               //!< the last frame's steps, on the worker
     double precompute_ms = 0;         //!< the last precomputation
     int restarts = 0;                 //!< precomputations so far

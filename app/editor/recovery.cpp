@@ -228,6 +228,9 @@ Json settings_json(const SolverSettings& s)
             {"taubin_mu", s.taubin_mu},
             {"bilateral", s.bilateral ? bilateral_json(*s.bilateral) : Json(nullptr)},
             {"keep_volume", s.keep_volume},
+            {"volume_open_capped", s.volume.open == OpenVolume::Capped},
+            {"volume_free_components", s.volume.free_components_only},
+            {"prevent_flips", s.prevent_flips},
             {"falloff", s.falloff ? falloff_json(*s.falloff) : Json(nullptr)}};
 }
 
@@ -264,6 +267,9 @@ SolverSettings settings_of(const Json& j)
     if (j.contains("bilateral") && !j["bilateral"].is_null())
         s.bilateral = parse_bilateral(j["bilateral"], "settings.bilateral");
     s.keep_volume = j.value("keep_volume", false);
+    s.volume.open = j.value("volume_open_capped", true) ? OpenVolume::Capped : OpenVolume::None;
+    s.volume.free_components_only = j.value("volume_free_components", false);
+    s.prevent_flips = j.value("prevent_flips", false);
     if (j.contains("falloff") && !j["falloff"].is_null())
         s.falloff = parse_falloff(j["falloff"], "settings.falloff");
     return s;

@@ -59,6 +59,8 @@ SolverSettings merged_settings(const SolverSettings& g, const std::vector<std::s
             s.taubin_mu = g.taubin_mu;
         else if (key == "keep_volume")
             s.keep_volume = g.keep_volume;
+        else if (key == "prevent_flips")
+            s.prevent_flips = g.prevent_flips;
         else if (key == "bilateral")
             s.bilateral = g.bilateral;
         else if (key == "falloff")

@@ -500,11 +500,11 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             }
             else if (key == "taubin_mu")
                 s.taubin_mu = r.number(value, k, -1e3, 0);
-            else if (key == "keep_volume")
+            else if (key == "keep_volume" || key == "prevent_flips")
             {
                 if (!value.is_boolean())
                     r.bad(k, "must be true or false");
-                s.keep_volume = value.get<bool>();
+                (key == "keep_volume" ? s.keep_volume : s.prevent_flips) = value.get<bool>();
             }
             else if (key == "bilateral" || key == "falloff")
             {

@@ -160,6 +160,18 @@ Recipe recipe_from(const py::object& recipe, const Mesh& mesh)
     return r;
 }
 
+//! The run's notes (how open components' volumes are kept, ...) as meshfair.SolverNote
+//! warnings, as meshfair-cli puts them in its report.
+void warn_solver_notes(const std::vector<std::string>& notes)
+{
+    if (notes.empty())
+        return;
+    const py::object warn = py::module_::import("warnings").attr("warn");
+    const py::object category = py::module_::import("meshfair").attr("SolverNote");
+    for (const std::string& note : notes)
+        warn(note, category, 2);
+}
+
 py::dict energies_of(const TermEnergies& e)
 {
     py::dict d;
@@ -182,9 +194,13 @@ public:
     {
         Mesh mesh = mesh_from(vertices, faces);
         const Recipe r = recipe_from(recipe, mesh);
-        py::gil_scoped_release unlocked;
-        run_ = std::make_unique<LocalityRun>(std::move(mesh), r);
+        {
+            py::gil_scoped_release unlocked;
+            run_ = std::make_unique<LocalityRun>(std::move(mesh), r);
+        }
+        warn_solver_notes(run_->session().notes());
     }
+    std::vector<std::string> notes() const { return run_->session().notes(); }
     void step(int steps)
     {
         if (steps < 0)
@@ -231,6 +247,10 @@ PYBIND11_MODULE(meshfair, m)
     // warnings of this category, never silently.
     m.attr("ReadNote") = py::reinterpret_steal<py::object>(
         PyErr_NewException("meshfair.ReadNote", PyExc_UserWarning, nullptr));
+    // What a run does besides the recipe's letter (the notes of meshfair-cli's report: how
+    // open components' volumes are kept, a falloff with nothing to fade from).
+    m.attr("SolverNote") = py::reinterpret_steal<py::object>(
+        PyErr_NewException("meshfair.SolverNote", PyExc_UserWarning, nullptr));
     m.def(
         "read",
         [](const std::string& path) {
@@ -269,17 +289,22 @@ PYBIND11_MODULE(meshfair, m)
             Mesh mesh = mesh_from(vertices, faces);
             const Recipe r = recipe_from(recipe, mesh);
             LocalityRun::Released solved;
+            std::vector<std::string> notes;
             {
                 py::gil_scoped_release unlocked;
                 LocalityRun run(std::move(mesh), r);
                 meshfair::run(run.session());
+                notes = run.session().notes();
                 solved = std::move(run).release();
             }
+            warn_solver_notes(notes);
             return positions_of(file_order_mesh(std::move(solved)).positions);
         },
         py::arg("V"), py::arg("F"), py::arg("recipe") = py::none(),
         "Smooths (V, F) with a recipe (a dict or JSON text, docs/recipe.md; None: the "
-        "defaults) as meshfair-cli smooth does, and returns the new (n, 3) positions.");
+        "defaults) as meshfair-cli smooth does, and returns the new (n, 3) positions. What "
+        "the run does besides the recipe's letter (the report's notes: how open components' "
+        "volumes are kept, ...) is warned of as meshfair.SolverNote.");
 
     py::class_<PySession>(m, "Session",
                           "A precomputed smoothing run on (V, F) with a recipe, stepped on "
@@ -292,6 +317,9 @@ PYBIND11_MODULE(meshfair, m)
              "The energy of the kept positions, by term, and its total.")
         .def_property_readonly("positions", &PySession::positions,
                                "The kept positions, an (n, 3) array (a copy).")
+        .def_property_readonly("notes", &PySession::notes,
+                               "What the run does besides the recipe's letter (also warned of "
+                               "as meshfair.SolverNote when the session is made).")
         .def("set_hard_targets", &PySession::set_hard_targets, py::arg("targets"),
              "New targets of the recipe's hard vertices, one row each, in the recipe's order.");
 }

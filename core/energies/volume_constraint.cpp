@@ -166,11 +166,40 @@ void volume_gradient6(const Mesh& mesh, const Topology& topology, std::span<cons
     gradient6(mesh, topology, CornerWalk(mesh, topology), x, i, out);
 }
 
+namespace {
+
+//! The cubic's coefficients of one triangle (a, b, c) moving along (ga, gb, gc).
+void add_triangle_cubic(const Scalar* a, const Scalar* b, const Scalar* c, const Scalar* ga,
+                        const Scalar* gb, const Scalar* gc, Scalar* out)
+{
+    out[0] += det3(a, b, c);
+    out[1] += det3(ga, b, c) + det3(a, gb, c) + det3(a, b, gc);
+    out[2] += det3(a, gb, gc) + det3(ga, b, gc) + det3(ga, gb, c);
+    out[3] += det3(ga, gb, gc);
+}
+
+//! The centroid of the loop's vertices at x.
+void loop_centroid(std::span<const Scalar> x, std::span<const Index> loop, Scalar* p)
+{
+    p[0] = p[1] = p[2] = 0;
+    for (const Index v : loop)
+        for (int a = 0; a < 3; ++a)
+            p[a] += x[3 * static_cast<std::ptrdiff_t>(v) + a];
+    const Scalar inv = Scalar(1) / static_cast<Scalar>(loop.size());
+    for (int a = 0; a < 3; ++a)
+        p[a] *= inv;
+}
+
+} // namespace
+
 VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
-                                   std::span<const Scalar> x, std::span<const char> fixed)
-    : mesh_(&mesh), topology_(&topology)
+                                   std::span<const Scalar> x, std::span<const char> fixed,
+                                   OpenVolume open, bool free_components_only)
+    : mesh_(&mesh), topology_(&topology), open_(open), fixed_(fixed.begin(), fixed.end())
 {
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
+    if (nf == 0)
+        throw RecipeError("volume", "the mesh has no face: it encloses no volume to keep");
     // Components: the vertices joined by faces, numbered in order of their first face.
     std::vector<Index> parent(nv);
     std::iota(parent.begin(), parent.end(), Index(0));
@@ -194,27 +223,100 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
             label[root] = count++;
         face_component[f] = label[root];
     }
-    // An edge is closed when exactly two faces traverse it, in opposite directions.
+    // The boundary chain: how many more times the faces traverse each edge from its first
+    // vertex to its second than back. A component is closed when it is 0 on every edge.
     const Index ne = topology.edge_count();
-    std::vector<unsigned char> forward(ne, 0);
-    for (Index f = 0; f < nf; ++f)
-        for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
-            if (mesh.face_vertices[k] == topology.edge_vertices[2 * topology.corner_edge[k]])
-                forward[topology.corner_edge[k]] =
-                    static_cast<unsigned char>(std::min(forward[topology.corner_edge[k]] + 1, 2));
-    closed_.assign(count, 1);
+    std::vector<Index> net(ne, 0);
     for (Index f = 0; f < nf; ++f)
         for (Index k = mesh.face_offsets[f]; k < mesh.face_offsets[f + 1]; ++k)
         {
             const Index e = topology.corner_edge[k];
-            if (topology.edge_face_count(e) != 2 || forward[e] != 1)
-                closed_[face_component[f]] = 0;
+            net[e] += mesh.face_vertices[k] == topology.edge_vertices[2 * e] ? 1 : -1;
         }
-    // Faces and free vertices of each closed component, in CSR form.
+    closed_.assign(count, 1);
+    // The chain's directed edges (|net| copies each) leaving each vertex, in edge order.
+    std::vector<Index> out_offsets(static_cast<size_t>(nv) + 1, 0);
+    for (Index e = 0; e < ne; ++e)
+        if (net[e] != 0)
+        {
+            const Index from = topology.edge_vertices[2 * e + (net[e] > 0 ? 0 : 1)];
+            out_offsets[from + 1] += std::abs(net[e]);
+            closed_[label[find_root(parent, from)]] = 0;
+        }
+    std::partial_sum(out_offsets.begin(), out_offsets.end(), out_offsets.begin());
+    const Index chain_edges = out_offsets.back();
+    std::vector<Index> out_to(chain_edges), out_next(out_offsets.begin(), out_offsets.end() - 1);
+    for (Index e = 0; e < ne; ++e)
+        for (Index copy = 0; copy < std::abs(net[e]); ++copy)
+        {
+            const Index from = topology.edge_vertices[2 * e + (net[e] > 0 ? 0 : 1)],
+                        to = topology.edge_vertices[2 * e + (net[e] > 0 ? 1 : 0)];
+            out_to[out_next[from]++] = to;
+        }
+    // Loops: in-degree equals out-degree at every vertex (the boundary of a boundary is
+    // 0), so a walk along unused chain edges from a vertex comes back to it. Walks start
+    // at the first unused edge in vertex order; each loop joins its component's list.
+    std::vector<Index> loop_component;
+    if (open == OpenVolume::Capped && chain_edges > 0)
+    {
+        std::copy(out_offsets.begin(), out_offsets.end() - 1, out_next.begin()); // next unused
+        for (Index start = 0; start < nv; ++start)
+            while (out_next[start] < out_offsets[start + 1])
+            {
+                Index v = start;
+                do
+                {
+                    loop_vertices_.push_back(v);
+                    v = out_to[out_next[v]++];
+                } while (v != start);
+                loop_offsets_.push_back(static_cast<Index>(loop_vertices_.size()));
+                loop_component.push_back(label[find_root(parent, start)]);
+            }
+    }
+    // The loops of each component (CSR over the loops, renumbered component by component).
+    {
+        std::vector<Index> order(loop_component.size());
+        std::iota(order.begin(), order.end(), Index(0));
+        std::ranges::stable_sort(order, {}, [&](Index l) { return loop_component[l]; });
+        std::vector<Index> offsets{0}, vertices;
+        vertices.reserve(loop_vertices_.size());
+        component_loops_.assign(static_cast<size_t>(count) + 1, 0);
+        for (const Index l : order)
+        {
+            vertices.insert(vertices.end(), loop_vertices_.begin() + loop_offsets_[l],
+                            loop_vertices_.begin() + loop_offsets_[l + 1]);
+            offsets.push_back(static_cast<Index>(vertices.size()));
+            ++component_loops_[loop_component[l] + 1];
+        }
+        std::partial_sum(component_loops_.begin(), component_loops_.end(),
+                         component_loops_.begin());
+        loop_offsets_ = std::move(offsets);
+        loop_vertices_ = std::move(vertices);
+    }
+    // The kept components; their faces and free vertices, in CSR form.
+    kept_.assign(count, 0);
+    for (Index c = 0; c < count; ++c)
+        kept_[c] = static_cast<char>(closed_[c] || open == OpenVolume::Capped);
+    Index held = 0;
+    if (free_components_only)
+    {
+        std::vector<char> holds(count, 0);
+        for (Index v = 0; v < nv; ++v)
+            if (fixed[v] && label[find_root(parent, v)] != kInvalidIndex &&
+                topology.corners_of_vertex(v).size() > 0)
+                holds[label[find_root(parent, v)]] = 1;
+        for (Index c = 0; c < count; ++c)
+            if (holds[c] && kept_[c])
+            {
+                kept_[c] = 0;
+                ++held;
+            }
+    }
+    const auto kept = [&](Index c) { return kept_[c] != 0; };
     face_offsets_.assign(static_cast<size_t>(count) + 1, 0);
     vertex_offsets_.assign(static_cast<size_t>(count) + 1, 0);
     for (Index f = 0; f < nf; ++f)
-        if (closed_[face_component[f]])
+        if (kept(face_component[f]))
             ++face_offsets_[face_component[f] + 1];
     std::vector<Index> vertex_component(nv, kInvalidIndex);
     for (Index v = 0; v < nv; ++v)
@@ -222,7 +324,7 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
             topology.corners_of_vertex(v).size() > 0)
         {
             vertex_component[v] = label[find_root(parent, v)];
-            if (closed_[vertex_component[v]] && !fixed[v])
+            if (kept(vertex_component[v]) && !fixed[v])
                 ++vertex_offsets_[vertex_component[v] + 1];
         }
     std::partial_sum(face_offsets_.begin(), face_offsets_.end(), face_offsets_.begin());
@@ -232,21 +334,26 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
     std::vector<Index> fill_faces(face_offsets_.begin(), face_offsets_.end() - 1);
     std::vector<Index> fill_vertices(vertex_offsets_.begin(), vertex_offsets_.end() - 1);
     for (Index f = 0; f < nf; ++f)
-        if (closed_[face_component[f]])
+        if (kept(face_component[f]))
             faces_[fill_faces[face_component[f]]++] = f;
     for (Index v = 0; v < nv; ++v)
-        if (vertex_component[v] != kInvalidIndex && closed_[vertex_component[v]] && !fixed[v])
+        if (vertex_component[v] != kInvalidIndex && kept(vertex_component[v]) && !fixed[v])
             vertices_[fill_vertices[vertex_component[v]]++] = v;
 
+    if (held > 0)
+        notes_.push_back("volume: " + std::to_string(held) + " of " + std::to_string(count) +
+                         " components hold fixed vertices (pins, or the rest around a region): "
+                         "their volumes are left to the fairing (\"components\": \"free\")");
     const Index closed = closed_component_count();
-    if (closed == 0)
+    if (closed == 0 && open == OpenVolume::None)
         throw RecipeError("volume",
                           "the mesh has no closed component (each has a boundary, an edge of "
                           "three or more faces, or faces of opposite orientations): it "
-                          "encloses no volume to keep");
+                          "encloses no volume to keep (\"open\": \"capped\" keeps the volume "
+                          "enclosed with the boundary loops capped)");
     target_.assign(count, 0);
     for (Index c = 0; c < count; ++c)
-        if (closed_[c])
+        if (kept(c))
             target_[c] = volume(c, x);
     if (closed < count)
     {
@@ -260,11 +367,17 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
                 named[face_component[f]] = 1;
                 first += (listed++ ? ", " : "") + std::to_string(f);
             }
-        notes_.push_back(
+        const std::string which =
             "volume: " + std::to_string(count - closed) + " of " + std::to_string(count) +
-            " components are not closed (a boundary, an edge of three or more "
-            "faces, or faces of opposite orientations; first faces " +
-            first + (count - closed > listed ? ", ..." : "") + "): their volumes are not kept");
+            " components are open (a boundary, an edge of three or more faces, or faces of "
+            "opposite orientations; first faces " +
+            first + (count - closed > listed ? ", ..." : "") + "): ";
+        notes_.push_back(which + (open == OpenVolume::Capped
+                                      ? "the volume kept there is the one enclosed with their " +
+                                            std::to_string(loop_count()) +
+                                            " boundary loops capped by fans from the loops' "
+                                            "centroids"
+                                      : std::string("their volumes are not kept")));
     }
     gradient_.assign(3 * static_cast<size_t>(nv), 0);
 }
@@ -274,18 +387,67 @@ Index VolumeConstraint::closed_component_count() const
     return static_cast<Index>(std::count(closed_.begin(), closed_.end(), 1));
 }
 
+Scalar VolumeConstraint::caps_volume6(Index component, std::span<const Scalar> x) const
+{
+    Scalar sum = 0;
+    for (Index l = component_loops_[component]; l < component_loops_[component + 1]; ++l)
+    {
+        const std::span<const Index> loop(loop_vertices_.data() + loop_offsets_[l],
+                                          loop_vertices_.data() + loop_offsets_[l + 1]);
+        Scalar p[3];
+        loop_centroid(x, loop, p);
+        for (size_t k = 0; k < loop.size(); ++k)
+        {
+            const Index a = loop[k], b = loop[(k + 1) % loop.size()];
+            sum += det3(p, at(x, b), at(x, a)); // the cap traverses a -> b backwards
+        }
+    }
+    return sum;
+}
+
+void VolumeConstraint::add_caps_gradient(Index component, std::span<const Scalar> x,
+                                         Scalar* g) const
+{
+    // Triangle (p, b, a) of the cap: d det = (b x a) dp + (a x p) db + (p x b) da, and
+    // dp = 1/n sum_k da_k: each vertex of the loop takes 1/n of sum (b x a), u x p for the
+    // edge u -> v that ends at it and p x w for the edge v -> w that starts at it.
+    for (Index l = component_loops_[component]; l < component_loops_[component + 1]; ++l)
+    {
+        const std::span<const Index> loop(loop_vertices_.data() + loop_offsets_[l],
+                                          loop_vertices_.data() + loop_offsets_[l + 1]);
+        const size_t n = loop.size();
+        Scalar p[3], s[3] = {0, 0, 0};
+        loop_centroid(x, loop, p);
+        for (size_t k = 0; k < n; ++k)
+            add_cross(at(x, loop[(k + 1) % n]), at(x, loop[k]), s);
+        const Scalar inv = Scalar(1) / static_cast<Scalar>(n);
+        for (size_t k = 0; k < n; ++k)
+        {
+            const Index v = loop[k];
+            if (fixed_[v])
+                continue;
+            Scalar sum[3] = {s[0] * inv, s[1] * inv, s[2] * inv};
+            add_cross(at(x, loop[(k + n - 1) % n]), p, sum);
+            add_cross(p, at(x, loop[(k + 1) % n]), sum);
+            for (int a = 0; a < 3; ++a)
+                g[3 * static_cast<std::ptrdiff_t>(v) + a] += sum[a];
+        }
+    }
+}
+
 Scalar VolumeConstraint::volume(Index component, std::span<const Scalar> x) const
 {
-    if (!closed_[component])
-        return 0; // its faces are not listed: an open component encloses nothing
+    if (!is_kept(component))
+        return 0; // its faces are not listed
     const Index begin = face_offsets_[component];
     const Index n = face_offsets_[component + 1] - begin;
-    return deterministic_sum(n,
-                             [&](Index k) { return face_volume6(*mesh_, x, faces_[begin + k]); }) /
+    return (deterministic_sum(n,
+                              [&](Index k) { return face_volume6(*mesh_, x, faces_[begin + k]); }) +
+            caps_volume6(component, x)) /
            6;
 }
 
-void VolumeConstraint::project(std::span<Scalar> x)
+void VolumeConstraint::project(std::span<Scalar> x, std::span<const Index> hold)
 {
     const Mesh& mesh = *mesh_;
     const Topology& topology = *topology_;
@@ -295,7 +457,7 @@ void VolumeConstraint::project(std::span<Scalar> x)
     {
         const Index vbegin = vertex_offsets_[component],
                     vcount = vertex_offsets_[component + 1] - vbegin;
-        if (!closed_[component] || vcount == 0)
+        if (!is_kept(component) || vcount == 0)
             continue;
         // g_i = dV/dx_i (times 6), gathered over the corners of i: for the fan from corner
         // 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
@@ -303,6 +465,9 @@ void VolumeConstraint::project(std::span<Scalar> x)
             const Index i = vertices_[vbegin + k];
             gradient6(mesh, topology, walk, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
         });
+        add_caps_gradient(component, x, g);
+        for (const Index v : hold) // (entries of other components are recomputed there)
+            std::fill_n(&g[3 * static_cast<std::ptrdiff_t>(v)], 3, Scalar(0));
         // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
         // expanded in t, summed in one pass over the faces (each face's four terms, then
         // the block's sums; no per-face array: four sums over one would read it four
@@ -310,7 +475,7 @@ void VolumeConstraint::project(std::span<Scalar> x)
         const Index fbegin = face_offsets_[component],
                     fcount = face_offsets_[component + 1] - fbegin;
         const std::span<const Scalar> direction = gradient_;
-        const Cubic cubic = deterministic_block_sums<Cubic>(fcount, [&](Index begin, Index end) {
+        Cubic cubic = deterministic_block_sums<Cubic>(fcount, [&](Index begin, Index end) {
             Cubic sum;
             Index k = begin;
             if (walk.triangles())
@@ -322,19 +487,30 @@ void VolumeConstraint::project(std::span<Scalar> x)
                 Scalar out[4] = {0, 0, 0, 0};
                 const Scalar *a = at(x, face[0]), *ga = at(direction, face[0]);
                 for (size_t m = 1; m + 1 < face.size(); ++m)
-                {
-                    const Scalar *b = at(x, face[m]), *c = at(x, face[m + 1]);
-                    const Scalar *gb = at(direction, face[m]), *gc = at(direction, face[m + 1]);
-                    out[0] += det3(a, b, c);
-                    out[1] += det3(ga, b, c) + det3(a, gb, c) + det3(a, b, gc);
-                    out[2] += det3(a, gb, gc) + det3(ga, b, gc) + det3(ga, gb, c);
-                    out[3] += det3(ga, gb, gc);
-                }
+                    add_triangle_cubic(a, at(x, face[m]), at(x, face[m + 1]), ga,
+                                       at(direction, face[m]), at(direction, face[m + 1]), out);
                 for (int d = 0; d < 4; ++d)
                     sum.c[d] += out[d];
             }
             return sum;
         });
+        // The caps' triangles (p, b, a), their centroid moving with the loop's mean of g.
+        Cubic caps;
+        for (Index l = component_loops_[component]; l < component_loops_[component + 1]; ++l)
+        {
+            const std::span<const Index> loop(loop_vertices_.data() + loop_offsets_[l],
+                                              loop_vertices_.data() + loop_offsets_[l + 1]);
+            Scalar p[3], gp[3];
+            loop_centroid(x, loop, p);
+            loop_centroid(direction, loop, gp);
+            for (size_t k = 0; k < loop.size(); ++k)
+            {
+                const Index a = loop[k], b = loop[(k + 1) % loop.size()];
+                add_triangle_cubic(p, at(x, b), at(x, a), gp, at(direction, b), at(direction, a),
+                                   caps.c);
+            }
+        }
+        cubic += caps;
         const Scalar* coefficient = cubic.c;
         // Newton from t = 0 on 6 (V(t) - V_0). g is the gradient of 6 V, so the slope at 0
         // is c1 = |g|^2: positive unless no free vertex moves the volume.

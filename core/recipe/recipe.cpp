@@ -144,6 +144,9 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                                     ", beyond the +-1e100 that smoothing supports (squared "
                                     "distances would overflow): scale the mesh down");
         }
+    if (nf == 0 && nv > 0)
+        throw InvalidInputError("the mesh has no faces (a point cloud of " + std::to_string(nv) +
+                                " vertices): there is no surface to smooth");
     std::vector<char> seen;
     if (r.iterations < 0)
         throw RecipeError("iterations", "must be >= 0");
@@ -291,13 +294,7 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
         check_weight(f.mu, "falloff.mu");
         if (!f.border && !f.pins)
             throw RecipeError("falloff.around", "must name \"border\", \"pins\" or both");
-        if (!(f.border && r.region) && !(f.pins && r.hard && !r.hard->vertices.empty()))
-            throw RecipeError(
-                "falloff",
-                std::string("has nothing to fade from: it needs ") +
-                    (f.border && f.pins ? "a \"region\" (its border) or \"hard\" vertices (pins)"
-                     : f.border         ? "a \"region\" (around: border)"
-                                        : "\"hard\" vertices (around: pins)"));
+        // Nothing to fade from (no region, no pins) is no error: the Session notes it.
     }
     if (r.method == Method::Taubin)
     {

@@ -10,6 +10,7 @@
 #include "core/energies/bilateral_face_weights.h"
 #include "core/energies/face_centroid_term.h"
 #include "core/energies/falloff.h"
+#include "core/energies/volume_constraint.h"
 #include "core/mesh/mesh.h"
 
 namespace meshfair {
@@ -135,9 +136,14 @@ struct Falloff
     bool operator==(const Falloff&) const = default;
 };
 
-//! Keep the enclosed volume of every closed component (VolumeConstraint).
+//! Keep the enclosed volume of every component (VolumeConstraint): of the closed ones, and
+//! of the open ones as the `open` rule says.
 struct KeepVolume
 {
+    OpenVolume open = OpenVolume::Capped;
+    //! Only on components with no fixed vertex ("components": "free"; else "all").
+    bool free_components_only = false;
+    bool operator==(const KeepVolume&) const = default;
 };
 
 //! \brief Everything one smoothing run needs besides the mesh: the constraint sets and
@@ -152,6 +158,9 @@ struct Recipe
     Scalar tolerance = 0; //!< stop when the relative energy decrease falls below
     Method method = Method::Jacobi;
     Scalar taubin_mu = -0.53; //!< the second step's length, Method::Taubin only
+    //! Shorten the steps of vertices whose steps would turn a face of their star over
+    //! (FlipGuard); off: the steps as the energy gives them, bit for bit.
+    bool prevent_flips = false;
 
     std::optional<Region> region;
     std::optional<HardVertices> hard;
@@ -169,7 +178,8 @@ struct Recipe
 //! vertex (normal face) sets disjoint, weights finite and >= 0 (mu * weights[k] too),
 //! sections that need another one, mesh and target coordinates within +-kMaxCoordinate.
 //! \throw RecipeError naming the offending key ("soft.vertices[3]", "soft[1].weights[0]");
-//! InvalidInputError naming the vertex when a mesh coordinate is out of range.
+//! InvalidInputError naming the vertex when a mesh coordinate is out of range, or when the
+//! mesh has vertices but no face (a point cloud: no surface to smooth).
 void check_recipe(const Recipe& recipe, const Mesh& mesh);
 
 //! \brief The same recipe for the mesh renumbered so that file vertex i is vertex

@@ -419,9 +419,10 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
-    expect_object(j, "",
-                  {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
-                   "soft", "centroid", "normal", "normal_smoothing", "joint", "volume", "falloff"});
+    expect_object(
+        j, "",
+        {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard", "soft",
+         "centroid", "normal", "normal_smoothing", "joint", "volume", "falloff", "prevent_flips"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -521,8 +522,34 @@ Recipe parse_recipe_json(const Json& j)
     }
     if (j.contains("volume"))
     {
-        expect_object(j["volume"], "volume", {});
-        r.volume = KeepVolume{};
+        const Json& s = j["volume"];
+        expect_object(s, "volume", {"open", "components"});
+        KeepVolume volume;
+        if (s.contains("open"))
+        {
+            if (s["open"] == "capped")
+                volume.open = OpenVolume::Capped;
+            else if (s["open"] == "none")
+                volume.open = OpenVolume::None;
+            else
+                throw RecipeError("volume.open", "must be \"capped\" or \"none\"");
+        }
+        if (s.contains("components"))
+        {
+            if (s["components"] == "all")
+                volume.free_components_only = false;
+            else if (s["components"] == "free")
+                volume.free_components_only = true;
+            else
+                throw RecipeError("volume.components", "must be \"all\" or \"free\"");
+        }
+        r.volume = volume;
+    }
+    if (j.contains("prevent_flips"))
+    {
+        if (!j["prevent_flips"].is_boolean())
+            throw RecipeError("prevent_flips", "must be true or false");
+        r.prevent_flips = j["prevent_flips"].get<bool>();
     }
     if (j.contains("falloff"))
         r.falloff = parse_falloff(j["falloff"], "falloff");
@@ -682,7 +709,15 @@ nlohmann::json recipe_to_json(const Recipe& r)
     if (r.joint)
         j["joint"] = {{"gamma", r.joint->gamma}};
     if (r.volume)
+    {
         j["volume"] = Json::object();
+        if (r.volume->open != OpenVolume::Capped)
+            j["volume"]["open"] = "none";
+        if (r.volume->free_components_only)
+            j["volume"]["components"] = "free";
+    }
+    if (r.prevent_flips)
+        j["prevent_flips"] = true;
     if (r.falloff)
         j["falloff"] = falloff_json(*r.falloff);
     return j;

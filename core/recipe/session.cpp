@@ -73,6 +73,8 @@ TopologyParts required_topology(const Recipe& recipe)
         parts = parts | TopologyParts::Dual;
     if (recipe.volume)
         parts = parts | TopologyParts::Corners | TopologyParts::Edges;
+    if (recipe.prevent_flips)
+        parts = parts | TopologyParts::Corners;
     return parts;
 }
 
@@ -246,9 +248,27 @@ void Session::precompute()
             joint_.emplace(*normal_, *smoothing_, *topology_, recipe_.joint->gamma);
     }
 
+    notes_.clear();
     volume_.reset();
     if (recipe_.volume)
-        volume_.emplace(mesh, *topology_, x0, fixed);
+    {
+        volume_.emplace(mesh, *topology_, x0, fixed, recipe_.volume->open,
+                        recipe_.volume->free_components_only);
+        notes_ = volume_->notes();
+    }
+    if (recipe_.falloff && !(recipe_.falloff->border && recipe_.region) &&
+        !(recipe_.falloff->pins && !hard_.empty()))
+        notes_.push_back(
+            "falloff: no region border or pins to fade from: no anchors fade in "
+            "(the whole mesh is free)");
+    guard_.reset();
+    guard_start_ = {};
+    if (recipe_.prevent_flips)
+    {
+        guard_.emplace(mesh, *topology_, x0, fixed);
+        if (recipe_.method == Method::Taubin || !fused())
+            guard_start_.assign(3 * static_cast<size_t>(nv), 0);
+    }
 
     // The Jacobi system: constant diagonal, blocks while the normals stay fixed.
     system_.diagonal.assign(nv, 0);
@@ -535,10 +555,24 @@ void Session::set_centroid_targets(std::span<const Scalar> targets)
     fixed_constant_valid_ = false;
 }
 
-const std::vector<std::string>& Session::notes() const
+Index Session::guard_step(std::span<const Scalar> start, std::span<Scalar> x)
 {
-    static const std::vector<std::string> none;
-    return volume_ ? volume_->notes() : none;
+    Index shortened = guard_->limit(start, x);
+    if (shortened == 0 || !volume_)
+        return shortened;
+    // The shortened vertices stay where the guard left them; the others restore the
+    // volume, and the guard checks their move again (a few rounds: each holds more).
+    std::vector<Index> held(guard_->shortened().begin(), guard_->shortened().end());
+    for (int round = 0; round < 3; ++round)
+    {
+        volume_->project(x, held);
+        const Index again = guard_->limit(start, x);
+        if (again == 0)
+            break;
+        shortened += again;
+        held.insert(held.end(), guard_->shortened().begin(), guard_->shortened().end());
+    }
+    return shortened;
 }
 
 void Session::check_size(std::span<const Scalar> x, const char* what) const
@@ -833,9 +867,12 @@ StepInfo Session::step()
     can_revert_ = false;
     if (!fused())
         return general_step(x_);
+    const bool taubin = recipe_.method == Method::Taubin;
+    if (guard_ && taubin) // the second pass overwrites the buffer the first one read
+        std::copy(x_.begin(), x_.end(), guard_start_.begin());
     fused_step(x_, next_, false, recipe_.lambda);
     std::swap(x_, next_);
-    if (recipe_.method == Method::Taubin)
+    if (taubin)
     {
         // The second of Taubin's steps, from the first one's positions, as general_step
         // takes it. The positions before both are gone: nothing to revert to.
@@ -844,8 +881,11 @@ StepInfo Session::step()
     }
     if (volume_)
         volume_->project(x_);
-    can_revert_ = recipe_.method != Method::Taubin;
-    return StepInfo{recipe_.lambda};
+    StepInfo info{recipe_.lambda};
+    if (guard_) // the Jacobi step read next_, which the step left as it was
+        info.shortened = guard_step(taubin ? std::span<const Scalar>(guard_start_) : next_, x_);
+    can_revert_ = !taubin;
+    return info;
 }
 
 StepInfo Session::step(TermEnergies& before)
@@ -862,8 +902,11 @@ StepInfo Session::step(TermEnergies& before)
     std::swap(x_, next_);
     if (volume_)
         volume_->project(x_);
+    StepInfo info{recipe_.lambda};
+    if (guard_)
+        info.shortened = guard_step(next_, x_);
     can_revert_ = true;
-    return StepInfo{recipe_.lambda};
+    return info;
 }
 
 void Session::revert_step()
@@ -892,6 +935,11 @@ StepInfo Session::general_step(std::span<Scalar> x)
     const bool use_blocks = !system_.inverse.empty();
     if (joint_ && use_blocks)
         invert_blocks(); // the normals moved in the previous step
+    if (guard_)
+    {
+        guard_start_.resize(x.size()); // a fused session's first general step allocates
+        std::copy(x.begin(), x.end(), guard_start_.begin());
+    }
 
     assemble_displacements(x, use_blocks);
     StepInfo info;
@@ -904,6 +952,8 @@ StepInfo Session::general_step(std::span<Scalar> x)
         if (volume_)
             volume_->project(x);
         info.lambda = recipe_.lambda;
+        if (guard_)
+            info.shortened = guard_step(guard_start_, x);
         return info;
     }
     info.lambda = recipe_.lambda;
@@ -932,6 +982,8 @@ StepInfo Session::general_step(std::span<Scalar> x)
     apply_displacements(free_, dx_, info.lambda, x);
     if (volume_)
         volume_->project(x);
+    if (guard_)
+        info.shortened = guard_step(guard_start_, x);
     return info;
 }
 
@@ -1012,7 +1064,9 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
         record(session.energy());
         for (int k = 0; k < recipe.iterations; ++k)
         {
-            result.lambdas.push_back(session.step().lambda);
+            const StepInfo info = session.step();
+            result.lambdas.push_back(info.lambda);
+            result.shortened.push_back(info.shortened);
             ++result.iterations;
             record(session.energy());
             if (converged(result.energies[k].total(), result.energies[k + 1].total(),
@@ -1040,6 +1094,7 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
             return result;
         }
         result.lambdas.push_back(info.lambda);
+        result.shortened.push_back(info.shortened);
         ++result.iterations;
     }
     record(session.energy());

@@ -16,6 +16,7 @@
 #include "core/energies/soft_vertex_term.h"
 #include "core/energies/volume_constraint.h"
 #include "core/recipe/recipe.h"
+#include "core/solver/flip_guard.h"
 #include "core/solver/jacobi_system.h"
 
 namespace meshfair {
@@ -59,6 +60,9 @@ enum class EnergyTerm
 struct StepInfo
 {
     Scalar lambda = 0; //!< step length used (the line search's choice when optimal)
+    //! With Recipe::prevent_flips: the vertices whose steps FlipGuard shortened (one
+    //! shortened again after the volume's correction counts again)
+    Index shortened = 0;
 };
 
 //! \brief All smoothing strategies of \cite taubin_2012 combined in one solver, shaped
@@ -169,8 +173,9 @@ public:
     //! E_U before and after each normal-smoothing iteration (normals "smoothed"); with
     //! bilateral weights, the robust energy E_R + the soft part (BilateralFaceWeights).
     const std::vector<Scalar>& normal_smoothing_trace() const { return smoothing_trace_; }
-    //! What the run leaves undone, for reports (the components whose volume is not kept).
-    const std::vector<std::string>& notes() const;
+    //! What the run does besides the recipe's letter, for reports: how open components'
+    //! volumes are kept (or that they are not), a falloff with nothing to fade from.
+    const std::vector<std::string>& notes() const { return notes_; }
     //! The volume constraint, when the recipe keeps volumes.
     const VolumeConstraint* volume() const { return volume_ ? &*volume_ : nullptr; }
     //! How many times the precomputation ran (1 after construction).
@@ -183,6 +188,11 @@ private:
     //! The merged soft targets for the current hard targets (the falloff moves with pins).
     void update_falloff_targets();
     void invert_blocks();
+    //! With prevent_flips: shortens the steps from `start` to x that turn faces over; when
+    //! it did and volumes are kept, the other vertices restore them (VolumeConstraint::
+    //! project holding the shortened ones) and the guard checks again, up to 3 rounds.
+    //! Returns the count of shortened vertex steps.
+    Index guard_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
     //! with a fixed lambda and fixed normals (no line search, no joint mode).
     bool fused() const;
@@ -265,6 +275,11 @@ private:
     std::optional<JointTerm> joint_;
     int joint_steps_ = 0; //!< joint steps since the precomputation (for reweighting)
     std::optional<VolumeConstraint> volume_;
+    std::optional<FlipGuard> guard_;
+    //! 3 #V: the positions a step starts from, when the guard needs them kept (Taubin's
+    //! two passes, the general step); else empty
+    std::vector<Scalar> guard_start_;
+    std::vector<std::string> notes_;
     //! Falloff, per soft vertex: its nearest pin (index into hard_) or kInvalidIndex, its
     //! target with the pins unmoved (3 each) and the share of the pin's displacement it
     //! follows. Empty without falloff; falloff_pin_ is empty when no pin moves a target.
@@ -324,6 +339,7 @@ struct SmoothResult
 {
     std::vector<TermEnergies> energies; //!< before the first step, then after each one
     std::vector<Scalar> lambdas;        //!< per step
+    std::vector<Index> shortened;       //!< per step: StepInfo::shortened
     int iterations = 0;                 //!< steps taken
     bool stopped_by_tolerance = false;
 };

@@ -48,7 +48,8 @@ TEST_SUITE("Editor recipes")
             const Recipe editor = through_the_editor(file, m);
             REQUIRE(editor.normal_smoothing.has_value());
             CHECK(editor.normal_smoothing->bilateral == file.normal_smoothing->bilateral);
-            CHECK(editor.volume.has_value());
+            CHECK(editor.volume == file.volume);
+            CHECK(editor.prevent_flips);
             check_same_result(file, editor, m);
         }
         {
@@ -66,6 +67,17 @@ TEST_SUITE("Editor recipes")
             file.hard = HardVertices{{3}, {{0.0, 0.0, 1.3}}};
             const Recipe editor = through_the_editor(file, m);
             CHECK(editor.falloff == file.falloff);
+            CHECK(editor.volume == file.volume);
+            CHECK(editor.volume->free_components_only);
+            CHECK(editor.prevent_flips);
+            check_same_result(file, editor, m);
+        }
+        {
+            // fair-region on the whole mesh: no region nor pin to fade from, and no problem.
+            const Recipe file =
+                read_recipe((test::assets_dir() / "recipes/fair-region.json").string());
+            const Recipe editor = through_the_editor(file, m);
+            CHECK(editor.falloff == file.falloff);
             check_same_result(file, editor, m);
         }
     }
@@ -77,9 +89,8 @@ TEST_SUITE("Editor recipes")
         std::vector<ConstraintSet> sets(1);
         sets[0].kind = ConstraintKind::Anchor;
         sets[0].vertices = {1, 2};
-        CHECK(constraint_problems(sets, s) ==
-              std::vector<std::string>{
-                  "the falloff needs a region (its border) or pins to fade from"});
+        // A falloff with nothing to fade from is no problem (the run's note says so).
+        CHECK(constraint_problems(sets, s).empty());
         sets[0].kind = ConstraintKind::Pin;
         CHECK(constraint_problems(sets, s).empty());
         s.method = Method::Taubin;

@@ -179,6 +179,36 @@ def test_what_a_reader_skips_is_warned_of(tmp_path):
         meshfair.read(BUNNY)
 
 
+def newell(V, F):
+    """Each face's Newell vector (triangles: its area vector times 2)."""
+    P = V[F]
+    return np.cross(P, np.roll(P, -1, axis=1)).sum(axis=1)
+
+
+def test_every_preset_takes_an_open_scan_and_says_how_its_volume_is_kept(tmp_path):
+    # The noisy bunny's base cut away: an open scan (its unused vertices kept, isolated).
+    path = noisy_bunny(tmp_path)
+    V, F = meshfair.read(str(path))
+    height = V[F].mean(axis=1)[:, 1]
+    F = F[height > height.min() + 0.25 * (height.max() - height.min())]
+    scan = tmp_path / "scan.obj"
+    meshfair.write(str(scan), V, F)
+    before = newell(V, F)
+    for name in ["denoise", "relax", "fair-region", "combined"]:
+        text = open(os.path.join(ASSETS, "recipes", name + ".json")).read()
+        with pytest.warns(meshfair.SolverNote) as caught:
+            W = meshfair.smooth(V, F, text)
+        assert any("capped by fans from the loops' centroids" in str(w.message) for w in caught)
+        assert np.array_equal(W, cli_smooth(tmp_path, scan, text, name + ".obj"))
+        turned = (newell(W, F) * before).sum(axis=1) <= 0
+        assert not turned.any(), (name, int(turned.sum()))
+        with warnings.catch_warnings(record=True) as kept:
+            warnings.simplefilter("always")
+            session = meshfair.Session(V, F, text)
+        assert session.notes == [str(w.message) for w in kept]
+    assert issubclass(meshfair.SolverNote, UserWarning)
+
+
 def test_a_long_smooth_lets_other_python_threads_run():
     # docs/python.md: smooth releases the GIL. This thread notes the time at every turn of
     # a loop while another thread smooths the bunny; were the GIL held during the smooth,

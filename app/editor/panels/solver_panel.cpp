@@ -145,6 +145,8 @@ void solver_panel(const PanelContext& ui)
         toggled = true;
     }
     toggled |= ui.checkbox("keep volume", &s.keep_volume);
+    ImGui::SameLine();
+    toggled |= ui.checkbox("no faces turned over", &s.prevent_flips);
     Falloff& last_falloff = ui.state.panels.falloff; // likewise
     if (s.falloff)
         last_falloff = *s.falloff;
@@ -216,6 +218,8 @@ void solver_panel(const PanelContext& ui)
         ImGui::TextWrapped("%s", st.error.c_str());
         ImGui::PopStyleColor();
     }
+    for (const std::string& note : st.notes)
+        ImGui::TextWrapped("note: %s", note.c_str());
     if (st.converged)
         ImGui::TextUnformatted("converged (tolerance)");
 }

@@ -188,24 +188,36 @@ TEST_SUITE("Falloff")
     }
 
     TEST_CASE(
-        "a falloff with nothing to fade from, or a negative radius, is refused naming the key")
+        "a falloff with nothing to fade from anchors nothing and says so, a negative "
+        "radius is refused naming the key")
     {
-        const Mesh m = test::open_grid(3, 3);
+        Mesh m = test::open_grid(3, 3);
+        test::perturb(m, 0.1, 2);
+        const Topology t = build_topology(m);
         Recipe r;
         r.falloff = Falloff{};
-        CHECK_THROWS_WITH_AS(check_recipe(r, m),
-                             "recipe: falloff: has nothing to fade from: it needs a \"region\" "
-                             "(its border) or \"hard\" vertices (pins)",
-                             RecipeError);
+        Recipe plain;
+        for (Recipe* recipe : {&r, &plain})
+            recipe->iterations = 5;
+        // The whole mesh free, no anchor: the plain recipe's steps, with a note.
+        Mesh a = m, b = m;
+        const Session faded(a, t, r);
+        REQUIRE(faded.notes().size() == 1);
+        CHECK(faded.notes()[0] ==
+              "falloff: no region border or pins to fade from: no anchors "
+              "fade in (the whole mesh is free)");
+        smooth(a, t, r);
+        smooth(b, t, plain);
+        CHECK(a.positions == b.positions);
+        CHECK(a.positions != m.positions);
+        // Only pins to fade from, and no pins: the same.
         r.region = Region{{5}, {}};
+        r.falloff->border = false;
+        CHECK(Session(m, t, r).notes().size() == 1);
+        r.falloff->border = true;
+        CHECK(Session(m, t, r).notes().empty());
         r.falloff->radius = -1;
         CHECK_THROWS_WITH_AS(check_recipe(r, m), "recipe: falloff.radius: must be finite and >= 0",
-                             RecipeError);
-        r.falloff->radius = 2;
-        r.falloff->border = false;
-        CHECK_THROWS_WITH_AS(check_recipe(r, m),
-                             "recipe: falloff: has nothing to fade from: it needs \"hard\" "
-                             "vertices (around: pins)",
                              RecipeError);
     }
 }

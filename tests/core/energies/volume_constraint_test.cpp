@@ -95,20 +95,22 @@ TEST_SUITE("VolumeConstraint")
         }
     }
 
-    TEST_CASE("projecting restores each closed component's volume and moves only free vertices")
+    TEST_CASE(
+        "projecting restores each closed component's volume and moves only free vertices "
+        "(open components left alone)")
     {
         Mesh m = torus_and_grid();
         const Topology t = build_topology(m);
         std::vector<char> fixed(m.vertex_count(), 0);
         fixed[0] = fixed[17] = 1;
-        VolumeConstraint v(m, t, m.positions, fixed);
+        VolumeConstraint v(m, t, m.positions, fixed, OpenVolume::None);
         CHECK(v.component_count() == 2);
         CHECK(v.closed_component_count() == 1);
+        CHECK(v.loop_count() == 0);
         REQUIRE(v.notes().size() == 1);
         CHECK(v.notes()[0] ==
-              "volume: 1 of 2 components are not closed (a boundary, an edge of three or more "
-              "faces, or faces of opposite orientations; first faces 160): their volumes are not "
-              "kept");
+              "volume: 1 of 2 components are open (a boundary, an edge of three or more faces, or "
+              "faces of opposite orientations; first faces 160): their volumes are not kept");
         const Scalar kept = v.target_volumes()[0];
         std::vector<Scalar> x = m.positions;
         for (Scalar& c : x)
@@ -126,26 +128,134 @@ TEST_SUITE("VolumeConstraint")
               0);
     }
 
-    TEST_CASE("a mesh with no closed component is refused naming the key")
+    TEST_CASE("with \"open\": \"none\" a mesh with no closed component is refused naming the key")
     {
         for (const Mesh& m : {test::open_grid(3, 3), test::nonmanifold_fan()})
         {
             const Topology t = build_topology(m);
             Recipe r;
-            r.volume = KeepVolume{};
+            r.volume = KeepVolume{OpenVolume::None};
             CHECK_THROWS_WITH_AS(Session(m, t, r),
                                  "recipe: volume: the mesh has no closed component (each has a "
                                  "boundary, an edge of three or more faces, or faces of opposite "
-                                 "orientations): it encloses no volume to keep",
+                                 "orientations): it encloses no volume to keep (\"open\": "
+                                 "\"capped\" keeps the volume enclosed with the boundary loops "
+                                 "capped)",
                                  RecipeError);
+            r.volume = KeepVolume{}; // capped: accepted
+            CHECK_NOTHROW(Session(m, t, r));
         }
         // Faces of opposite orientations: a cube with one face flipped.
         Mesh m = test::quad_cube();
         std::reverse(m.face_vertices.begin(), m.face_vertices.begin() + 4);
         const Topology t = build_topology(m);
         Recipe r;
-        r.volume = KeepVolume{};
+        r.volume = KeepVolume{OpenVolume::None};
         CHECK_THROWS_AS(Session(m, t, r), RecipeError);
+    }
+
+    TEST_CASE("an open box capped by its rim's centroid encloses the closed box's volume")
+    {
+        // The quad cube without its top face: one loop of 4 edges, capped by the fan from
+        // the top square's centre, which is the top square itself.
+        const Mesh cube = test::quad_cube();
+        Mesh box;
+        for (Index v = 0; v < cube.vertex_count(); ++v)
+            box.add_vertex(cube.positions[3 * v], cube.positions[3 * v + 1],
+                           cube.positions[3 * v + 2]);
+        Index removed = kInvalidIndex;
+        for (Index f = 0; f < cube.face_count(); ++f)
+        {
+            const Vec3 c = face_centroid(cube, cube.positions, f);
+            if (c[2] > 0.9 && removed == kInvalidIndex)
+            {
+                removed = f;
+                continue;
+            }
+            box.add_face(std::vector<Index>(cube.face(f).begin(), cube.face(f).end()));
+        }
+        REQUIRE(removed != kInvalidIndex);
+        const Topology t = build_topology(box);
+        const VolumeConstraint v(box, t, box.positions, std::vector<char>(8, 0));
+        CHECK(v.closed_component_count() == 0);
+        CHECK(v.loop_count() == 1);
+        CHECK(v.volume(0, box.positions) == doctest::Approx(1).epsilon(1e-15));
+        // Moved anywhere, it keeps that volume (the caps follow the loop).
+        std::vector<Scalar> x = box.positions;
+        for (size_t k = 0; k < x.size(); ++k)
+            x[k] += k % 3 == 0 ? 10.5 : -3.25;
+        CHECK(v.volume(0, x) == doctest::Approx(1).epsilon(1e-13));
+        REQUIRE(v.notes().size() == 1);
+        CHECK(v.notes()[0] ==
+              "volume: 1 of 1 components are open (a boundary, an edge of three or more faces, or "
+              "faces of opposite orientations; first faces 0): the volume kept there is the one "
+              "enclosed with their 1 boundary loops capped by fans from the loops' centroids");
+    }
+
+    TEST_CASE("the capped volume's gradient, through a moving boundary, is 6 dV/dx")
+    {
+        // A perturbed wavy grid (one loop) and a non-manifold fan (loops through its edge of
+        // three faces): project() along the gradient restores the volume, which it can only
+        // do to 1e-13 when its direction is the gradient: compared with central differences.
+        for (Mesh m : {test::open_grid(4, 3), test::nonmanifold_fan(), test::mixed_polygons()})
+        {
+            test::perturb(m, 0.1, 7);
+            const Topology t = build_topology(m);
+            const Index n = m.vertex_count();
+            VolumeConstraint v(m, t, m.positions, std::vector<char>(n, 0));
+            REQUIRE(v.loop_count() >= 1);
+            // The projection's direction from a shrunken copy: x' - x = t g at every vertex.
+            std::vector<Scalar> x = m.positions;
+            for (Scalar& c : x)
+                c *= 0.8;
+            const std::vector<Scalar> shrunk = x;
+            v.project(x);
+            CHECK(relative(v.volume(0, x), v.target_volumes()[0]) < 1e-12);
+            // The finite-difference gradient of V at the shrunken positions.
+            std::vector<Scalar> g(x.size());
+            const Scalar h = 1e-6;
+            for (size_t k = 0; k < x.size(); ++k)
+            {
+                std::vector<Scalar> a = shrunk, b = shrunk;
+                a[k] += h;
+                b[k] -= h;
+                g[k] = (v.volume(0, a) - v.volume(0, b)) / (2 * h);
+            }
+            // x - shrunk is parallel to g (the step is t g for one scalar t, of either sign).
+            Scalar dot = 0, gg = 0, dd = 0;
+            for (size_t k = 0; k < x.size(); ++k)
+            {
+                const Scalar d = x[k] - shrunk[k];
+                dot += d * g[k];
+                gg += g[k] * g[k];
+                dd += d * d;
+            }
+            REQUIRE(dd > 0);
+            CHECK(std::abs(dot) / std::sqrt(gg * dd) == doctest::Approx(1).epsilon(1e-6));
+        }
+    }
+
+    TEST_CASE("\"components\": \"free\" keeps only the components that hold no fixed vertex")
+    {
+        Mesh m = torus_and_grid();
+        for (Index v = 160; v < m.vertex_count(); ++v) // the grid made wavy: a capped volume
+            m.positions[3 * v + 2] = 0.3 * std::sin(1.3 * m.positions[3 * v] + v);
+        const Topology t = build_topology(m);
+        std::vector<char> fixed(m.vertex_count(), 0);
+        fixed[3] = 1; // a vertex of the torus
+        VolumeConstraint v(m, t, m.positions, fixed, OpenVolume::Capped, true);
+        CHECK_FALSE(v.is_kept(0));
+        CHECK(v.is_kept(1));
+        std::vector<Scalar> x = m.positions;
+        for (Scalar& c : x)
+            c *= 0.9;
+        const std::vector<Scalar> before = x;
+        v.project(x);
+        // The torus is left alone, the grid's capped volume restored.
+        CHECK(std::memcmp(x.data(), before.data(), 3 * 160 * sizeof(Scalar)) == 0);
+        REQUIRE(std::abs(v.target_volumes()[1]) > 1e-3);
+        CHECK(relative(v.volume(1, x), v.target_volumes()[1]) < 1e-12);
+        CHECK(v.notes()[0].find("1 of 2 components hold fixed vertices") != std::string::npos);
     }
 
     TEST_CASE(

@@ -89,7 +89,7 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
-              "volume, falloff)");
+              "volume, falloff, prevent_flips)");
         CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
               "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets, weights)");
         CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==
@@ -192,7 +192,25 @@ TEST_SUITE("Recipe")
               "'r.json': normal_smoothing.bilateral.sigma: unknown key (allowed here: sigma_s, "
               "sigma_r, noise_scale, reweight_every, neighbors)");
         CHECK(error_of(R"({"volume": {"keep": true}})") ==
-              "'r.json': volume.keep: unknown key (this section takes none)");
+              "'r.json': volume.keep: unknown key (allowed here: open, components)");
+        CHECK(error_of(R"({"volume": {"open": "ignore"}})") ==
+              "'r.json': volume.open: must be \"capped\" or \"none\"");
+        CHECK(error_of(R"({"volume": {"components": "some"}})") ==
+              "'r.json': volume.components: must be \"all\" or \"free\"");
+        CHECK(error_of(R"({"prevent_flips": 1})") ==
+              "'r.json': prevent_flips: must be true or false");
+        // The volume's options and the flip guard, written back only when not the defaults.
+        const Recipe v = parse_recipe(
+            R"({"volume": {"open": "none", "components": "free"}, "prevent_flips": true})",
+            "r.json");
+        CHECK(v.volume->open == OpenVolume::None);
+        CHECK(v.volume->free_components_only);
+        CHECK(v.prevent_flips);
+        CHECK(recipe_to_json(v)["volume"] ==
+              nlohmann::json::parse(R"({"open": "none", "components": "free"})"));
+        CHECK(recipe_to_json(v)["prevent_flips"] == true);
+        CHECK(recipe_to_json(r)["volume"] == nlohmann::json::object());
+        CHECK(!recipe_to_json(r).contains("prevent_flips"));
         CHECK(error_of(R"({"volume": true})") == "'r.json': volume: must be an object");
         CHECK(error_of(R"({"method": "taubin", "taubin_mu": -0.4})") ==
               "recipe: taubin_mu: must be finite and below -lambda (Taubin's mu < -lambda < 0 "
