@@ -225,11 +225,24 @@ Scalar capped_volume(const Mesh& mesh, const Topology& topology, std::span<const
 
 Index turned_over_faces(const Mesh& mesh, std::span<const Scalar> x, std::span<const Scalar> before)
 {
+    const Index nf = mesh.face_count();
+    std::vector<Vec3> own(static_cast<size_t>(nf));
+    for (Index f = 0; f < nf; ++f)
+        own[f] = face_area_vector(mesh, before, f);
+    std::vector<std::vector<Index>> faces_at(static_cast<size_t>(mesh.vertex_count()));
+    for (Index f = 0; f < nf; ++f)
+        for (const Index v : mesh.face(f))
+            faces_at[v].push_back(f);
     Index count = 0;
-    for (Index f = 0; f < mesh.face_count(); ++f)
+    for (Index f = 0; f < nf; ++f)
     {
-        const Vec3 a = face_area_vector(mesh, before, f), b = face_area_vector(mesh, x, f);
-        if ((a[0] != 0 || a[1] != 0 || a[2] != 0) && dot(a, b) <= 0)
+        Vec3 around{0, 0, 0};
+        for (const Index v : mesh.face(f))
+            for (const Index g : faces_at[v])
+                around = around + own[g];
+        const bool lies_in_surface =
+            dot(own[f], around) > 0.5 * std::sqrt(dot(own[f], own[f]) * dot(around, around));
+        if (lies_in_surface && dot(own[f], face_area_vector(mesh, x, f)) <= 0)
             ++count;
     }
     return count;

@@ -64,9 +64,10 @@ Scalar signed_volume(const Mesh& mesh, std::span<const Scalar> x);
 //! \pre the topology has TopologyParts::Corners and TopologyParts::Edges.
 Scalar capped_volume(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x);
 
-//! \brief How many faces are turned over at x against `before`: their Newell vectors point
-//! away from each other (more than 90 degrees apart). Faces of zero area before do not
-//! count.
+//! \brief How many faces are turned over at x against `before`: their Newell vectors more
+//! than 90 degrees apart, among the faces that lie in the surface at `before` (within 60
+//! degrees of the sum of the Newell vectors of the faces sharing a vertex with them). The
+//! presets' flip guard holds these to their normals at `before` (docs/math.md).
 Index turned_over_faces(const Mesh& mesh, std::span<const Scalar> x,
                         std::span<const Scalar> before);
 

@@ -557,6 +557,7 @@ void Session::set_centroid_targets(std::span<const Scalar> targets)
 
 Index Session::guard_step(std::span<const Scalar> start, std::span<Scalar> x)
 {
+    guard_->begin_step(start);
     Index shortened = guard_->limit(start, x);
     if (shortened == 0 || !volume_)
         return shortened;

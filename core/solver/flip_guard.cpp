@@ -14,36 +14,83 @@ namespace {
 
 //! Halvings before a vertex's step is given up (t = 0): 1/2, 1/4, 1/8, 1/16.
 constexpr int kHalvings = 4;
+//! cos 60 degrees: a face within 60 degrees of the input surface around it is held to its
+//! own input normal too. (Further out it is the noise of a scan, which smoothing turns.)
+constexpr Scalar kAgreeCos = 0.5;
+
+Scalar dot3(const Scalar* a, const Scalar* b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
 
 } // namespace
+
+void FlipGuard::face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own,
+                             std::vector<Scalar>& around) const
+{
+    const Index nf = mesh_->face_count();
+    parallel_for(nf, [&](Index f) {
+        const Vec3 n = face_area_vector(*mesh_, x, f);
+        std::copy(n.begin(), n.end(), &own[3 * static_cast<size_t>(f)]);
+    });
+    // The surface around f: the Newell vectors of the faces sharing a vertex with it, each
+    // once per vertex it shares (f itself once per corner).
+    parallel_for(nf, [&](Index f) {
+        Scalar r[3] = {0, 0, 0};
+        for (const Index v : mesh_->face(f))
+            for (const Index corner : topology_->corners_of_vertex(v))
+            {
+                const Scalar* n = &own[3 * static_cast<size_t>(topology_->face_of_corner(corner))];
+                for (int a = 0; a < 3; ++a)
+                    r[a] += n[a];
+            }
+        std::copy_n(r, 3, &around[3 * static_cast<size_t>(f)]);
+    });
+}
 
 FlipGuard::FlipGuard(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x0,
                      std::span<const char> fixed)
     : mesh_(&mesh), topology_(&topology), fixed_(fixed.begin(), fixed.end())
 {
     const Index nf = mesh.face_count();
-    reference_.assign(3 * static_cast<size_t>(nf), 0);
-    parallel_for(nf, [&](Index f) {
-        const Vec3 n = face_area_vector(mesh, x0, f);
-        std::copy(n.begin(), n.end(), &reference_[3 * static_cast<size_t>(f)]);
-    });
+    own_.assign(3 * static_cast<size_t>(nf), 0);
+    around_.assign(3 * static_cast<size_t>(nf), 0);
+    face_vectors(x0, own_, around_);
+    // A face more than 60 degrees from the input surface around it is not held to its own
+    // normal (o_f = 0): a scan's noise, or a fold of the input, which smoothing may turn.
     for (Index f = 0; f < nf; ++f)
     {
-        const Scalar* r = &reference_[3 * static_cast<size_t>(f)];
-        const bool has_area = r[0] != 0 || r[1] != 0 || r[2] != 0;
-        if (has_area && std::ranges::any_of(mesh.face(f), [&](Index v) { return !fixed[v]; }))
+        Scalar* o = &own_[3 * static_cast<size_t>(f)];
+        const Scalar* a = &around_[3 * static_cast<size_t>(f)];
+        if (!(dot3(o, a) > kAgreeCos * std::sqrt(dot3(o, o) * dot3(a, a))))
+            std::fill_n(o, 3, Scalar(0));
+        if (std::ranges::any_of(mesh.face(f), [&](Index v) { return !fixed[v]; }))
             faces_.push_back(f);
     }
     flagged_.assign(faces_.size(), 0);
+    now_.assign(3 * static_cast<size_t>(nf), 0);
 }
 
-bool FlipGuard::turned_over(std::span<const Scalar> x, Index f) const
+void FlipGuard::begin_step(std::span<const Scalar> x)
 {
-    const Scalar* r = &reference_[3 * static_cast<size_t>(f)];
-    if (r[0] == 0 && r[1] == 0 && r[2] == 0)
-        return false;
+    face_vectors(x, now_, around_);
+}
+
+int FlipGuard::violations(std::span<const Scalar> x, Index f) const
+{
+    const Scalar* own = &own_[3 * static_cast<size_t>(f)];
+    const Scalar* around = &around_[3 * static_cast<size_t>(f)];
     const Vec3 n = face_area_vector(*mesh_, x, f);
-    return n[0] * r[0] + n[1] * r[1] + n[2] * r[2] <= 0;
+    const auto away = [&](const Scalar* r) {
+        return (r[0] != 0 || r[1] != 0 || r[2] != 0) && dot3(n.data(), r) <= 0;
+    };
+    return (away(own) ? 1 : 0) | (away(around) ? 2 : 0);
+}
+
+bool FlipGuard::turned_by_step(std::span<const Scalar> x, std::span<const Scalar> y, Index f) const
+{
+    const int after = violations(y, f);
+    return after != 0 && (after & ~violations(x, f)) != 0;
 }
 
 Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
@@ -51,9 +98,8 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
     shortened_.clear();
     // The faces this step turned over, each flag written by its own face.
     const Index count = static_cast<Index>(faces_.size());
-    parallel_for(count, [&](Index k) {
-        flagged_[k] = static_cast<char>(turned_over(y, faces_[k]) && !turned_over(x, faces_[k]));
-    });
+    parallel_for(
+        count, [&](Index k) { flagged_[k] = static_cast<char>(turned_by_step(x, y, faces_[k])); });
     std::vector<Index> bad;
     for (Index k = 0; k < count; ++k)
         if (flagged_[k])
@@ -109,7 +155,7 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
         faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
         bad.clear();
         for (const Index f : faces)
-            if (turned_over(y, f) && !turned_over(x, f))
+            if (turned_by_step(x, y, f))
                 bad.push_back(f);
         if (moved.empty())
             break; // every vertex of the faces left is back at x: they were there already

@@ -10,24 +10,32 @@
 
 namespace meshfair {
 
-//! \brief Keeps a solver step from turning faces over: a face is turned over when its
-//! Newell vector n_f points away from its reference normal r_f, the input's
-//! (n_f . r_f <= 0: more than 90 degrees from it). After a step from x to y, each free
-//! vertex of a face that the step turned over (one that was not turned over at x) has its
-//! step shortened, y_i = x_i + t_i (y_i - x_i) with t_i = 1/2, 1/4, 1/8, 1/16 and then 0,
-//! and the faces around the shortened vertices are checked again, until none is turned
-//! over: a per-vertex backtracking line search on the orientation of the vertex's star
-//! (docs/math.md, "Faces never turned over"). It ends: with every t_i = 0 a face is
-//! where it was at x. Faces of zero input area have no reference and are not checked;
-//! faces already turned over at x may be turned back.
+//! \brief Keeps a solver step from turning faces over. A face f is turned over at x when its
+//! Newell vector n_f(x) points away (n_f . r <= 0: more than 90 degrees) from
+//!  - o_f, its own input Newell vector, unless the input face is more than 60 degrees from
+//!    the input surface around it (a scan's noise, or a fold of the input: smoothing may
+//!    turn it, and turning it back is what smoothing is for), or from
+//!  - a_f(x), the surface around it where the step starts: the sum of the Newell vectors
+//!    of the faces sharing a vertex with it (each once per vertex it shares), so that no
+//!    step folds a face over its neighbours, on a noisy scan as on a clean model.
+//! After a step from x to y (begin_step(x) first), each free vertex of a face that the step
+//! turned over (that breaks a reference it kept at x) has its step shortened,
+//! y_i = x_i + t_i (y_i - x_i) with t_i = 1/2, 1/4, 1/8, 1/16 and then 0, and the faces
+//! around the shortened vertices are checked again, until none is turned over: a
+//! per-vertex backtracking line search on the orientation of the vertex's star
+//! (docs/math.md, "Faces never turned over"). It ends: with every t_i = 0 a face is where
+//! it was at x.
 class FlipGuard
 {
 public:
-    //! \pre the topology has TopologyParts::Corners; x0: 3 #V reference positions;
+    //! \pre the topology has TopologyParts::Corners; x0: 3 #V input positions (o_f);
     //! fixed: #V flags of the vertices no step moves.
     FlipGuard(const Mesh& mesh, const Topology& topology, std::span<const Scalar> x0,
               std::span<const char> fixed);
 
+    //! The surface around each face at x, the step's start (a_f): once per step, before
+    //! limit() (which may run several times on the step).
+    void begin_step(std::span<const Scalar> x);
     //! \brief Shortens the step x -> y where it turns faces over (y written at free
     //! vertices only). Returns how many vertices' steps were shortened. The same bits for
     //! any thread count; allocates only while it shortens steps.
@@ -35,17 +43,24 @@ public:
     //! The vertices whose steps the last limit() shortened, in the order it shortened them.
     std::span<const Index> shortened() const { return shortened_; }
 
-    //! Whether face f is turned over at x (n_f . r_f <= 0; false for faces not checked).
-    bool turned_over(std::span<const Scalar> x, Index f) const;
-
 private:
+    //! Each face's Newell vector at x (own) and the sum around it (around), 3 #F each.
+    void face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own,
+                      std::vector<Scalar>& around) const;
+    //! Bit 0: n_f(x) points away from o_f; bit 1: from a_f.
+    int violations(std::span<const Scalar> x, Index f) const;
+    //! The step x -> y breaks a reference that face f kept at x.
+    bool turned_by_step(std::span<const Scalar> x, std::span<const Scalar> y, Index f) const;
+
     const Mesh* mesh_;
     const Topology* topology_;
-    std::vector<Scalar> reference_; //!< 3 #F: the input's Newell vectors (0: not checked)
-    std::vector<Index> faces_;      //!< the checked faces with a free vertex, ascending
-    std::vector<char> fixed_;       //!< #V
-    std::vector<char> flagged_;     //!< per entry of faces_: turned over by this step
-    std::vector<Index> shortened_;  //!< the last limit()'s shortened vertices
+    std::vector<Scalar> own_;      //!< 3 #F: o_f (0 where the face is not held to it)
+    std::vector<Scalar> around_;   //!< 3 #F: a_f at the step's start
+    std::vector<Scalar> now_;      //!< 3 #F scratch: the Newell vectors at the step's start
+    std::vector<Index> faces_;     //!< the faces with a free vertex, ascending
+    std::vector<char> fixed_;      //!< #V
+    std::vector<char> flagged_;    //!< per entry of faces_: turned over by this step
+    std::vector<Index> shortened_; //!< the last limit()'s shortened vertices
 };
 
 } // namespace meshfair
