@@ -557,21 +557,23 @@ void Session::set_centroid_targets(std::span<const Scalar> targets)
 
 Index Session::guard_step(std::span<const Scalar> start, std::span<Scalar> x)
 {
+    // The guard on the step first, then the volume's correction (usually too small to turn
+    // a face), checked in turn; when the guard shortens that too, the vertices it shortened
+    // stay where it left them and the others restore the volume, a few rounds at most.
     guard_->begin_step(start);
     Index shortened = guard_->limit(start, x);
-    if (shortened == 0 || !volume_)
+    if (!volume_)
         return shortened;
-    // The shortened vertices stay where the guard left them; the others restore the
-    // volume, and the guard checks their move again (a few rounds: each holds more).
-    std::vector<Index> held(guard_->shortened().begin(), guard_->shortened().end());
-    for (int round = 0; round < 3; ++round)
+    volume_->project(x);
+    std::vector<Index> held;
+    for (int round = 0;; ++round)
     {
-        volume_->project(x, held);
         const Index again = guard_->limit(start, x);
-        if (again == 0)
-            break;
         shortened += again;
+        if (again == 0 || round == 3)
+            break; // (the last check's shortening leaves the volume to the next step)
         held.insert(held.end(), guard_->shortened().begin(), guard_->shortened().end());
+        volume_->project(x, held);
     }
     return shortened;
 }
@@ -880,11 +882,11 @@ StepInfo Session::step()
         fused_step(x_, next_, false, recipe_.taubin_mu);
         std::swap(x_, next_);
     }
-    if (volume_)
-        volume_->project(x_);
     StepInfo info{recipe_.lambda};
     if (guard_) // the Jacobi step read next_, which the step left as it was
         info.shortened = guard_step(taubin ? std::span<const Scalar>(guard_start_) : next_, x_);
+    else if (volume_)
+        volume_->project(x_);
     can_revert_ = !taubin;
     return info;
 }
@@ -901,11 +903,11 @@ StepInfo Session::step(TermEnergies& before)
     }
     before = fused_step(x_, next_, true, recipe_.lambda);
     std::swap(x_, next_);
-    if (volume_)
-        volume_->project(x_);
     StepInfo info{recipe_.lambda};
     if (guard_)
         info.shortened = guard_step(next_, x_);
+    else if (volume_)
+        volume_->project(x_);
     can_revert_ = true;
     return info;
 }
@@ -950,11 +952,11 @@ StepInfo Session::general_step(std::span<Scalar> x)
         apply_displacements(free_, dx_, recipe_.lambda, x);
         assemble_displacements(x, use_blocks);
         apply_displacements(free_, dx_, recipe_.taubin_mu, x);
-        if (volume_)
-            volume_->project(x);
         info.lambda = recipe_.lambda;
         if (guard_)
             info.shortened = guard_step(guard_start_, x);
+        else if (volume_)
+            volume_->project(x);
         return info;
     }
     info.lambda = recipe_.lambda;
@@ -981,10 +983,10 @@ StepInfo Session::general_step(std::span<Scalar> x)
         joint_->update_normals(x, normals_, std::min<Scalar>(info.lambda, 1), scratch_u_);
     }
     apply_displacements(free_, dx_, info.lambda, x);
-    if (volume_)
-        volume_->project(x);
     if (guard_)
         info.shortened = guard_step(guard_start_, x);
+    else if (volume_)
+        volume_->project(x);
     return info;
 }
 

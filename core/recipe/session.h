@@ -188,10 +188,11 @@ private:
     //! The merged soft targets for the current hard targets (the falloff moves with pins).
     void update_falloff_targets();
     void invert_blocks();
-    //! With prevent_flips: shortens the steps from `start` to x that turn faces over; when
-    //! it did and volumes are kept, the other vertices restore them (VolumeConstraint::
-    //! project holding the shortened ones) and the guard checks again, up to 3 rounds.
-    //! Returns the count of shortened vertex steps.
+    //! With prevent_flips, in place of the volume's correction after a step from `start`
+    //! to x: shortens the steps that turn faces over, restores the volumes, and checks that
+    //! correction in turn (the vertices shortened then stay, the others restore the
+    //! volumes: VolumeConstraint::project with `hold`), up to 3 rounds. Returns the count
+    //! of shortened vertex steps.
     Index guard_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
     //! with a fixed lambda and fixed normals (no line search, no joint mode).

@@ -26,7 +26,7 @@ Scalar dot3(const Scalar* a, const Scalar* b)
 } // namespace
 
 void FlipGuard::face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own,
-                             std::vector<Scalar>& around) const
+                             std::vector<Scalar>& around)
 {
     const Index nf = mesh_->face_count();
     parallel_for(nf, [&](Index f) {
@@ -34,16 +34,22 @@ void FlipGuard::face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own
         std::copy(n.begin(), n.end(), &own[3 * static_cast<size_t>(f)]);
     });
     // The surface around f: the Newell vectors of the faces sharing a vertex with it, each
-    // once per vertex it shares (f itself once per corner).
+    // once per vertex it shares (f itself once per corner): the sums at its vertices, summed.
+    parallel_for(topology_->vertex_count, [&](Index v) {
+        Scalar r[3] = {0, 0, 0};
+        for (const Index corner : topology_->corners_of_vertex(v))
+        {
+            const Scalar* n = &own[3 * static_cast<size_t>(topology_->face_of_corner(corner))];
+            for (int a = 0; a < 3; ++a)
+                r[a] += n[a];
+        }
+        std::copy_n(r, 3, &at_vertex_[3 * static_cast<size_t>(v)]);
+    });
     parallel_for(nf, [&](Index f) {
         Scalar r[3] = {0, 0, 0};
         for (const Index v : mesh_->face(f))
-            for (const Index corner : topology_->corners_of_vertex(v))
-            {
-                const Scalar* n = &own[3 * static_cast<size_t>(topology_->face_of_corner(corner))];
-                for (int a = 0; a < 3; ++a)
-                    r[a] += n[a];
-            }
+            for (int a = 0; a < 3; ++a)
+                r[a] += at_vertex_[3 * static_cast<size_t>(v) + a];
         std::copy_n(r, 3, &around[3 * static_cast<size_t>(f)]);
     });
 }
@@ -55,6 +61,7 @@ FlipGuard::FlipGuard(const Mesh& mesh, const Topology& topology, std::span<const
     const Index nf = mesh.face_count();
     own_.assign(3 * static_cast<size_t>(nf), 0);
     around_.assign(3 * static_cast<size_t>(nf), 0);
+    at_vertex_.assign(3 * static_cast<size_t>(topology.vertex_count), 0);
     face_vectors(x0, own_, around_);
     // A face more than 60 degrees from the input surface around it is not held to its own
     // normal (o_f = 0): a scan's noise, or a fold of the input, which smoothing may turn.
@@ -76,21 +83,22 @@ void FlipGuard::begin_step(std::span<const Scalar> x)
     face_vectors(x, now_, around_);
 }
 
-int FlipGuard::violations(std::span<const Scalar> x, Index f) const
+int FlipGuard::violations(const Scalar* n, Index f) const
 {
     const Scalar* own = &own_[3 * static_cast<size_t>(f)];
     const Scalar* around = &around_[3 * static_cast<size_t>(f)];
-    const Vec3 n = face_area_vector(*mesh_, x, f);
     const auto away = [&](const Scalar* r) {
-        return (r[0] != 0 || r[1] != 0 || r[2] != 0) && dot3(n.data(), r) <= 0;
+        return (r[0] != 0 || r[1] != 0 || r[2] != 0) && dot3(n, r) <= 0;
     };
     return (away(own) ? 1 : 0) | (away(around) ? 2 : 0);
 }
 
-bool FlipGuard::turned_by_step(std::span<const Scalar> x, std::span<const Scalar> y, Index f) const
+bool FlipGuard::turned_by_step(std::span<const Scalar> y, Index f) const
 {
-    const int after = violations(y, f);
-    return after != 0 && (after & ~violations(x, f)) != 0;
+    const Vec3 n = face_area_vector(*mesh_, y, f);
+    const int after = violations(n.data(), f);
+    // At the step's start its Newell vector is in now_ (begin_step).
+    return after != 0 && (after & ~violations(&now_[3 * static_cast<size_t>(f)], f)) != 0;
 }
 
 Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
@@ -98,8 +106,8 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
     shortened_.clear();
     // The faces this step turned over, each flag written by its own face.
     const Index count = static_cast<Index>(faces_.size());
-    parallel_for(
-        count, [&](Index k) { flagged_[k] = static_cast<char>(turned_by_step(x, y, faces_[k])); });
+    parallel_for(count,
+                 [&](Index k) { flagged_[k] = static_cast<char>(turned_by_step(y, faces_[k])); });
     std::vector<Index> bad;
     for (Index k = 0; k < count; ++k)
         if (flagged_[k])
@@ -122,30 +130,48 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
     {
         moved.clear();
         for (const Index f : bad)
-            for (const Index v : mesh_->face(f))
+        {
+            // The face's free vertex that moves the farthest, and is not back at x yet: the
+            // one whose step most likely turned it (the others keep theirs this round).
+            Index v = kInvalidIndex;
+            Scalar farthest = -1;
+            for (const Index w : mesh_->face(f))
             {
-                if (fixed_[v])
+                if (fixed_[w] ||
+                    (slot[w] != kInvalidIndex && shortened[slot[w]].halvings > kHalvings))
                     continue;
-                if (slot[v] == kInvalidIndex)
-                {
-                    slot[v] = static_cast<Index>(shortened.size());
-                    Shortened s{v, {}, 0, -1};
-                    for (int a = 0; a < 3; ++a)
-                        s.step[a] =
-                            y[3 * static_cast<size_t>(v) + a] - x[3 * static_cast<size_t>(v) + a];
-                    shortened.push_back(s);
-                }
-                Shortened& s = shortened[slot[v]];
-                if (s.halvings > kHalvings || s.round == round)
-                    continue; // already at x, or already shortened this round
-                ++s.halvings;
-                s.round = round;
-                const Scalar t = s.halvings > kHalvings ? 0 : std::ldexp(Scalar(1), -s.halvings);
+                Scalar d2 = 0;
                 for (int a = 0; a < 3; ++a)
-                    y[3 * static_cast<size_t>(v) + a] =
-                        x[3 * static_cast<size_t>(v) + a] + t * s.step[a];
-                moved.push_back(v);
+                {
+                    const Scalar d =
+                        y[3 * static_cast<size_t>(w) + a] - x[3 * static_cast<size_t>(w) + a];
+                    d2 += d * d;
+                }
+                if (d2 > farthest)
+                    farthest = d2, v = w;
             }
+            if (v == kInvalidIndex)
+                continue; // every vertex back at x: the face is where it was
+            if (slot[v] == kInvalidIndex)
+            {
+                slot[v] = static_cast<Index>(shortened.size());
+                Shortened s{v, {}, 0, -1};
+                for (int a = 0; a < 3; ++a)
+                    s.step[a] =
+                        y[3 * static_cast<size_t>(v) + a] - x[3 * static_cast<size_t>(v) + a];
+                shortened.push_back(s);
+            }
+            Shortened& s = shortened[slot[v]];
+            if (s.round == round)
+                continue; // already shortened this round (for another face)
+            ++s.halvings;
+            s.round = round;
+            const Scalar t = s.halvings > kHalvings ? 0 : std::ldexp(Scalar(1), -s.halvings);
+            for (int a = 0; a < 3; ++a)
+                y[3 * static_cast<size_t>(v) + a] =
+                    x[3 * static_cast<size_t>(v) + a] + t * s.step[a];
+            moved.push_back(v);
+        }
         // The faces around the vertices moved back, checked again (each once, ascending).
         faces.clear();
         for (const Index v : moved)
@@ -155,7 +181,7 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
         faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
         bad.clear();
         for (const Index f : faces)
-            if (turned_by_step(x, y, f))
+            if (turned_by_step(y, f))
                 bad.push_back(f);
         if (moved.empty())
             break; // every vertex of the faces left is back at x: they were there already

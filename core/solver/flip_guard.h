@@ -18,13 +18,14 @@ namespace meshfair {
 //!  - a_f(x), the surface around it where the step starts: the sum of the Newell vectors
 //!    of the faces sharing a vertex with it (each once per vertex it shares), so that no
 //!    step folds a face over its neighbours, on a noisy scan as on a clean model.
-//! After a step from x to y (begin_step(x) first), each free vertex of a face that the step
-//! turned over (that breaks a reference it kept at x) has its step shortened,
-//! y_i = x_i + t_i (y_i - x_i) with t_i = 1/2, 1/4, 1/8, 1/16 and then 0, and the faces
-//! around the shortened vertices are checked again, until none is turned over: a
+//! After a step from x to y (begin_step(x) first), each face that the step turned over (that
+//! breaks a reference it kept at x) has the step of its free vertex that moves the farthest
+//! shortened, y_i = x_i + t_i (y_i - x_i) with t_i = 1/2, 1/4, 1/8, 1/16 and then 0, and
+//! the faces around the shortened vertices are checked again, until none is turned over: a
 //! per-vertex backtracking line search on the orientation of the vertex's star
-//! (docs/math.md, "Faces never turned over"). It ends: with every t_i = 0 a face is where
-//! it was at x.
+//! (docs/math.md, "Faces never turned over"). It ends: each round shortens a vertex of
+//! every face still turned over, and with all its vertices' t_i = 0 a face is where it was
+//! at x.
 class FlipGuard
 {
 public:
@@ -46,21 +47,22 @@ public:
 private:
     //! Each face's Newell vector at x (own) and the sum around it (around), 3 #F each.
     void face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own,
-                      std::vector<Scalar>& around) const;
-    //! Bit 0: n_f(x) points away from o_f; bit 1: from a_f.
-    int violations(std::span<const Scalar> x, Index f) const;
-    //! The step x -> y breaks a reference that face f kept at x.
-    bool turned_by_step(std::span<const Scalar> x, std::span<const Scalar> y, Index f) const;
+                      std::vector<Scalar>& around);
+    //! For the Newell vector n of face f: bit 0, n points away from o_f; bit 1, from a_f.
+    int violations(const Scalar* n, Index f) const;
+    //! The step to y breaks a reference that face f kept at the step's start (begin_step).
+    bool turned_by_step(std::span<const Scalar> y, Index f) const;
 
     const Mesh* mesh_;
     const Topology* topology_;
-    std::vector<Scalar> own_;      //!< 3 #F: o_f (0 where the face is not held to it)
-    std::vector<Scalar> around_;   //!< 3 #F: a_f at the step's start
-    std::vector<Scalar> now_;      //!< 3 #F scratch: the Newell vectors at the step's start
-    std::vector<Index> faces_;     //!< the faces with a free vertex, ascending
-    std::vector<char> fixed_;      //!< #V
-    std::vector<char> flagged_;    //!< per entry of faces_: turned over by this step
-    std::vector<Index> shortened_; //!< the last limit()'s shortened vertices
+    std::vector<Scalar> own_;       //!< 3 #F: o_f (0 where the face is not held to it)
+    std::vector<Scalar> around_;    //!< 3 #F: a_f at the step's start
+    std::vector<Scalar> now_;       //!< 3 #F: the Newell vectors at the step's start
+    std::vector<Scalar> at_vertex_; //!< 3 #V scratch: the Newell vectors' sum at each vertex
+    std::vector<Index> faces_;      //!< the faces with a free vertex, ascending
+    std::vector<char> fixed_;       //!< #V
+    std::vector<char> flagged_;     //!< per entry of faces_: turned over by this step
+    std::vector<Index> shortened_;  //!< the last limit()'s shortened vertices
 };
 
 } // namespace meshfair

@@ -16,6 +16,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -366,6 +367,49 @@ TEST_SUITE("Presets")
             without += turned_over(b, io::read_mesh(out.string()));
         }
         CHECK(without > 0);
+    }
+
+    TEST_CASE("batch runs a preset over a folder of open scans, one malformed: the others finish")
+    {
+        const fs::path dir = test::temp_dir();
+        const fs::path in = dir / "scans", out = dir / "smoothed";
+        fs::create_directories(in);
+        io::write_mesh(open_bunny(), (in / "open.ply").string());
+        io::write_mesh(holed_bunny(), (in / "holed.off").string());
+        test::write_bytes(in / "torn.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 9\n");
+        std::string files;
+        for (const char* name : {"open.ply", "torn.obj", "holed.off"})
+            files += " " + test::shell_quote((in / name).string());
+        const test::CommandRun r = cli("batch" + files + " --recipe " + preset("denoise") +
+                                       " --out-dir " + test::shell_quote(out.string()));
+        CHECK(r.code == 2); // the worst failure: a malformed file
+        std::vector<std::string> status(3);
+        std::istringstream lines(r.out);
+        for (std::string line; std::getline(lines, line);)
+        {
+            const auto j = nlohmann::json::parse(line);
+            const size_t k = j["index"].get<size_t>();
+            status.at(k) = j["status"].get<std::string>();
+            if (k == 1)
+                CHECK(j["error"].get<std::string>().find("torn.obj:5:7: vertex index 9") !=
+                      std::string::npos);
+            else
+            {
+                CHECK(j["report"]["flip_guard"]["total"].get<long long>() >= 0);
+                CHECK(j["report"]["notes"].dump().find("capped by fans") != std::string::npos);
+            }
+        }
+        CHECK(status == std::vector<std::string>{"ok", "rejected", "ok"});
+        for (const char* name : {"open.ply", "holed.off"})
+        {
+            CAPTURE(name);
+            const Mesh before = io::read_mesh((in / name).string());
+            const Mesh after = io::read_mesh((out / name).string());
+            CHECK(turned_over(before, after) == 0);
+            const Volumes v0 = capped_volumes(before), v1 = capped_volumes(after);
+            CHECK(std::abs(v1.volume[0] - v0.volume[0]) <= 0.005 * std::abs(v0.volume[0]));
+        }
+        CHECK_FALSE(fs::exists(out / "torn.obj"));
     }
 
     TEST_CASE("a point cloud is refused by every preset: it has no faces")

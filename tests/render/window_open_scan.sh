@@ -82,6 +82,10 @@ run_preset() {
 run_preset denoise 1
 grep -q "run note: volume: .*capped by fans from the loops' centroids" "$log" ||
     fail "the run's note does not say how the open scan's volume is kept"
+# The picture after the run: the note in the status bar (no newer message), from outside.
+frame=$(frame_number)
+wait_frame_after "$frame"
+xwd -root -silent | convert xwd:- "$work/denoised.png"
 key ctrl+s
 wait_line "command save: ok"
 click_widget "File"
@@ -91,9 +95,6 @@ key ctrl+a
 type_text "denoise-here.json"
 key Return
 wait_line "command export recipe: ok"
-frame=$(frame_number)
-wait_frame_after "$frame"
-xwd -root -silent | convert xwd:- "$work/denoised.png"
 "$cli" smooth "$work/input.obj" -o "$work/cli.obj" --recipe "$work/denoise-here.json" -q
 cmp "$work/cli.obj" "$work/scan.obj" ||
     fail "meshfair-cli smooth with the exported recipe does not give the saved file"
