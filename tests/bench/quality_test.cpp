@@ -376,8 +376,8 @@ TEST_SUITE("QualityNoise")
                 Vec3 d;
                 for (int a = 0; a < 3; ++a)
                     d[a] = x[3 * i + a] - m.positions[3 * i + a];
-                const Scalar along = d[0] * kScanDirection[0] + d[1] * kScanDirection[1] +
-                                     d[2] * kScanDirection[2];
+                const Scalar along =
+                    d[0] * kScanDirection[0] + d[1] * kScanDirection[1] + d[2] * kScanDirection[2];
                 sum2 += along * along;
                 for (int a = 0; a < 3; ++a)
                     across = std::max(across, std::abs(d[a] - along * kScanDirection[a]));
