@@ -88,13 +88,7 @@ wait_frame_after "$frame"
 xwd -root -silent | convert xwd:- "$work/denoised.png"
 key ctrl+s
 wait_line "command save: ok"
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "denoise-here.json"
-key Return
-wait_line "command export recipe: ok"
+export_recipe "denoise-here.json"
 "$cli" smooth "$work/input.obj" -o "$work/cli.obj" --recipe "$work/denoise-here.json" -q
 cmp "$work/cli.obj" "$work/scan.obj" ||
     fail "meshfair-cli smooth with the exported recipe does not give the saved file"

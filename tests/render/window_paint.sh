@@ -63,13 +63,7 @@ blue=$(count 'b > 0.5 && r < 0.2 && g < 0.2')
     fail "the weight map is not shown: $green green pixels under the stroke, $blue blue"
 
 # --- 2. The exported recipe and the printed stroke reproduce the shape.
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "stroke.json"
-key Return
-wait_line "command export recipe: ok"
+export_recipe "stroke.json"
 key ctrl+shift+s
 wait_dialog
 key ctrl+a
@@ -168,13 +162,7 @@ PY
 click_widget "preset"
 click_widget "preset/denoise"
 wait_line "command preset: ok"
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "denoise-here.json"
-key Return
-wait_line "command export recipe: ok" 2
+export_recipe "denoise-here.json" 2
 for part in '"bilateral"' '"volume"' '"region"'; do
     grep -q "$part" "$work/denoise-here.json" ||
         fail "the recipe after the denoise preset lacks $part"
@@ -199,13 +187,7 @@ wait_line "command solver settings: ok" $((settings + 5))
 click_widget "falloff curve"
 click_widget "falloff curve/linear"
 wait_line "command solver settings: ok" $((settings + 6))
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "tuned.json"
-key Return
-wait_line "command export recipe: ok" 3
+export_recipe "tuned.json" 3
 python3 - "$work/tuned.json" <<'PY' || fail "the clicked settings are not in the exported recipe"
 import json, sys
 r = json.load(open(sys.argv[1]))

@@ -78,13 +78,7 @@ key ctrl+z
 wait_line "command undo: ok" 2
 key ctrl+s
 wait_line "command save: ok"
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "session-recipe.json"
-key Return
-wait_line "command export recipe: ok"
+export_recipe "session-recipe.json"
 grep -q reproduces "$log" || true
 
 # Reopen the mesh as it was read (a copy of the base), import the recipe, export it again.
@@ -101,13 +95,7 @@ key ctrl+a
 type_text "session-recipe.json"
 key Return
 wait_line "command import recipe: ok"
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "reimported.json"
-key Return
-wait_line "command export recipe: ok" 2
+export_recipe "reimported.json" 2
 key ctrl+q # the imported pins moved to their targets: unsaved changes, it asks
 click_widget "Discard and quit"
 wait_exit "$pid" "$log" "$name" "Discard and quit after the import"

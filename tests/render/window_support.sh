@@ -247,3 +247,15 @@ type_text() {
     xdotool type --delay 8 "$1"
     wait_input "$n0" $((2 * ${#1})) # a press and a release per character at least
 }
+
+# export_recipe NAME [N]: File -> Export recipe... through the menu and its dialog, the
+# name typed, until the trace has N (default 1) exports done.
+export_recipe() {
+    click_widget "File"
+    click_widget "File/Export recipe..."
+    wait_dialog
+    key ctrl+a
+    type_text "$1"
+    key Return
+    wait_line "command export recipe: ok" "${2:-1}"
+}

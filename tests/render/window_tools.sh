@@ -105,13 +105,7 @@ click_widget "Taubin lambda|mu"
 wait_line "command solver settings: ok" $((settings + 2))
 click_widget "falloff from border and pins" # the region's border and the pins fade
 wait_line "command solver settings: ok" $((settings + 3))
-click_widget "File"
-click_widget "File/Export recipe..."
-wait_dialog
-key ctrl+a
-type_text "exported-by-hand.json"
-key Return
-wait_line "command export recipe: ok"
+export_recipe "exported-by-hand.json"
 [ -f "$work/exported-by-hand.json" ] || fail "the recipe was not written under the typed name"
 for part in '"volume"' '"method": "taubin"' '"falloff"'; do
     grep -q "$part" "$work/exported-by-hand.json" ||
