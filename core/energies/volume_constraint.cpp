@@ -195,7 +195,7 @@ void loop_centroid(std::span<const Scalar> x, std::span<const Index> loop, Scala
 VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
                                    std::span<const Scalar> x, std::span<const char> fixed,
                                    OpenVolume open, bool free_components_only)
-    : mesh_(&mesh), topology_(&topology), open_(open), fixed_(fixed.begin(), fixed.end())
+    : mesh_(&mesh), topology_(&topology), fixed_(fixed.begin(), fixed.end())
 {
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
     if (nf == 0)

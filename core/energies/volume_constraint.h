@@ -90,7 +90,6 @@ private:
 
     const Mesh* mesh_;
     const Topology* topology_;
-    OpenVolume open_;
     //! The faces and the free vertices of each kept component, in CSR form.
     std::vector<Index> face_offsets_, faces_, vertex_offsets_, vertices_;
     //! The boundary loops (vertices in the boundary's direction, CSR) and, per component,
