@@ -275,21 +275,24 @@ VolumeConstraint::VolumeConstraint(const Mesh& mesh, const Topology& topology,
     }
     // The loops of each component (CSR over the loops, renumbered component by component).
     {
+        // A counting sort by component, each component's loops in the order they were found.
+        component_loops_.assign(static_cast<size_t>(count) + 1, 0);
+        for (const Index c : loop_component)
+            ++component_loops_[c + 1];
+        std::partial_sum(component_loops_.begin(), component_loops_.end(),
+                         component_loops_.begin());
         std::vector<Index> order(loop_component.size());
-        std::iota(order.begin(), order.end(), Index(0));
-        std::ranges::stable_sort(order, {}, [&](Index l) { return loop_component[l]; });
+        std::vector<Index> next(component_loops_.begin(), component_loops_.end() - 1);
+        for (Index l = 0; l < static_cast<Index>(loop_component.size()); ++l)
+            order[next[loop_component[l]]++] = l;
         std::vector<Index> offsets{0}, vertices;
         vertices.reserve(loop_vertices_.size());
-        component_loops_.assign(static_cast<size_t>(count) + 1, 0);
         for (const Index l : order)
         {
             vertices.insert(vertices.end(), loop_vertices_.begin() + loop_offsets_[l],
                             loop_vertices_.begin() + loop_offsets_[l + 1]);
             offsets.push_back(static_cast<Index>(vertices.size()));
-            ++component_loops_[loop_component[l] + 1];
         }
-        std::partial_sum(component_loops_.begin(), component_loops_.end(),
-                         component_loops_.begin());
         loop_offsets_ = std::move(offsets);
         loop_vertices_ = std::move(vertices);
     }
