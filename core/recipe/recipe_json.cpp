@@ -5,6 +5,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <limits>
+#include <string_view>
 
 #include "core/errors.h"
 #include "core/io/io.h"
@@ -18,6 +19,26 @@ using Json = nlohmann::json;
 std::string child(const std::string& key, const std::string& name)
 {
     return key.empty() ? name : key + "." + name;
+}
+
+//! Which of `names` the string `value` is (its index).
+//! \throw RecipeError naming `key`: must be "a", "b" or "c".
+size_t choice(const Json& value, const std::string& key,
+              std::initializer_list<std::string_view> names)
+{
+    size_t k = 0;
+    std::string listed;
+    for (const std::string_view name : names)
+    {
+        if (value.is_string() && value.get_ref<const std::string&>() == name)
+            return k;
+        listed += std::string(k == 0                  ? ""
+                              : k + 1 == names.size() ? " or "
+                                                      : ", ") +
+                  "\"" + std::string(name) + "\"";
+        ++k;
+    }
+    throw RecipeError(key, "must be " + listed);
 }
 
 void expect_object(const Json& j, const std::string& key,
@@ -315,14 +336,9 @@ CentroidConstraints centroid_set(const Json& s, const std::string& key)
     if (s.contains("targets"))
         c.targets = points(s["targets"], child(key, "targets"));
     if (s.contains("denominator"))
-    {
-        if (s["denominator"] == "paper")
-            c.denominator = CentroidDenominator::Paper;
-        else if (s["denominator"] == "exact")
-            c.denominator = CentroidDenominator::Exact;
-        else
-            throw RecipeError(child(key, "denominator"), "must be \"paper\" or \"exact\"");
-    }
+        c.denominator = choice(s["denominator"], child(key, "denominator"), {"paper", "exact"}) == 0
+                            ? CentroidDenominator::Paper
+                            : CentroidDenominator::Exact;
     if (s.contains("weights"))
         c.weights = weights(s["weights"], child(key, "weights"));
     return c;
@@ -431,15 +447,8 @@ Recipe parse_recipe_json(const Json& j)
         r.tolerance = weight(j["tolerance"], "tolerance");
     if (j.contains("method"))
     {
-        const Json& m = j["method"];
-        if (m == "jacobi")
-            r.method = Method::Jacobi;
-        else if (m == "gradient_descent")
-            r.method = Method::GradientDescent;
-        else if (m == "taubin")
-            r.method = Method::Taubin;
-        else
-            throw RecipeError("method", "must be \"jacobi\", \"gradient_descent\" or \"taubin\"");
+        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent, Method::Taubin};
+        r.method = methods[choice(j["method"], "method", {"jacobi", "gradient_descent", "taubin"})];
     }
     if (j.contains("taubin_mu"))
         r.taubin_mu = number(j["taubin_mu"], "taubin_mu");
@@ -526,23 +535,12 @@ Recipe parse_recipe_json(const Json& j)
         expect_object(s, "volume", {"open", "components"});
         KeepVolume volume;
         if (s.contains("open"))
-        {
-            if (s["open"] == "capped")
-                volume.open = OpenVolume::Capped;
-            else if (s["open"] == "none")
-                volume.open = OpenVolume::None;
-            else
-                throw RecipeError("volume.open", "must be \"capped\" or \"none\"");
-        }
+            volume.open = choice(s["open"], "volume.open", {"capped", "none"}) == 0
+                              ? OpenVolume::Capped
+                              : OpenVolume::None;
         if (s.contains("components"))
-        {
-            if (s["components"] == "all")
-                volume.free_components_only = false;
-            else if (s["components"] == "free")
-                volume.free_components_only = true;
-            else
-                throw RecipeError("volume.components", "must be \"all\" or \"free\"");
-        }
+            volume.free_components_only =
+                choice(s["components"], "volume.components", {"all", "free"}) == 1;
         r.volume = volume;
     }
     if (j.contains("prevent_flips"))
@@ -740,15 +738,9 @@ BilateralWeights parse_bilateral(const Json& s, const std::string& key)
             throw RecipeError(child(key, "reweight_every"), "must be >= 1 (got 0)");
     }
     if (s.contains("neighbors"))
-    {
-        const Json& v = s["neighbors"];
-        if (v == "edge")
-            b.neighbors = FaceNeighborhood::Edge;
-        else if (v == "vertex")
-            b.neighbors = FaceNeighborhood::Vertex;
-        else
-            throw RecipeError(child(key, "neighbors"), "must be \"edge\" or \"vertex\"");
-    }
+        b.neighbors = choice(s["neighbors"], child(key, "neighbors"), {"edge", "vertex"}) == 0
+                          ? FaceNeighborhood::Edge
+                          : FaceNeighborhood::Vertex;
     return b;
 }
 
@@ -759,14 +751,8 @@ Falloff parse_falloff(const Json& s, const std::string& key)
     if (s.contains("radius"))
         f.radius = weight(s["radius"], child(key, "radius"));
     if (s.contains("units"))
-    {
-        if (s["units"] == "edge_lengths")
-            f.radius_in_edge_lengths = true;
-        else if (s["units"] == "mesh")
-            f.radius_in_edge_lengths = false;
-        else
-            throw RecipeError(child(key, "units"), "must be \"edge_lengths\" or \"mesh\"");
-    }
+        f.radius_in_edge_lengths =
+            choice(s["units"], child(key, "units"), {"edge_lengths", "mesh"}) == 0;
     if (s.contains("curve"))
     {
         const std::optional<FalloffCurve> curve =
@@ -789,13 +775,9 @@ Falloff parse_falloff(const Json& s, const std::string& key)
                               "must be a non-empty list of \"border\" and \"pins\"");
         f.border = f.pins = false;
         for (size_t k = 0; k < a.size(); ++k)
-            if (a[k] == "border")
-                f.border = true;
-            else if (a[k] == "pins")
-                f.pins = true;
-            else
-                throw RecipeError(recipe_item_key(child(key, "around"), k),
-                                  "must be \"border\" or \"pins\"");
+            (choice(a[k], recipe_item_key(child(key, "around"), k), {"border", "pins"}) == 0
+                 ? f.border
+                 : f.pins) = true;
     }
     return f;
 }
