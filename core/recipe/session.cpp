@@ -89,6 +89,7 @@ void Session::precompute()
             "Session: the topology lacks parts this recipe needs (build it "
             "with required_topology(recipe))");
     ++precompute_count_;
+    notes_.clear();
     vertex_count_ = topology_->vertex_count;
     const Mesh& mesh = *mesh_;
     const Index nv = mesh.vertex_count(), nf = mesh.face_count();
@@ -248,19 +249,13 @@ void Session::precompute()
             joint_.emplace(*normal_, *smoothing_, *topology_, recipe_.joint->gamma);
     }
 
-    notes_.clear();
     volume_.reset();
     if (recipe_.volume)
     {
         volume_.emplace(mesh, *topology_, x0, fixed, recipe_.volume->open,
                         recipe_.volume->free_components_only);
-        notes_ = volume_->notes();
+        notes_.insert(notes_.end(), volume_->notes().begin(), volume_->notes().end());
     }
-    if (recipe_.falloff && !(recipe_.falloff->border && recipe_.region) &&
-        !(recipe_.falloff->pins && !hard_.empty()))
-        notes_.push_back(
-            "falloff: no region border or pins to fade from: no anchors fade in "
-            "(the whole mesh is free)");
     guard_.reset();
     guard_start_ = {};
     if (recipe_.prevent_flips)
@@ -432,7 +427,12 @@ void Session::build_falloff_anchors(const std::vector<char>& fixed,
     }
     const Scalar radius =
         f.radius * (f.radius_in_edge_lengths ? mean_edge_length(*topology_, x0) : 1);
-    if (f.border && recipe_.region)
+    const bool from_border = f.border && recipe_.region, from_pins = f.pins && !hard_.empty();
+    if (!from_border && !from_pins)
+        notes_.push_back(
+            "falloff: no region border or pins to fade from: no anchors fade in "
+            "(the whole mesh is free)");
+    if (from_border)
     {
         // From the rest's ring around the region: the fixed vertices (not pins) next to a
         // free one.
@@ -447,7 +447,7 @@ void Session::build_falloff_anchors(const std::vector<char>& fixed,
                 if (const Scalar w = falloff_weight(f.curve, d.distance[v], radius); w > 0)
                     add(v, f.mu * w, &x0[3 * v]);
     }
-    if (f.pins && !hard_.empty())
+    if (from_pins)
     {
         const SurfaceDistances d = surface_distances(*topology_, x0, hard_, radius);
         for (Index v = 0; v < nv; ++v)
