@@ -76,6 +76,7 @@ FlipGuard::FlipGuard(const Mesh& mesh, const Topology& topology, std::span<const
     }
     flagged_.assign(faces_.size(), 0);
     now_.assign(3 * static_cast<size_t>(nf), 0);
+    slot_.assign(static_cast<size_t>(topology.vertex_count), kInvalidIndex);
 }
 
 void FlipGuard::begin_step(std::span<const Scalar> x)
@@ -108,24 +109,19 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
     const Index count = static_cast<Index>(faces_.size());
     parallel_for(count,
                  [&](Index k) { flagged_[k] = static_cast<char>(turned_by_step(y, faces_[k])); });
-    std::vector<Index> bad;
+    std::vector<Index>& bad = bad_;
+    bad.clear();
     for (Index k = 0; k < count; ++k)
         if (flagged_[k])
             bad.push_back(faces_[k]);
     if (bad.empty())
         return 0;
-    // Per shortened vertex: its full step and how many times it was halved.
-    struct Shortened
-    {
-        Index vertex;
-        Scalar step[3];
-        int halvings;
-        int round; //!< the last round that shortened it
-    };
-    std::vector<Shortened> shortened;
-    // #V from the topology: the mesh's positions may have been handed to the session.
-    std::vector<Index> slot(static_cast<size_t>(topology_->vertex_count), kInvalidIndex);
-    std::vector<Index> moved, faces;
+    // Per shortened vertex (slot_ its place in steps_): its full step and its halvings.
+    std::vector<Shortened>& shortened = steps_;
+    shortened.clear();
+    std::vector<Index>& slot = slot_;
+    std::vector<Index>& moved = moved_;
+    std::vector<Index>& faces = rechecked_;
     for (int round = 0; !bad.empty(); ++round)
     {
         moved.clear();
@@ -187,7 +183,10 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
             break; // every vertex of the faces left is back at x: they were there already
     }
     for (const Shortened& s : shortened)
+    {
         shortened_.push_back(s.vertex);
+        slot[s.vertex] = kInvalidIndex; // the scratch as it was, for the next call
+    }
     return static_cast<Index>(shortened.size());
 }
 

@@ -39,12 +39,21 @@ public:
     void begin_step(std::span<const Scalar> x);
     //! \brief Shortens the step x -> y where it turns faces over (y written at free
     //! vertices only). Returns how many vertices' steps were shortened. The same bits for
-    //! any thread count; allocates only while it shortens steps.
+    //! any thread count; allocates only while its lists grow past their largest so far.
     Index limit(std::span<const Scalar> x, std::span<Scalar> y);
     //! The vertices whose steps the last limit() shortened, in the order it shortened them.
     std::span<const Index> shortened() const { return shortened_; }
 
 private:
+    //! A vertex whose step limit() shortened: its full step and how many times it halved it.
+    struct Shortened
+    {
+        Index vertex;
+        Scalar step[3];
+        int halvings;
+        int round; //!< the last round that shortened it
+    };
+
     //! Each face's Newell vector at x (own) and the sum around it (around), 3 #F each.
     void face_vectors(std::span<const Scalar> x, std::vector<Scalar>& own,
                       std::vector<Scalar>& around);
@@ -63,6 +72,11 @@ private:
     std::vector<char> fixed_;       //!< #V
     std::vector<char> flagged_;     //!< per entry of faces_: turned over by this step
     std::vector<Index> shortened_;  //!< the last limit()'s shortened vertices
+    // limit()'s scratch, kept from call to call (it runs at every step): each vertex's place
+    // in steps_ (#V, kInvalidIndex between calls), the faces turned over, the vertices
+    // moved back and the faces checked again in a round.
+    std::vector<Index> slot_, bad_, moved_, rechecked_;
+    std::vector<Shortened> steps_;
 };
 
 } // namespace meshfair
