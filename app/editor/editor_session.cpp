@@ -257,8 +257,9 @@ void EditorSession::prepare_ui()
         // by their capped boundary loops, ...): in the trace, and in the status bar unless
         // an error is there.
         synced_.restarts = state_.solver.restarts;
+        state_.run_notes = solver_.notes();
         std::string told;
-        for (const std::string& note : state_.solver.notes)
+        for (const std::string& note : state_.run_notes)
         {
             told += (told.empty() ? "" : "; ") + note;
             if (trace_ != nullptr)

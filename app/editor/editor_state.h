@@ -45,6 +45,9 @@ struct EditorState
     std::vector<EnergySample> energies; //!< the current run's curve, refreshed likewise
     std::vector<std::string> problems;  //!< why the sets cannot run, refreshed likewise
     std::vector<std::string> notes;     //!< how the sets' overlaps are resolved, likewise
+    //! What the current run does besides the settings' letter (LiveSolver::notes), taken
+    //! at each restart
+    std::vector<std::string> run_notes;
     //! Each region set's enclosed elements it leaves out (region_holes), by set name.
     std::vector<std::pair<std::string, std::size_t>> region_holes;
     bool playing = false;          //!< refreshed likewise

@@ -217,6 +217,12 @@ std::vector<EnergySample> LiveSolver::energies() const
     return energies_;
 }
 
+std::vector<std::string> LiveSolver::notes() const
+{
+    std::lock_guard lock(mutex_);
+    return notes_;
+}
+
 void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
 {
     busy_ = true;
@@ -480,7 +486,7 @@ void LiveSolver::worker()
                 run_ = std::move(run);
                 status_.ready = run_ != nullptr;
                 status_.error = error;
-                status_.notes = std::move(notes);
+                notes_ = std::move(notes);
                 status_.precompute_ms = ms;
                 ++status_.restarts;
                 // Playing if asked for since the restart was requested (and it worked).

@@ -26,16 +26,13 @@ struct EnergySample
 //! What the solver has done, for the solver panel.
 struct SolverStatus
 {
-    bool ready = false;     //!< precomputed for the current recipe
-    bool playing = false;   //!< stepping on the worker thread
-    bool converged = false; //!< stopped by the recipe's tolerance
-    int steps = 0;          //!< steps of the current run
-    int played = 0;         //!< steps since the last play began
-    int goal = 0;           //!< steps that play runs (0: until it settles)
-    std::string error;      //!< why the last restart failed (the recipe did not fit)
-    //! What the run does besides the recipe's letter (Session::notes: how open components'
-    //! volumes are kept, a falloff with nothing to fade from)
-    std::vector<std::string> notes;
+    bool ready = false;               //!< precomputed for the current recipe
+    bool playing = false;             //!< stepping on the worker thread
+    bool converged = false;           //!< stopped by the recipe's tolerance
+    int steps = 0;                    //!< steps of the current run
+    int played = 0;                   //!< steps since the last play began
+    int goal = 0;                     //!< steps that play runs (0: until it settles)
+    std::string error;                //!< why the last restart failed (the recipe did not fit)
     double step_ms = 0;               //!< the last frame's steps, on the worker
     double precompute_ms = 0;         //!< the last precomputation
     int restarts = 0;                 //!< precomputations so far
@@ -104,6 +101,10 @@ public:
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
     std::vector<EnergySample> energies() const;
+    //! \brief What the current run does besides the recipe's letter (Session::notes: how
+    //! open components' volumes are kept, a falloff with nothing to fade from); new with
+    //! each restart (status().restarts), so read once per restart, not once per frame.
+    std::vector<std::string> notes() const;
 
 private:
     void worker();
@@ -111,8 +112,9 @@ private:
     void run_steps(int n, std::unique_lock<std::mutex>& lock);
 
     mutable std::mutex mutex_;
-    std::condition_variable wake_; // to the worker: work to do
-    std::condition_variable done_; // to callers: a frame published, a restart finished
+    std::vector<std::string> notes_; //!< the current run's (notes()), under mutex_
+    std::condition_variable wake_;   // to the worker: work to do
+    std::condition_variable done_;   // to callers: a frame published, a restart finished
     struct Restart
     {
         Mesh base;

@@ -59,6 +59,7 @@ public:
     void wait_for_heat();
     SolverStatus status() const { return solver_.status(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
+    std::vector<std::string> notes() const { return solver_.notes(); }
 
 private:
     //! The run since it began (or since the last segment) as one undo step.

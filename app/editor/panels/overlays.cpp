@@ -89,16 +89,14 @@ void status_bar(const PanelContext& ui)
             state.message_is_error ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.85f, 0.85f, 0.85f, 1),
             "|  %s", state.message.c_str());
     }
-    else if (!state.solver.notes.empty())
-    {
+    else
         // No newer message: what the run does besides the settings' letter (an open scan's
         // volume kept with its boundary loops capped, ...) stays in view while it plays.
-        std::string notes;
-        for (const std::string& note : state.solver.notes)
-            notes += (notes.empty() ? "" : "; ") + note;
-        ImGui::SameLine();
-        ImGui::TextColored(ImVec4(0.85f, 0.85f, 0.85f, 1), "|  %s", notes.c_str());
-    }
+        for (const std::string& note : state.run_notes)
+        {
+            ImGui::SameLine();
+            ImGui::TextColored(ImVec4(0.85f, 0.85f, 0.85f, 1), "|  %s", note.c_str());
+        }
     ImGui::End();
 }
 

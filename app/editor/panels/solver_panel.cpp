@@ -218,7 +218,7 @@ void solver_panel(const PanelContext& ui)
         ImGui::TextWrapped("%s", st.error.c_str());
         ImGui::PopStyleColor();
     }
-    for (const std::string& note : st.notes)
+    for (const std::string& note : ui.state.run_notes)
         ImGui::TextWrapped("note: %s", note.c_str());
     if (st.converged)
         ImGui::TextUnformatted("converged (tolerance)");
