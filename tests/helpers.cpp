@@ -228,6 +228,23 @@ Mesh icosphere(int subdivisions)
     return m;
 }
 
+Mesh joined(const Mesh& a, const Mesh& b, Vec3 shift)
+{
+    Mesh m = a;
+    const Index offset = m.vertex_count();
+    for (Index v = 0; v < b.vertex_count(); ++v)
+        m.add_vertex(b.positions[3 * v] + shift[0], b.positions[3 * v + 1] + shift[1],
+                     b.positions[3 * v + 2] + shift[2]);
+    for (Index f = 0; f < b.face_count(); ++f)
+    {
+        std::vector<Index> face(b.face(f).begin(), b.face(f).end());
+        for (Index& v : face)
+            v += offset;
+        m.add_face(face);
+    }
+    return m;
+}
+
 Mesh mixed_polygons()
 {
     // A 3x2 patch: quads, two triangles and a pentagon, slightly non-planar.
@@ -256,6 +273,11 @@ Mesh mixed_polygons()
 void perturb(Mesh& mesh, double sigma, unsigned seed)
 {
     add_gaussian_noise(mesh, sigma, seed);
+}
+
+CommandRun cli(const std::string& args)
+{
+    return run_command(shell_quote(MESHFAIR_CLI) + " " + args);
 }
 
 std::string shell_quote(const std::string& s)

@@ -30,6 +30,8 @@ struct CommandRun
 //! \brief Runs a shell command line with stdout and stderr captured (in the test's temp
 //! dir).
 CommandRun run_command(const std::string& command_line);
+//! meshfair-cli run with `args` (already quoted for the shell), as run_command runs it.
+CommandRun cli(const std::string& args);
 //! `s` quoted for the shell.
 std::string shell_quote(const std::string& s);
 
@@ -59,6 +61,8 @@ Mesh with_isolated_vertex();    //!< a triangle plus an unused vertex
 Mesh quad_torus(int nu, int nv, double R, double r); //!< closed quad torus
 Mesh icosphere(int subdivisions);                    //!< subdivided icosahedron on the unit sphere
 Mesh mixed_polygons(); //!< open patch of triangles, quads and a pentagon
+//! b's vertices and faces after a's (two components when apart), b moved by `shift`.
+Mesh joined(const Mesh& a, const Mesh& b, Vec3 shift);
 
 //! Restores the default thread count when a test case ends, whatever happens.
 struct ThreadCountGuard

@@ -24,10 +24,7 @@ namespace {
 
 using Run = test::CommandRun;
 
-Run cli(const std::string& args)
-{
-    return test::run_command(test::shell_quote(MESHFAIR_CLI) + " " + args);
-}
+using test::cli;
 
 std::string bunny()
 {

@@ -21,19 +21,7 @@ namespace {
 //! A closed quad torus and, apart from it, an open grid: one closed component of two.
 Mesh torus_and_grid()
 {
-    Mesh m = test::quad_torus(16, 10, 2.0, 0.7);
-    const Mesh grid = test::open_grid(3, 3);
-    const Index offset = m.vertex_count();
-    for (Index v = 0; v < grid.vertex_count(); ++v)
-        m.add_vertex(grid.positions[3 * v] + 10, grid.positions[3 * v + 1], 0);
-    for (Index f = 0; f < grid.face_count(); ++f)
-    {
-        std::vector<Index> face(grid.face(f).begin(), grid.face(f).end());
-        for (Index& v : face)
-            v += offset;
-        m.add_face(face);
-    }
-    return m;
+    return test::joined(test::quad_torus(16, 10, 2.0, 0.7), test::open_grid(3, 3), {10, 0, 0});
 }
 
 Scalar relative(Scalar a, Scalar b)
