@@ -129,7 +129,7 @@ fuzz_seeds() {
         fuzz_ply_*) _fuzz_copy adversarial '' "$out" "$adv/ply" ;;
         fuzz_stl_*) _fuzz_copy adversarial '' "$out" "$adv/stl" ;;
         fuzz_recipe) _fuzz_copy adversarial '' "$out" "$adv/recipe" "$fuzz_root/assets/recipes" ;;
-        fuzz_script) _fuzz_copy tests '' "$out" "$fuzz_root/tests/render/scripts" ;;
+        fuzz_script) _fuzz_copy tests '' "$out" "$fuzz_root/tests/app/editor/scripts" ;;
         fuzz_recovery) _fuzz_copy generated '' "$out" "$g/recovery" ;;
     esac
     case $t in

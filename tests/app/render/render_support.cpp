@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-#include "tests/render/render_support.h"
+#include "tests/app/render/render_support.h"
 
 #include <doctest/doctest.h>
 

@@ -24,7 +24,7 @@
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 #include "tests/helpers.h"
-#include "tests/render/render_support.h"
+#include "tests/app/render/render_support.h"
 
 using namespace meshfair;
 using namespace meshfair::app;

@@ -3,7 +3,7 @@
 #pragma once
 
 // Offscreen frames for the render tests (OSMesa, llvmpipe) and their comparison with
-// the golden images of tests/golden/.
+// the golden images of tests/app/render/golden/.
 
 #include <string>
 #include <vector>
@@ -37,10 +37,10 @@ app::Image render_frame(const app::Document& document, const app::Camera& camera
                         const app::DisplayOptions& display, int width, int height,
                         const FrameExtras& extras = {});
 
-//! \brief Compares `image` with tests/golden/NAME.png (see the tolerances above). On a
+//! \brief Compares `image` with tests/app/render/golden/NAME.png (see the tolerances above). On a
 //! failure writes NAME-actual.png and NAME-diff.png into the build's render-failures/
 //! folder and says so. With MESHFAIR_UPDATE_GOLDEN=1 in the environment it writes the
-//! golden instead (tests/golden/regenerate.sh).
+//! golden instead (tests/app/render/golden/regenerate.sh).
 void check_golden(const std::string& name, const app::Image& image);
 
 } // namespace meshfair::test

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 // Golden images through OSMesa: every case renders one frame and compares it with its PNG
-// in tests/golden/ (tolerances in render_support.h).
+// in tests/app/render/golden/ (tolerances in render_support.h).
 #include <doctest/doctest.h>
 
 #include <cmath>
 
 #include "tests/helpers.h"
-#include "tests/render/render_support.h"
+#include "tests/app/render/render_support.h"
 
 using namespace meshfair;
 using namespace meshfair::app;

@@ -19,7 +19,7 @@
 #include "core/recipe/session.h"
 #include "core/topology/vertex_order.h"
 #include "tests/helpers.h"
-#include "tests/render/render_support.h"
+#include "tests/app/render/render_support.h"
 
 using namespace meshfair;
 namespace fs = std::filesystem;
@@ -51,7 +51,7 @@ const char* kLassoInPlace =
     R"({"tool": "lasso"}, {"elements": "faces"},
        {"drag": [[200, 170], [300, 140], [370, 200], [340, 290], [250, 300], [230, 240]]})";
 
-// A script of tests/render/scripts/ with @OUT@ replaced by `out`.
+// A script of tests/app/editor/scripts/ with @OUT@ replaced by `out`.
 std::string script_file(const std::string& name, const fs::path& out)
 {
     std::string text = io::read_file((fs::path(MESHFAIR_TEST_SCRIPTS) / name).string());
