@@ -1,15 +1,17 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # MeshFair setup on Debian 12: installs the Debian packages that are missing, builds,
-# then either runs the main job on the bundled bunny (`run`) or every test (`test`).
-# Safe to run again: installed packages are skipped and the build is incremental.
+# then runs the main job on the bundled bunny (`run`), every test once in the release
+# build (`test`, the check before every commit), or the deep gate (`check`: sanitizers,
+# fuzzing, ThreadSanitizer, clang-tidy; what .ci/run runs after `test`). Safe to run
+# again: installed packages are skipped and the builds are incremental.
 set -euo pipefail
 
 mode=${1:-run}
 case "$mode" in
-    run | test) ;;
+    run | test | check) ;;
     *)
-        echo "usage: $0 run|test" >&2
+        echo "usage: $0 run|test|check" >&2
         exit 2
         ;;
 esac
@@ -24,14 +26,16 @@ cd "$root"
 packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
     doctest-dev libeigen3-dev libopenmesh-dev libglfw3-dev libosmesa6-dev libglm-dev
     libimgui-dev libstb-dev xvfb xauth pybind11-dev python3-dev python3-numpy)
-# Tests also need: clang-format and clang-tidy (style and lint), clang with its runtime
-# and OpenMP library (the sanitizer build and libFuzzer), strace (fault injection in the
-# save tests and the files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the
-# editor's real-window test: synthetic keys, a screenshot taken from outside, its pixels,
-# a close request sent as a window manager sends it), python3-pytest (the module's tests),
-# munge and slurm-wlm (docs/batch.md's job array on a single-node cluster the test starts).
-[ "$mode" = test ] && packages+=(clang-format clang-tidy clang libclang-rt-14-dev libomp-14-dev
-    strace xdotool x11-apps imagemagick libx11-dev python3-pytest munge slurm-wlm)
+# Tests also need: clang-format (style), strace (fault injection in the save tests and the
+# files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the editor's
+# real-window tests: synthetic keys, a screenshot taken from outside, its pixels, a close
+# request sent as a window manager sends it), python3-pytest (the module's tests), munge
+# and slurm-wlm (docs/batch.md's job array on a single-node cluster the test starts).
+[ "$mode" = test ] && packages+=(clang-format strace xdotool x11-apps imagemagick libx11-dev
+    python3-pytest munge slurm-wlm)
+# The gate needs clang with its sanitizer runtimes and OpenMP library (ASan, UBSan,
+# libFuzzer, TSan with Archer) and clang-tidy.
+[ "$mode" = check ] && packages+=(clang clang-tidy libclang-rt-14-dev libomp-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -50,6 +54,43 @@ if [ ${#missing[@]} -gt 0 ]; then
     export DEBIAN_FRONTEND=noninteractive
     "${sudo[@]}" apt-get update -qq
     "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+# shellcheck source=.ci/phases.sh
+source .ci/phases.sh
+if [ "$mode" = check ]; then
+    # The deep gate. What needs a window, a killed process or a cluster ran once, in the
+    # release build (`test`); here the in-process suites, the fuzz corpora and the threads.
+    phase "setup"
+    failed=()
+    # 1. The in-process suites (core, app, render, bench) built with clang, ASan + UBSan
+    # and libstdc++ assertions; the fuzz targets' build beside their tests.
+    ./.ci/sanitize.sh build || failed+=("sanitizer build")
+    phase "sanitizer build"
+    start_beside fuzz-build ./.ci/fuzz.sh --build
+    ./.ci/sanitize.sh test || failed+=("sanitizer tests")
+    phase "sanitizer tests"
+    finish_beside fuzz-build || failed+=("fuzz build")
+    phase "fuzz build (the rest)"
+    # 2. Every fuzz target: its whole corpus replayed (tests/fuzz/corpus, tests/adversarial,
+    # generated seeds), then fuzzed ${MESHFAIR_FUZZ_SECONDS:-30} s; clang-tidy (bugprone-*)
+    # on core/ beside them.
+    start_beside clang-tidy ./.ci/tidy.sh
+    ./.ci/fuzz.sh || failed+=("fuzzing")
+    phase "fuzz replay and campaigns"
+    finish_beside clang-tidy || failed+=("clang-tidy")
+    phase "clang-tidy (the rest)"
+    # 3. The live solver, the autosave and the recovery under ThreadSanitizer.
+    ./.ci/tsan.sh || failed+=("thread sanitizer")
+    phase "thread-sanitizer build and tests"
+    print_phases
+    if [ ${#failed[@]} -gt 0 ]; then
+        echo "The deep gate FAILED: ${failed[*]}." >&2
+        exit 1
+    fi
+    echo "The deep gate passed: the in-process suites under ASan + UBSan + assertions, every" \
+        "fuzz corpus and campaign, the threads under ThreadSanitizer; core/ is lint-clean."
+    exit 0
 fi
 
 build=build
@@ -96,81 +137,27 @@ if [ "$mode" = run ]; then
     exit 0
 fi
 
-# Where the test command's time goes, phase by phase (printed at the end; the first phase
-# from the script's start).
-times=()
-phase_start=0
-phase() {
-    times+=("$(printf '%-28s %5d s' "$1" $((SECONDS - phase_start)))")
-    phase_start=$SECONDS
-}
 phase "setup and release build"
-# Each build after the first starts beside the tests before it, at the lowest priority:
-# those tests wait for windows, for the processes they kill and for each other, and leave
-# idle a quarter of both cores (release) or a tenth (sanitizers), which the build takes
-# without taking a core a test wants;
-# clang-tidy takes the core the last round of fuzzing leaves idle. Each runs in a process
-# group of its own (stopped if the script stops) with its output in a log, printed when it
-# ends (and when it fails).
-logs="$build/ci-logs"
-mkdir -p "$logs"
-declare -A beside=()
-start_beside() { # start_beside NAME COMMAND...
-    local name=$1
-    shift
-    # A session of its own is also a scheduling group of its own where the kernel groups
-    # sessions (autogroup), which would share the cores equally with the tests whatever
-    # its nice value: the group is niced too, from inside the session.
-    # shellcheck disable=SC2016 # expanded by the inner shell
-    setsid bash -c 'echo 19 2>/dev/null >/proc/self/autogroup || true; exec nice -n 19 "$@"' \
-        "$name" "$@" >"$logs/$name.log" 2>&1 &
-    beside[$name]=$!
-}
-finish_beside() { # finish_beside NAME: waits for it, prints its log, fails with it
-    local name=$1 status=0
-    wait "${beside[$name]}" || status=$?
-    unset "beside[$name]"
-    cat "$logs/$name.log"
-    if [ "$status" != 0 ]; then
-        echo "$name failed (exit $status)" >&2
-        exit "$status"
-    fi
-}
-stop_beside() {
-    local pid
-    for pid in "${beside[@]}"; do
-        kill -- "-$pid" 2>/dev/null || true
-    done
-}
-trap stop_beside EXIT
-# 1. Unit, adversarial and save tests in the release build (the sanitizer build beside).
-start_beside sanitizer-build ./.ci/sanitize.sh build
-(cd "$build" && ctest --output-on-failure -j"$(nproc)")
-phase "release tests"
+# Every test once, in the release build: unit, CLI, adversarial, saving with its killed
+# processes, golden images, the real-window tests, the Python module, the Slurm job array.
+# The longest start first (their COST), so that the run does not end on one of them alone.
+ctest_log="$build/Testing/test-command.log"
+mkdir -p "$(dirname "$ctest_log")"
+status=0
+(cd "$build" && ctest --output-on-failure -j"$(nproc)") 2>&1 | tee "$ctest_log" || status=$?
+phase "tests (ctest, $(nproc) at a time)"
 echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
-find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror
+find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror ||
+    status=1
 phase "formatting"
-# 2. The same tests built with clang, ASan + UBSan and libstdc++ assertions (the fuzz
-# targets' build beside them).
-finish_beside sanitizer-build
-phase "sanitizer build (the rest)"
-start_beside fuzz-build ./.ci/fuzz.sh --build
-./.ci/sanitize.sh test
-phase "sanitizer tests"
-finish_beside fuzz-build
-phase "fuzz build (the rest)"
-# 3. Every fuzz target: replay the whole corpus, then fuzz ${MESHFAIR_FUZZ_SECONDS:-30} s each
-# (as many targets at a time as there are cores); 4. clang-tidy (bugprone-*) on core/, with
-# clang's compile commands, beside them.
-start_beside clang-tidy ./.ci/tidy.sh
-./.ci/fuzz.sh
-phase "fuzz campaigns"
-finish_beside clang-tidy
-phase "clang-tidy (the rest)"
-# 5. The editor's threads under ThreadSanitizer, after the fuzzing: its build beside the
-# fuzz targets would take time from their 2 s timeouts.
-./.ci/tsan.sh
-phase "thread-sanitizer build, tests"
-echo "Time by phase:"
-printf '  %s\n' "${times[@]}"
-echo "All tests passed (release, address and thread sanitizers, fuzzing), core/ is lint-clean and every source file is formatted."
+echo "The ten slowest tests:"
+# ctest's lines: "  3/415 Test  #12: NAME .......   Passed   35.21 sec"
+sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \(.*[^ .]\) \.* *[^ ]* *\([0-9.]*\) sec$/\2\t\1/p' "$ctest_log" |
+    sort -t$'\t' -k1,1 -g -r | head -10 | awk -F'\t' '{ printf "  %7.1f s  %s\n", $1, $2 }'
+print_phases
+if [ "$status" != 0 ]; then
+    echo "The test command FAILED (see above)." >&2
+    exit "$status"
+fi
+echo "All tests passed in the release build and every source file is formatted." \
+    "The deep gate (sanitizers, fuzzing, ThreadSanitizer, clang-tidy): ./.ci/setup.sh check"

@@ -1,87 +1,17 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 //
-// Replaces the global allocation functions of the test program with counting ones, so a
-// test can assert that a region of code allocates nothing: C++'s operator new and, outside
-// the sanitizer build (where AddressSanitizer owns malloc), the C library's malloc family
-// too, which is what the OpenMP runtime and every other library call.
+// A step and an energy evaluation allocate nothing, counted by the test program's
+// allocation functions (tests/allocation_counter.h).
 #include <doctest/doctest.h>
 
-#include <atomic>
 #include <cstdlib>
-#include <new>
+#include <vector>
 
-#include "app/common/sanitizer_malloc.h"
 #include "core/recipe/session.h"
 #include "core/solver/parallel.h"
+#include "tests/allocation_counter.h"
 #include "tests/helpers.h"
-
-namespace {
-
-std::atomic<long> g_allocations{0};
-
-} // namespace
-
-#define MESHFAIR_COUNT_MALLOC (!MESHFAIR_SANITIZER_OWNS_MALLOC)
-
-#if MESHFAIR_COUNT_MALLOC
-// glibc's own entry points; defining malloc here interposes it for every shared library.
-extern "C" void* __libc_malloc(std::size_t);
-extern "C" void* __libc_calloc(std::size_t, std::size_t);
-extern "C" void* __libc_realloc(void*, std::size_t);
-
-extern "C" void* malloc(std::size_t size)
-{
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    return __libc_malloc(size);
-}
-
-extern "C" void* calloc(std::size_t count, std::size_t size)
-{
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    return __libc_calloc(count, size);
-}
-
-extern "C" void* realloc(void* p, std::size_t size)
-{
-    g_allocations.fetch_add(1, std::memory_order_relaxed);
-    return __libc_realloc(p, size);
-}
-#endif
-
-void* operator new(std::size_t size)
-{
-    if (!MESHFAIR_COUNT_MALLOC) // else malloc counts it
-        g_allocations.fetch_add(1, std::memory_order_relaxed);
-    if (void* p = std::malloc(size == 0 ? 1 : size))
-        return p;
-    throw std::bad_alloc();
-}
-
-void* operator new[](std::size_t size)
-{
-    return operator new(size);
-}
-
-void operator delete(void* p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete[](void* p) noexcept
-{
-    std::free(p);
-}
-
-void operator delete(void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
-
-void operator delete[](void* p, std::size_t) noexcept
-{
-    std::free(p);
-}
 
 using namespace meshfair;
 
@@ -119,26 +49,31 @@ TEST_SUITE("Session")
                     Session session(x, t, r);
                     session.apply_hard_targets(x.positions);
                     session.step(x.positions); // warm-up outside the measured region
-                    const long before = g_allocations.load();
+                    const test::AllocationScope measured;
                     Scalar total = 0;
                     for (int k = 0; k < 5; ++k)
                     {
                         session.step(x.positions);
                         total += session.energy(x.positions).total();
                     }
-                    CHECK(g_allocations.load() == before);
+                    CHECK(measured.count() == 0);
                     CHECK(total > 0);
                 }
         // The counter itself works: a vector allocates, and so does the C library.
-        const long before = g_allocations.load();
-        std::vector<int> v(10);
-        CHECK(g_allocations.load() > before);
-        if (MESHFAIR_COUNT_MALLOC)
         {
-            const long c_before = g_allocations.load();
+            const test::AllocationScope vector;
+            std::vector<int> v(10);
+            CHECK(vector.count() == 1);
+            CHECK(vector.bytes() == 10 * sizeof(int));
+            CHECK(vector.largest() == 10 * sizeof(int));
+        }
+        if (test::AllocationScope::counts_malloc())
+        {
+            const test::AllocationScope c;
             void* volatile p = std::malloc(100);
             std::free(p);
-            CHECK(g_allocations.load() > c_before);
+            CHECK(c.count() == 1);
+            CHECK(c.largest() == 100);
         }
     }
 
@@ -177,7 +112,7 @@ TEST_SUITE("Session")
             session.set_positions(x.positions);
             session.step(); // warm-up outside the measured region
             session.step(x.positions);
-            const long before = g_allocations.load();
+            const test::AllocationScope measured;
             Scalar total = 0;
             TermEnergies swept;
             session.step(swept); // the first sums the fixed parts: no allocation either
@@ -189,7 +124,7 @@ TEST_SUITE("Session")
                 total +=
                     session.energy(x.positions).total() + session.energy().total() + swept.total();
             }
-            CHECK(g_allocations.load() == before);
+            CHECK(measured.count() == 0);
             CHECK(total > 0);
         }
     }
@@ -223,17 +158,19 @@ TEST_SUITE("Session")
             Session session(x, t, r);
             session.step(x.positions); // warm-up: the OpenMP runtime starts its threads
             session.energy(x.positions);
-            const long before = g_allocations.load();
-            for (int k = 0; k < 5; ++k)
             {
-                session.step(x.positions);
-                session.energy(x.positions);
+                const test::AllocationScope measured;
+                for (int k = 0; k < 5; ++k)
+                {
+                    session.step(x.positions);
+                    session.energy(x.positions);
+                }
+                CHECK(measured.count() == 0);
             }
-            CHECK(g_allocations.load() == before);
             // The same with the session's kept positions (what run() and the editor use).
             session.set_positions(x.positions);
             session.step();
-            const long kept_before = g_allocations.load();
+            const test::AllocationScope kept;
             TermEnergies energy;
             for (int k = 0; k < 5; ++k)
             {
@@ -241,7 +178,7 @@ TEST_SUITE("Session")
                 session.energy();
                 session.step(energy); // the energy in the step's sweep
             }
-            CHECK(g_allocations.load() == kept_before);
+            CHECK(kept.count() == 0);
             set_thread_count(0);
         }
     }
