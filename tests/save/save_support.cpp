@@ -257,6 +257,13 @@ Child::~Child()
         ::close(pidfd_);
 }
 
+bool Child::exited() const
+{
+    siginfo_t info{};
+    return ::waitid(P_PID, static_cast<id_t>(pid_), &info, WEXITED | WNOHANG | WNOWAIT) == 0 &&
+           info.si_pid == pid_;
+}
+
 Result Child::wait(std::chrono::milliseconds timeout)
 {
     Result r;

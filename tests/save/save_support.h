@@ -93,6 +93,8 @@ public:
     Child(const Child&) = delete;
     Child& operator=(const Child&) = delete;
     pid_t pid() const { return pid_; }
+    //! True once the process has ended (it is not reaped: wait() collects it).
+    bool exited() const;
     //! Waits (killing it with SIGKILL after `timeout`) and collects the result.
     Result wait(std::chrono::milliseconds timeout = std::chrono::seconds(60));
 
