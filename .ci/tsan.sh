@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # The editor's threads under ThreadSanitizer: a clang build with -fsanitize=thread of the
-# editor, the CLI and the app and render tests (build-tsan), then the tests that run the
-# live solver's worker thread (the "Live solving" and "Smoothing brush" suites: a solver
-# playing while the frame takes positions, restarts, pin drags, undo), the autosave and
-# recovery files ("Recovery", and a session killed mid-run then recovered, which runs the
-# editor itself), and the rest of the app tests. Any report fails the run; nothing is
+# editor, the CLI and the app and render tests (build-tsan), then the app tests, among them
+# those that run the live solver's worker thread (the "Live solving" and "Smoothing brush"
+# suites: a solver playing while the frame takes positions, restarts, pin drags, undo) and
+# the autosave and recovery files ("Recovery"), and a session killed mid-run then
+# recovered, which runs the editor itself. Any report fails the run; nothing is
 # suppressed. The solver's OpenMP loops run under LLVM's OpenMP runtime with its
 # ThreadSanitizer tool (Archer, libomp-14-dev), so TSan sees OpenMP's synchronization
 # instead of reporting it. Usage: .ci/tsan.sh [build|test]: builds, runs the tests, or
@@ -34,6 +34,5 @@ export OMP_TOOL_LIBRARIES=$archer
 export GALLIUM_DRIVER=llvmpipe LP_NUM_THREADS=0
 export XDG_STATE_HOME=$PWD/$build/state
 (cd "$build/tests" && ./meshfair_app_tests)
-(cd "$build/tests" && ./meshfair_render_tests --test-suite="Live solving,Smoothing brush")
 (cd "$build/tests" && ./meshfair_render_tests --test-case="crash recovery*")
 echo "ThreadSanitizer: the live solver, the autosave and the app tests ran without a report."

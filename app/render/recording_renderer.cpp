@@ -68,6 +68,7 @@ void RecordingRenderer::rasterize(const Camera& camera, int width, int height)
     projected_ = project_points(camera, positions_, width, height);
     depth_.assign(static_cast<size_t>(width) * static_cast<size_t>(height), 1.0f);
     face_at_.assign(depth_.size(), -1);
+    triangle_at_.assign(depth_.size(), 0);
     const Index faces = static_cast<Index>(face_offsets_.size()) - 1;
     for (Index f = 0; f < faces; ++f)
     {
@@ -104,6 +105,7 @@ void RecordingRenderer::rasterize(const Camera& camera, int width, int height)
                     {
                         depth_[p] = z;
                         face_at_[p] = f;
+                        triangle_at_[p] = k;
                     }
                 }
         }
@@ -123,18 +125,19 @@ PickResult RecordingRenderer::pick(const Camera& camera, const ViewRect& view, i
         return result;
     result.hit = true;
     result.face = face_at_[p];
-    // The face's corner nearest to the cursor on screen.
+    // The corner nearest to the cursor on screen of the fan triangle drawn there (not of the
+    // whole face: the ID buffer's rule, Renderer::pick), the first of equally near ones.
     double best = 1e300;
-    const auto f = static_cast<size_t>(result.face);
-    for (auto k = static_cast<size_t>(face_offsets_[f]);
-         k < static_cast<size_t>(face_offsets_[f + 1]); ++k)
+    const size_t k = triangle_at_[p];
+    for (const size_t corner :
+         {static_cast<size_t>(face_offsets_[static_cast<size_t>(result.face)]), k, k + 1})
     {
-        const ScreenPoint& s = projected_[static_cast<size_t>(face_vertices_[k])];
+        const ScreenPoint& s = projected_[static_cast<size_t>(face_vertices_[corner])];
         const double d = (s.x - x - 0.5) * (s.x - x - 0.5) + (s.y - y - 0.5) * (s.y - y - 0.5);
         if (d < best)
         {
             best = d;
-            result.vertex = face_vertices_[k];
+            result.vertex = face_vertices_[corner];
         }
     }
     result.point = camera.unproject({x + 0.5, y + 0.5, depth_[p]}, width, height);

@@ -54,6 +54,9 @@ private:
     std::vector<ScreenPoint> projected_;
     std::vector<float> depth_;
     std::vector<Index> face_at_;
+    //! The fan triangle kept at each pixel: the offset in face_vertices_ of its second
+    //! corner (pick's vertex is the nearest of that triangle's corners, as in the ID buffer).
+    std::vector<size_t> triangle_at_;
 };
 
 } // namespace meshfair::app
