@@ -121,6 +121,7 @@ void InputRouter::route(EditorSession& session, bool with_interface)
     for (const InputEvent& e : batch_)
     {
         routed_ += e.type != InputEvent::Type::MouseMove;
+        moved_ += e.type == InputEvent::Type::MouseMove;
         if (e.type == InputEvent::Type::KeyPress &&
             std::ranges::find(keys_down_, e.key) == keys_down_.end())
             keys_down_.push_back(e.key);

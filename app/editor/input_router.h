@@ -39,6 +39,10 @@ public:
     //! is down after them: the widget map reports both, so that a test driving the window
     //! waits for its input to be handled instead of sleeping for a guessed time.
     long routed_count() const { return routed_; }
+    //! Cursor moves handed to the session so far: with cursor_x() and cursor_y(), in the
+    //! widget map too, so that a test waits until the editor has seen the pointer where it
+    //! moved it before pressing there (the window reads a press's place when its frame polls).
+    long moved_count() const { return moved_; }
     bool anything_held() const
     {
         return !keys_down_.empty() || buttons_down_[0] || buttons_down_[1] || buttons_down_[2];
@@ -53,6 +57,7 @@ private:
     std::vector<InputEvent> batch_;
     std::array<bool, 3> view_owns_{}; // the view took the press of this button
     long routed_ = 0;
+    long moved_ = 0;
     std::vector<int> keys_down_;
     std::array<bool, 3> buttons_down_{};
     double x_ = 0, y_ = 0;

@@ -93,13 +93,15 @@ int main(int argc, char** argv)
         ->delimiter(',');
     app.add_flag("--ui", ui, "Offscreen: draw the editor's panels too");
     app.add_flag("--trace", trace,
-                 "Print each command the keys, menus, panels and tools give, and its outcome");
+                 "Print each command the keys, menus, panels and tools give, and its outcome "
+                 "(offscreen: those of the script)");
     app.add_option("--widget-map", widget_map,
                    "Window: keep FILE listing where each widget of the interface is (label, "
                    "x0, y0, x1, y1 in window pixels, tab-separated, after the lines '#frame N' "
-                   "and '#input EVENTS HELD QUEUED': the key, button and wheel events handled, "
-                   "1 while a key or button is down, 1 while events wait), for driving it from "
-                   "outside");
+                   "(the frame, once on the screen) and '#input EVENTS HELD QUEUED MOVES X Y': "
+                   "the key, button and wheel events handled, 1 while a key or button is down, "
+                   "1 while events wait, the cursor moves handled and where the last one put "
+                   "the cursor), for driving it from outside");
     app.add_option("--threads", threads, "Threads for normals and loading (default: every core)")
         ->check(CLI::Range(1, 1024));
     DisplayOptions display;
@@ -151,7 +153,7 @@ int main(int argc, char** argv)
             return kExitInput;
         }
         render_screenshot(
-            {mesh, view, screenshot, save_view, script, beside, width, height, display, ui});
+            {mesh, view, screenshot, save_view, script, beside, width, height, display, ui, trace});
         return 0;
     }
     catch (const WriteError& e)

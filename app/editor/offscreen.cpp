@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -94,6 +95,8 @@ void render_screenshot(const ScreenshotRequest& request)
     GlRenderer renderer;
     EditorSession session(std::move(document), renderer);
     offscreen(session);
+    if (request.trace)
+        session.set_trace(stdout);
     OffscreenHost host(session, request.width, request.height, request.ui);
     host.run_frame();
     if (camera)

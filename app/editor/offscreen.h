@@ -51,7 +51,8 @@ struct ScreenshotRequest
     int width = 1280;
     int height = 800;
     DisplayOptions display;
-    bool ui = false; //!< draw the editor's panels too
+    bool ui = false;    //!< draw the editor's panels too
+    bool trace = false; //!< print the script's commands and their outcomes on stdout
 };
 
 //! \brief Renders one frame through OSMesa (no display, no GLFW) and writes it as PNG,

@@ -191,18 +191,25 @@ void set_clipboard(void* window, const char* text)
 }
 
 // The widgets' rectangles in window pixels, one per line, after a first line "#frame N"
-// with the number of the frame that wrote it: rewritten every frame, so that a driver can
-// tell that frames were drawn since it last looked and the layout it reads has settled.
+// with the number of the frame that wrote it: rewritten every frame, once it is on the
+// screen, so that a driver can tell that frames were drawn since it last looked, that the
+// layout it reads has settled, and that what it sees (a screenshot, the title) shows it.
+// The second line is the input handled ("#input EVENTS HELD QUEUED MOVES X Y").
 void write_widget_map(const std::string& path, const EditorUi& ui, const FrameSize& size,
                       long frame, const InputRouter& input)
 {
     const double sx = double(size.window_width) / std::max(size.framebuffer_width, 1);
     const double sy = double(size.window_height) / std::max(size.framebuffer_height, 1);
-    // The input handled by this frame: the events routed so far, whether a key or button
-    // is still down, and the events still queued.
-    std::string text =
-        "#frame\t" + std::to_string(frame) + "\n#input\t" + std::to_string(input.routed_count()) +
-        "\t" + (input.anything_held() ? "1" : "0") + "\t" + (input.pending() ? "1" : "0") + "\n";
+    // The input handled by this frame: the events routed so far (not the cursor's moves),
+    // whether a key or button is still down, and the events still queued; then the cursor's
+    // moves routed so far and where the last one put it, in window pixels (a test waits for
+    // the pointer to be seen where it moved it before pressing there).
+    std::string text = "#frame\t" + std::to_string(frame) + "\n#input\t" +
+                       std::to_string(input.routed_count()) + "\t" +
+                       (input.anything_held() ? "1" : "0") + "\t" + (input.pending() ? "1" : "0") +
+                       "\t" + std::to_string(input.moved_count()) + "\t" +
+                       std::to_string(std::lround(input.cursor_x() * sx)) + "\t" +
+                       std::to_string(std::lround(input.cursor_y() * sy)) + "\n";
     char line[64];
     for (const std::string& name : ui.widget_names())
     {
@@ -341,9 +348,6 @@ void run_window(const WindowOptions& options)
         for (const std::string& path : std::exchange(editor->dropped, {}))
             session.dispatch(cmd::OpenMesh{path});
         session.autosave();
-        if (!options.widget_map.empty())
-            write_widget_map(options.widget_map, editor->frame->ui(), size, ++frames,
-                             editor->frame->input());
         session.draw();
         if (std::optional<std::string> shot = std::exchange(session.state().screenshot, {}))
             editor->screenshot(*shot); // the view without the panels
@@ -354,6 +358,10 @@ void run_window(const WindowOptions& options)
             title = now;
             glfwSetWindowTitle(window, title.c_str());
         }
+        // After the swap and the title: a frame in the map is one on the screen.
+        if (!options.widget_map.empty())
+            write_widget_map(options.widget_map, editor->frame->ui(), size, ++frames,
+                             editor->frame->input());
         session.state().frame_ms =
             std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         if (first)

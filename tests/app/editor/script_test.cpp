@@ -18,8 +18,8 @@
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
 #include "core/topology/vertex_order.h"
-#include "tests/helpers.h"
 #include "tests/app/render/render_support.h"
+#include "tests/helpers.h"
 
 using namespace meshfair;
 namespace fs = std::filesystem;
@@ -97,14 +97,23 @@ TEST_SUITE("Scripted sessions")
                                    test::shell_quote(MESHFAIR_EDITOR) + " --offscreen " +
                                    test::shell_quote((test::assets_dir() / "bunny.obj").string()) +
                                    " --size 560x420";
-        // The first run autosaves, then plays "forever" until it is killed.
+        // The first run autosaves, then plays "forever" until it is killed: once its trace
+        // says the run has begun (after the autosave, which wrote the recovery files), and
+        // the recovery's state.json is there.
+        const fs::path trace = dir / "first.trace";
         const test::CommandRun killed = test::run_command(
-            editor + " --script " + test::shell_quote(script.string()) + " --screenshot " +
-            test::shell_quote((dir / "never.png").string()) +
-            " & pid=$!; for i in $(seq 300); do ls " + test::shell_quote(state.string()) +
-            "/meshfair/recovery/*/state.json >/dev/null 2>&1 && break; sleep 0.1; done; "
-            "sleep 0.5; kill -9 $pid; wait $pid; echo \"exit $?\"");
+            editor + " --trace --script " + test::shell_quote(script.string()) + " --screenshot " +
+            test::shell_quote((dir / "never.png").string()) + " >" +
+            test::shell_quote(trace.string()) + " & pid=$!; for i in $(seq 1200); do grep -qs " +
+            "'^command play: ok' " + test::shell_quote(trace.string()) + " && ls " +
+            test::shell_quote(state.string()) +
+            "/meshfair/recovery/*/state.json >/dev/null 2>&1 && break; sleep 0.05; done; "
+            "kill -9 $pid; wait $pid; echo \"exit $?\"");
         REQUIRE_MESSAGE(killed.out.find("exit 137") != std::string::npos, killed.out << killed.err);
+        // Killed mid-run: the run had begun, after the autosave.
+        const std::string traced = io::read_file(trace.string());
+        REQUIRE_MESSAGE(traced.find("command play: ok") != std::string::npos, traced);
+        CHECK(traced.find("command autosave") < traced.find("command play: ok"));
         CHECK_FALSE(fs::exists(dir / "never.png"));
 
         // The second run recovers, saves the mesh and exports the recipe.

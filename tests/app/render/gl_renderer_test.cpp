@@ -12,8 +12,8 @@
 
 #include "app/render/gl_functions.h"
 #include "app/render/render_error.h"
-#include "tests/helpers.h"
 #include "tests/app/render/render_support.h"
+#include "tests/helpers.h"
 
 using namespace meshfair;
 using namespace meshfair::app;

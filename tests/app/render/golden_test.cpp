@@ -6,8 +6,8 @@
 
 #include <cmath>
 
-#include "tests/helpers.h"
 #include "tests/app/render/render_support.h"
+#include "tests/helpers.h"
 
 using namespace meshfair;
 using namespace meshfair::app;

@@ -82,9 +82,9 @@ run_preset() {
 run_preset denoise 1
 grep -q "run note: volume: .*capped by fans from the loops' centroids" "$log" ||
     fail "the run's note does not say how the open scan's volume is kept"
-# The picture after the run: the note in the status bar (no newer message), from outside.
-frame=$(frame_number)
-wait_frame_after "$frame"
+# The picture after the run: the note in the status bar (no newer message), from outside,
+# once a frame drawn after the run's end is on the screen.
+next_frame
 xwd -root -silent | convert xwd:- "$work/denoised.png"
 key ctrl+s
 wait_line "command save: ok"

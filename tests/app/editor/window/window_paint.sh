@@ -49,13 +49,13 @@ drag 330 390 470 410 10
 wait_line "gesture paint"
 wait_line "^stroke {"
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "a command failed: $(grep 'failed' "$log" | head -3)"
-sleep 0.5
+next_frame # a frame drawn after the stroke's end, on the screen
 xwd -root -silent | convert xwd:- "$work/painted.png"
 # Green (weight 1/2) under the stroke, shaded: pixels far more green than red or blue; the
 # rest of the bunny blue (weight 0).
-count() {
-    convert "${2:-$work/painted.png}" -crop 640x420+0+40 +repage -fx "$1" \
-        -format '%[fx:round(mean * w * h)]' info:
+count() { # the expression computed on one channel only: the same count, a third of the work
+    convert "${2:-$work/painted.png}" -crop 640x420+0+40 +repage -channel R -fx "$1" +channel \
+        -format '%[fx:round(mean.r * w * h)]' info:
 }
 green=$(count 'g > 0.5 && r < 0.4 && b < 0.4')
 blue=$(count 'b > 0.5 && r < 0.2 && g < 0.2')
@@ -107,7 +107,7 @@ set_paint() { # set_paint ACTION...: an action on the Paint panel, and its setti
     n=$(count_lines "command paint settings: ok")
     "$@"
     wait_line "command paint settings: ok" $((n + 1))
-    sleep 0.3 # the panel laid out again
+    next_frame # the panel laid out again, after the frame that gave the command
 }
 drag_widget() { # drag_widget LABEL DX: a slider dragged from its centre
     local x y
@@ -133,7 +133,7 @@ p = json.loads(sys.argv[1])["paint"]
 assert p["set"] == "anchor 1" and p["mode"] == "subtract" and p["curve"] == "sphere", p
 assert p["strength"] > 0.5, p  # dragged right from 0.5
 PY
-sleep 0.5
+next_frame # a frame drawn after the stroke's end, on the screen
 xwd -root -silent | convert xwd:- "$work/anchors.png"
 red=$(count 'r > 0.5 && g < 0.35 && b < 0.35' "$work/anchors.png")
 [ "$red" -gt 300 ] || fail "the anchor set's map (weight 1) shows no red: $red pixels"
@@ -144,7 +144,7 @@ last_stroke | grep -q '"mode":"smooth"' || fail "no smoothing stroke: $(last_str
 # Back to the smoothing brush on the brush's region, with more steps a stroke.
 set_paint click_widget "smooth brush"
 click_widget "paint set"
-sleep 0.3 # the menu open: its items' places are this frame's, not those of the last time
+next_frame # the menu open: its items' places are this frame's, not those of the last time
 set_paint click_widget "paint set/brush"
 set_paint drag_widget "stroke steps" 40
 before=$(undo_steps)

@@ -2,11 +2,12 @@
 # SPDX-License-Identifier: MIT
 # A person's whole session in a real window under Xvfb, driven by synthetic input (xdotool):
 # open a noisy mesh; brush a patch and grow it; make it a region; pins dragged with M; a
-# normal set aimed with D; anchors with their own weight; Play until the energy settles;
-# the lambda slider moved during the run; Pause; undo back to the shape at the slider's change; save; export the
-# recipe through the File menu's dialog; reopen the mesh; import the recipe. The files must
-# agree: meshfair-cli smooth of the mesh with the exported recipe gives the saved file byte
-# for byte, and the imported recipe exports the same sets and settings again.
+# normal set aimed with D; anchors with their own weight; Play until the energy settles, at
+# 200 steps a frame; the lambda slider moved; Play again; undo back to the shape at the
+# slider's change; save; export the recipe through the File menu's dialog; reopen the mesh;
+# import the recipe. The files must agree: meshfair-cli smooth of the mesh with the
+# exported recipe gives the saved file byte for byte, and the imported recipe exports the
+# same sets and settings again.
 #   window_session.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
@@ -57,22 +58,31 @@ drag "$mx" "$my" $((mx + 30)) "$my" 3
 wait_line "command set weight: ok"
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
 
-# Play until the energy settles; the lambda slider moved during the run; Pause.
+# Play until the energy settles (the run stops by itself); the lambda slider moved; Play
+# again until it settles. Each run is waited for to its end, never guessed at; the slider
+# moves between the two runs, not during one: the live solver's pace is not to be relied
+# on (at a step a frame the first run lasts its 299 frames, but it has been seen to take
+# many steps a frame and settle within three frames, before a hand can take the slider).
+# The steps/frame slider dragged to its right end (200): either way a run of a few frames.
+settings=$(count_lines "command solver settings: ok")
 click_widget "until converged"
+read -r px py < <(widget_at "steps/frame")
+drag "$px" "$py" $((px + 150)) "$py" 4
+wait_line "command solver settings: ok" $((settings + 2))
 key space
-sleep 1
+wait_line "run stopped"
 read -r lx ly < <(widget_at "lambda")
-xdotool mousemove --window "$win" "$lx" "$ly"
-sleep 0.1
-xdotool mousedown 1
-sleep 0.1
-xdotool mousemove --window "$win" $((lx - 40)) "$ly"
-sleep 0.2
-xdotool mouseup 1
-sleep 1
+settings=$(count_lines "command solver settings: ok")
+drag "$lx" "$ly" $((lx - 40)) "$ly" 1
+wait_line "command solver settings: ok" $((settings + 1))
 key space
+wait_line "run stopped" 2
 wait_line "command play/pause: ok" 2
-# Undo the run after the change and the change: the shape seen when the slider moved.
+stopped() { sed -n 's/^run stopped: \([0-9]*\) steps.*/\1/p' "$log" | sed -n "$1p"; }
+first=$(stopped 1) second=$(stopped 2)
+[ "$second" -gt "$first" ] ||
+    fail "the run after the slider's change made no step ($first, then $second steps from the base)"
+# Undo the run after the change and the change: the shape the slider moved on.
 key ctrl+z
 key ctrl+z
 wait_line "command undo: ok" 2
@@ -112,4 +122,4 @@ steps=$(grep -o '"iterations": [0-9]*' "$work/session-recipe.json" | head -1 | g
 diff <(grep -v '"iterations"' "$work/session-recipe.json") \
     <(grep -v '"iterations"' "$work/reimported.json") >/dev/null ||
     fail "the imported recipe exports other sets or settings"
-echo "ok: a whole session (region, pins moved, normals aimed, anchors, a run with a slider moved, undo to the change, save, export, reopen, import) reproduced by meshfair-cli after $steps steps"
+echo "ok: a whole session (region, pins moved, normals aimed, anchors, a run, the lambda slider moved, a run again, undo to the change, save, export, reopen, import) reproduced by meshfair-cli after $steps steps"

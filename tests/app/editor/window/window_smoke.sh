@@ -89,16 +89,23 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
     "$meshfair" "$mesh" --size 800x600 >"$log" 2>&1 &
     pid=$!
     wait_first_frame "$pid" "$log" "$name"
-    sleep 0.5
     shot="$work/$name.png"
-    xwd -root -silent | convert xwd:- "$shot"
     # Not blank: the grey levels of the screen vary (a blank or single-colour screen has
-    # a standard deviation of 0).
-    deviation=$(convert "$shot" -colorspace gray -format '%[fx:standard_deviation]' info:)
-    if ! awk -v s="$deviation" 'BEGIN { exit !(s > 0.02) }'; then
-        echo "FAIL $name: the screenshot is blank (grey standard deviation $deviation)"
-        exit 1
-    fi
+    # a standard deviation of 0). The editor says the window is open once its first frame
+    # is swapped; should the X server not show it yet, the screen is looked at again until
+    # it does ($wait_limit s).
+    looks=0 end=$((SECONDS + wait_limit))
+    while :; do
+        deviation=$(xwd -root -silent |
+            convert xwd:- -write "$shot" -colorspace gray -format '%[fx:standard_deviation]' info:)
+        looks=$((looks + 1))
+        awk -v s="$deviation" 'BEGIN { exit !(s > 0.02) }' && break
+        if [ $SECONDS -ge $end ]; then
+            echo "FAIL $name: the screenshot is blank (grey standard deviation $deviation, $looks looks)"
+            exit 1
+        fi
+        nap
+    done
     window=$(xdotool search --sync --name "MeshFair - $name" | head -1)
     if [ $((count++ % 2)) = 0 ]; then
         how="Ctrl+Q"
@@ -113,5 +120,5 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
         echo "FAIL $name: not in the recent files"
         exit 1
     fi
-    echo "ok $name: $(head -1 "$log"), screenshot deviation $deviation, exit 0 on $how"
+    echo "ok $name: $(head -1 "$log"), screenshot deviation $deviation ($looks looks), exit 0 on $how"
 done

@@ -31,10 +31,8 @@ start_editor "$meshfair" "$work/noisy.obj" "$work/editor.log" "$work/widgets.tsv
 for round in 1 2; do
     for t in n k c r l m d; do
         key "$t"
-        xdotool mousemove --window "$win" 250 250
-        sleep 0.05
-        xdotool mousemove --window "$win" 330 300
-        sleep 0.05
+        move_to 250 250 # each move seen by the tool before the next
+        move_to 330 300
         case "$round$t" in
             2m) # from the pins, in the view they were made in (N's drag orbited)
                 key 1 && key Home && key m && drag 400 390 430 360 4 ;;
@@ -121,9 +119,12 @@ type_text "renamed-scan.obj"
 key Return
 wait_line "command save: ok" 2
 [ -f "$work/renamed-scan.obj" ] || fail "Save As wrote no renamed-scan.obj"
-sleep 0.3
-title=$(xdotool getwindowname "$win")
-case "$title" in *renamed-scan.obj*) ;; *) fail "the title is '$title' after Save As" ;; esac
+# The title, set after the frame that saved is drawn: until it names the new file.
+end=$((SECONDS + wait_limit))
+while title=$(xdotool getwindowname "$win") && [[ $title != *renamed-scan.obj* ]]; do
+    [ $SECONDS -lt $end ] || fail "the title is '$title' after Save As"
+    nap
+done
 cp "$work/renamed-scan.obj" "$work/before-second-run.obj"
 key space
 wait_line "run stopped" 2
