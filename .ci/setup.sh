@@ -152,8 +152,16 @@ find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --d
 phase "formatting"
 echo "The ten slowest tests:"
 # ctest's lines: "  3/415 Test  #12: NAME .......   Passed   35.21 sec"
-sed -n 's/^ *[0-9]*\/[0-9]* Test *#[0-9]*: \(.*[^ .]\) \.* *[^ ]* *\([0-9.]*\) sec$/\2\t\1/p' "$ctest_log" |
-    sort -t$'\t' -k1,1 -g -r | head -10 | awk -F'\t' '{ printf "  %7.1f s  %s\n", $1, $2 }'
+awk '{
+    if (!match($0, /Test +#[0-9]+: /)) next
+    rest = substr($0, RSTART + RLENGTH)
+    n = split(rest, field, " ")
+    if (field[n] != "sec") next
+    name = rest
+    sub(/ \.+ .*$/, "", name)
+    printf "%s\t%s\n", field[n - 1], name
+}' "$ctest_log" | sort -t$'\t' -k1,1 -g -r | head -10 |
+    awk -F'\t' '{ printf "  %7.1f s  %s\n", $1, $2 }'
 print_phases
 if [ "$status" != 0 ]; then
     echo "The test command FAILED (see above)." >&2
