@@ -35,7 +35,11 @@ packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libc
     python3-pytest munge slurm-wlm)
 # The gate needs clang with its sanitizer runtimes and OpenMP library (ASan, UBSan,
 # libFuzzer, TSan with Archer) and clang-tidy.
-[ "$mode" = check ] && packages+=(clang clang-tidy libclang-rt-14-dev libomp-14-dev)
+# .ci/run runs `test` with MESHFAIR_GATE_BESIDE=1, then `check`: the gate's first build
+# then starts beside the tests (below), so its packages are installed with theirs.
+beside_gate=${MESHFAIR_GATE_BESIDE:-0}
+[ "$mode" = check ] || { [ "$mode" = test ] && [ "$beside_gate" = 1 ]; } &&
+    packages+=(clang clang-tidy libclang-rt-14-dev libomp-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -138,6 +142,10 @@ if [ "$mode" = run ]; then
 fi
 
 phase "setup and release build"
+# Under .ci/run, the gate's sanitizer build starts beside the tests at the lowest priority:
+# they wait for windows, for the processes they kill and for each other, and leave idle
+# about a quarter of both cores, which the build takes without taking a core a test wants.
+[ "$beside_gate" = 1 ] && start_beside gate-sanitizer-build ./.ci/sanitize.sh build
 # Every test once, in the release build: unit, CLI, adversarial, saving with its killed
 # processes, golden images, the real-window tests, the Python module, the Slurm job array.
 # The longest start first (their COST), so that the run does not end on one of them alone.
@@ -150,6 +158,12 @@ echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror ||
     status=1
 phase "formatting"
+if [ "$beside_gate" = 1 ]; then
+    # Its failure is the gate's to report: `check` builds it again and says.
+    finish_beside gate-sanitizer-build >/dev/null 2>&1 ||
+        echo "The gate's sanitizer build failed beside the tests; ./.ci/setup.sh check says why."
+    phase "gate's sanitizer build (the rest)"
+fi
 echo "The ten slowest tests:"
 # ctest's lines: "  3/415 Test  #12: NAME .......   Passed   35.21 sec"
 awk '{
