@@ -86,6 +86,28 @@ struct Editing
     }
 };
 
+// A region, pins inside it moved away, anchors, centroids (if asked) and normals on
+// faces, each made of a rectangle's selection.
+void make_every_kind_of_set(Editing& b, bool centroids)
+{
+    EditorSession& s = b.session;
+    b.rectangle(120, 80, 300, 220);
+    REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
+    b.rectangle(150, 100, 180, 130);
+    REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+    s.dispatch(cmd::MovePins{"pins", {0.0, 0.004, 0.0}});
+    b.rectangle(200, 150, 260, 200);
+    REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+    s.dispatch(cmd::SetElements{ElementKind::Faces});
+    if (centroids)
+    {
+        b.rectangle(130, 160, 200, 215);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Centroid, "centroids"}));
+    }
+    b.rectangle(230, 90, 290, 140);
+    REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
+}
+
 // What `meshfair-cli smooth MESH -o OUT --recipe RECIPE` computes (app/cli/main.cpp,
 // run_smooth and smooth_one), in process: the recipe file parsed, the mesh read and the
 // recipe checked against it in the file's numbering, one LocalityRun of them run for the
@@ -179,19 +201,7 @@ TEST_SUITE("Live solving")
         const fs::path dir = test::temp_dir();
         Editing b(dir, noisy_sphere());
         EditorSession& s = b.session;
-        // A region, pins inside it moved away, anchors, centroids and normals on faces.
-        b.rectangle(120, 80, 300, 220);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
-        b.rectangle(150, 100, 180, 130);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
-        s.dispatch(cmd::MovePins{"pins", {0.0, 0.004, 0.0}});
-        b.rectangle(200, 150, 260, 200);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
-        s.dispatch(cmd::SetElements{ElementKind::Faces});
-        b.rectangle(130, 160, 200, 215);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Centroid, "centroids"}));
-        b.rectangle(230, 90, 290, 140);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
+        make_every_kind_of_set(b, true);
         CHECK(s.problems().empty());
         SolverSettings settings = s.document().solver;
         settings.lambda = 0.4;
@@ -724,16 +734,7 @@ TEST_SUITE("Live solving")
         const fs::path dir = test::temp_dir();
         Editing b(dir, noisy_bunny());
         EditorSession& s = b.session;
-        b.rectangle(120, 80, 300, 220);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
-        b.rectangle(150, 100, 180, 130);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
-        s.dispatch(cmd::MovePins{"pins", {0.0, 0.004, 0.0}});
-        b.rectangle(200, 150, 260, 200);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
-        s.dispatch(cmd::SetElements{ElementKind::Faces});
-        b.rectangle(230, 90, 290, 140);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
+        make_every_kind_of_set(b, false);
         CHECK(s.problems().empty());
         SolverSettings settings = s.document().solver;
         settings.lambda = 0.4;
