@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "app/cli/report.h"
+#include "app/cli/smooth_file.h"
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/geometry/noise.h"
@@ -39,46 +40,10 @@
 namespace {
 
 using namespace meshfair;
-using Clock = std::chrono::steady_clock;
 
 constexpr int kExitInput = 2;
 constexpr int kExitWrite = 3;
 constexpr int kExitInternal = 1;
-
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-//! Output encoding: what the user asked, else the input's own encoding when the format
-//! stays the same (so binary STL stays binary and ASCII stays exact), else binary.
-io::WriteOptions output_options(const std::string& requested, io::Format out_format,
-                                const io::ReadReport& input, bool keep_normals)
-{
-    io::WriteOptions options;
-    options.normals = keep_normals ? io::Normals::Keep : io::Normals::Recompute;
-    if (requested == "ascii")
-        options.encoding = io::Encoding::Ascii;
-    else if (requested == "binary")
-        options.encoding = io::Encoding::BinaryLittleEndian;
-    else if (requested == "binary-be")
-        options.encoding = io::Encoding::BinaryBigEndian;
-    else if (out_format == input.format)
-        options.encoding = input.encoding;
-    return options;
-}
-
-//! Writes the mesh with its attributes and returns the writer's notes: what the target
-//! format cannot hold, so nothing is lost silently.
-std::vector<std::string> write_output(const Mesh& mesh, const io::MeshAttributes& attributes,
-                                      const std::string& path, io::Format format,
-                                      const io::WriteOptions& options)
-{
-    std::vector<std::string> notes;
-    io::write_file_atomically(path,
-                              io::write_mesh_data(mesh, format, options, &attributes, &notes));
-    return notes;
-}
 
 //! The writer's notes on stderr, naming the file.
 void print_output_notes(const std::vector<std::string>& notes, const std::string& path)
@@ -132,75 +97,6 @@ struct SmoothOptions
     bool keep_normals = false;
 };
 
-//! Reads `mesh_path`, smooths it with `recipe` (checked first, in the file's numbering;
-//! `recipe_name` names the recipe file in errors) in the locality numbering, writes
-//! `out_path` atomically and returns the report. Throws what the readers, the recipe
-//! check and the writer throw.
-nlohmann::json smooth_one(const std::string& mesh_path, const std::string& out_path,
-                          const Recipe& recipe, const std::string& recipe_name,
-                          const std::string& encoding, bool keep_normals)
-{
-    const io::Format out_format = io::format_from_path(out_path); // refuse before working
-    const auto t_read = Clock::now();
-    io::ReadReport read_report;
-    io::MeshAttributes attributes; // in the file's numbering, as the output is written
-    Mesh mesh = io::read_mesh(mesh_path, &read_report, &attributes);
-    const double read_seconds = seconds_since(t_read);
-
-    const auto t_setup = Clock::now();
-    // Check the recipe in the file's numbering, so errors name the file's indices.
-    try
-    {
-        check_recipe(recipe, mesh);
-    }
-    catch (const RecipeError& e)
-    {
-        throw RecipeError(e.key(), e.message(), recipe_name);
-    }
-    catch (const InvalidInputError& e)
-    {
-        throw InvalidInputError("'" + mesh_path + "': " + e.what()); // name the mesh at fault
-    }
-    nlohmann::json report;
-    double setup_seconds = 0, solve_seconds = 0;
-    // Solve in the locality numbering (neighbours near each other in memory): the one copy
-    // of the mesh is renumbered in place and back before writing, so the output, the
-    // recipe and the report keep the file's numbering (LocalityRun, as the editor runs).
-    LocalityRun::Released solved;
-    {
-        // The solver's data lives in this scope only: it is freed before the output is
-        // written.
-        LocalityRun run(std::move(mesh), recipe);
-        setup_seconds = seconds_since(t_setup);
-
-        const auto t_solve = Clock::now();
-        const SmoothResult result = meshfair::run(run.session());
-        solve_seconds = seconds_since(t_solve);
-        solved = std::move(run).release();
-        validate_mesh(solved.mesh); // never write garbage: every coordinate is still finite
-        report =
-            cli::smooth_report(solved.mesh, run.topology(), run.session(), result, read_report);
-    }
-    const auto t_back = Clock::now();
-    mesh = file_order_mesh(std::move(solved));
-    solve_seconds += seconds_since(t_back);
-
-    const auto t_write = Clock::now();
-    const std::vector<std::string> output_notes =
-        write_output(mesh, attributes, out_path, out_format,
-                     output_options(encoding, out_format, read_report, keep_normals));
-    const double write_seconds = seconds_since(t_write);
-    report["attributes"] = io::describe_attributes(attributes);
-    report["output_notes"] = output_notes;
-
-    report["seconds"] = {{"read", read_seconds},
-                         {"setup", setup_seconds},
-                         {"solve", solve_seconds},
-                         {"write", write_seconds}};
-    report["peak_memory_bytes"] = cli::peak_resident_bytes();
-    return report;
-}
-
 int run_smooth(const SmoothOptions& o)
 {
     set_thread_count(o.threads);
@@ -230,7 +126,7 @@ int run_smooth(const SmoothOptions& o)
         recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
 
     const nlohmann::json report =
-        smooth_one(o.mesh, o.out, recipe, o.recipe, o.encoding, o.keep_normals);
+        cli::smooth_file(o.mesh, o.out, recipe, o.recipe, o.encoding, o.keep_normals);
     print_output_notes(report["output_notes"].get<std::vector<std::string>>(), o.out);
     if (!o.report.empty())
         write_text_atomically(o.report, report.dump(2) + "\n");
@@ -315,8 +211,8 @@ int run_batch(const BatchOptions& o)
         BatchStatus status = BatchStatus::Ok;
         try
         {
-            line["report"] = smooth_one(mesh, outputs[static_cast<size_t>(k)], recipe, o.recipe,
-                                        o.encoding, o.keep_normals);
+            line["report"] = cli::smooth_file(mesh, outputs[static_cast<size_t>(k)], recipe,
+                                              o.recipe, o.encoding, o.keep_normals);
             line["output"] = outputs[static_cast<size_t>(k)];
         }
         catch (const InvalidInputError& e)
@@ -370,8 +266,8 @@ int run_convert(const ConvertOptions& o)
     const Mesh mesh = io::read_mesh(o.mesh, &read_report, &attributes);
     const io::Format out_format = io::format_from_path(o.out);
     print_output_notes(
-        write_output(mesh, attributes, o.out, out_format,
-                     output_options(o.encoding, out_format, read_report, o.keep_normals)),
+        cli::write_output(mesh, attributes, o.out, out_format,
+                          cli::output_options(o.encoding, out_format, read_report, o.keep_normals)),
         o.out);
     return 0;
 }
@@ -398,8 +294,8 @@ int run_noise(const NoiseOptions& o)
                                 "length) and this mesh has none of positive length");
     add_gaussian_noise(mesh, o.sigma * unit, o.seed);
     print_output_notes(
-        write_output(mesh, attributes, o.out, out_format,
-                     output_options(o.encoding, out_format, read_report, o.keep_normals)),
+        cli::write_output(mesh, attributes, o.out, out_format,
+                          cli::output_options(o.encoding, out_format, read_report, o.keep_normals)),
         o.out);
     return 0;
 }

@@ -19,6 +19,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 
+#include "app/cli/smooth_file.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/live_solver.h"
 #include "app/editor/offscreen.h"
@@ -108,21 +109,17 @@ void make_every_kind_of_set(Editing& b, bool centroids)
     REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
 }
 
-// What `meshfair-cli smooth MESH -o OUT --recipe RECIPE` computes (app/cli/main.cpp,
-// run_smooth and smooth_one), in process: the recipe file parsed, the mesh read and the
-// recipe checked against it in the file's numbering, one LocalityRun of them run for the
-// recipe's iterations, the result renumbered back to the file's order. (The executable then
-// writes it; the end-to-end case below holds the two to the same bits.)
+// What `meshfair-cli smooth MESH -o OUT --recipe RECIPE` writes, in process: the recipe
+// file parsed and the CLI's own smooth_file (app/cli/smooth_file.h: the mesh read, the
+// recipe checked in the file's numbering, one LocalityRun, the result written in the
+// file's order), its output read back. The end-to-end case below holds it to the
+// executable's bits.
 std::vector<Scalar> cli_positions(const fs::path& mesh, const fs::path& recipe)
 {
-    const Recipe r = read_recipe(recipe.string());
-    Mesh m = io::read_mesh(mesh.string());
-    check_recipe(r, m);
-    LocalityRun run(std::move(m), r);
-    meshfair::run(run.session());
-    LocalityRun::Released solved = std::move(run).release();
-    validate_mesh(solved.mesh);
-    return file_order_mesh(std::move(solved)).positions;
+    const fs::path out = recipe.parent_path() / "in-process.obj";
+    cli::smooth_file(mesh.string(), out.string(), read_recipe(recipe.string()), recipe.string(), "",
+                     false);
+    return io::read_mesh(out.string()).positions;
 }
 
 // The real meshfair-cli smooth on `mesh` with the recipe: the positions it writes.

@@ -493,31 +493,51 @@ glm::dquat oblique()
            glm::angleAxis(glm::radians(-25.0), glm::dvec3(1, 0, 0));
 }
 
+std::string projection_name(Projection projection)
+{
+    return projection == Projection::Perspective ? "perspective" : "orthographic";
+}
+
+// Adds the front and then an oblique view of the whole of `box` in a width x height view,
+// with picks at the given stride; returns the oblique camera, where close-ups start.
+Camera add_front_and_oblique(std::vector<View>& views, const Box3& box, Projection projection,
+                             int width, int height, int stride)
+{
+    const std::string name = projection_name(projection);
+    Camera c;
+    c.projection = projection;
+    c.frame(box, double(width) / height);
+    views.push_back({"front, " + name, c, ViewRect::whole(width, height), stride});
+    c.rotation = oblique();
+    views.push_back({"oblique, " + name, c, ViewRect::whole(width, height), stride});
+    return c;
+}
+
+// Adds the second view (the oblique perspective one) again, as the part `rect` of a larger
+// framebuffer.
+void add_offset_copy(std::vector<View>& views, const ViewRect& rect)
+{
+    View offset = views[1];
+    offset.name = "oblique, perspective, offset in the framebuffer";
+    offset.rect = rect;
+    views.push_back(offset);
+}
+
 // The front and an oblique view of the whole mesh, and a close-up of the oblique one with
 // part of the mesh outside, each in perspective and orthographic; the oblique perspective
 // view again as the right part of a larger framebuffer.
 std::vector<View> standard_views(const Mesh& mesh)
 {
     const Box3 box = app::bounding_box(mesh.positions);
-    const double aspect = double(kWidth) / kHeight;
     std::vector<View> views;
     for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
     {
-        const std::string name =
-            projection == Projection::Perspective ? "perspective" : "orthographic";
-        Camera c;
-        c.projection = projection;
-        c.frame(box, aspect);
-        views.push_back({"front, " + name, c, ViewRect::whole(kWidth, kHeight)});
-        c.rotation = oblique();
-        views.push_back({"oblique, " + name, c, ViewRect::whole(kWidth, kHeight)});
+        Camera c = add_front_and_oblique(views, box, projection, kWidth, kHeight, 2);
         c.zoom(0.45, 0.3 * kWidth, 0.35 * kHeight, kWidth, kHeight);
-        views.push_back({"close-up, " + name, c, ViewRect::whole(kWidth, kHeight)});
+        views.push_back(
+            {"close-up, " + projection_name(projection), c, ViewRect::whole(kWidth, kHeight)});
     }
-    View offset = views[1];
-    offset.name = "oblique, perspective, offset in the framebuffer";
-    offset.rect = ViewRect{100, 80, 30, 20, kWidth, kHeight};
-    views.push_back(offset);
+    add_offset_copy(views, ViewRect{100, 80, 30, 20, kWidth, kHeight});
     return views;
 }
 
@@ -563,14 +583,7 @@ TEST_SUITE("Renderer contract")
         std::vector<View> views;
         for (const Projection projection : {Projection::Perspective, Projection::Orthographic})
         {
-            const std::string name =
-                projection == Projection::Perspective ? "perspective" : "orthographic";
-            Camera c;
-            c.projection = projection;
-            c.frame(box, double(w) / h);
-            views.push_back({"front, " + name, c, ViewRect::whole(w, h), 0});
-            c.rotation = oblique();
-            views.push_back({"oblique, " + name, c, ViewRect::whole(w, h), 0});
+            Camera c = add_front_and_oblique(views, box, projection, w, h, 0);
             c.frame(box, double(kWidth) / kHeight);
             Index top = 0;
             const auto at = [&](Index v) {
@@ -582,12 +595,10 @@ TEST_SUITE("Renderer contract")
                     top = v;
             c.fov_y_degrees = 1;
             c.target = at(top) - 0.25 * c.view_height() * c.up(); // a quarter from the top
-            views.push_back({"close-up, " + name, c, ViewRect::whole(kWidth, kHeight), 6});
+            views.push_back({"close-up, " + projection_name(projection), c,
+                             ViewRect::whole(kWidth, kHeight), 6});
         }
-        View offset = views[1];
-        offset.name = "oblique, perspective, offset in the framebuffer";
-        offset.rect = ViewRect{320, 240, 40, 30, w, h};
-        views.push_back(offset);
+        add_offset_copy(views, ViewRect{320, 240, 40, 30, w, h});
         check_views(bunny, views);
     }
 }
