@@ -18,8 +18,7 @@ print_phases() {
 
 # A job started beside others runs at the lowest priority, in a process group of its own
 # (stopped if the script stops), with its output in a log printed when it ends: it takes
-# only the core time the others leave idle (tests waiting on each other, the last fuzz
-# target alone).
+# only the core time the others leave idle (the fuzz replays, the last fuzz target alone).
 logs=build/ci-logs
 mkdir -p "$logs"
 declare -A beside=()

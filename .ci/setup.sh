@@ -22,8 +22,9 @@ cd "$root"
 # libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else. The
 # editor needs GLFW, OSMesa, GLM, Dear ImGui and stb; xvfb and xauth give it a display
 # where there is none. pybind11 and NumPy build the Python module for Debian's own Python
-# (/usr/bin/python3, for which python3-numpy and python3-pytest are).
-packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
+# (/usr/bin/python3, for which python3-numpy and python3-pytest are). The builds use Ninja;
+# make is for the fuzz campaigns' own build (tests/fuzz/campaign.sh).
+packages=(cmake ninja-build make g++ pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
     doctest-dev libeigen3-dev libopenmesh-dev libglfw3-dev libosmesa6-dev libglm-dev
     libimgui-dev libstb-dev xvfb xauth pybind11-dev python3-dev python3-numpy)
 # Tests also need: clang-format (style), strace (fault injection in the save tests and the
@@ -35,11 +36,7 @@ packages=(cmake g++ make pkg-config libtinyobjloader-dev nlohmann-json3-dev libc
     python3-pytest munge slurm-wlm)
 # The gate needs clang with its sanitizer runtimes and OpenMP library (ASan, UBSan,
 # libFuzzer, TSan with Archer) and clang-tidy.
-# .ci/run runs `test` with MESHFAIR_GATE_BESIDE=1, then `check`: the gate's first build
-# then starts beside the tests (below), so its packages are installed with theirs.
-beside_gate=${MESHFAIR_GATE_BESIDE:-0}
-[ "$mode" = check ] || { [ "$mode" = test ] && [ "$beside_gate" = 1 ]; } &&
-    packages+=(clang clang-tidy libclang-rt-14-dev libomp-14-dev)
+[ "$mode" = check ] && packages+=(clang clang-tidy libclang-rt-14-dev libomp-14-dev)
 
 missing=()
 for p in "${packages[@]}"; do
@@ -68,25 +65,26 @@ if [ "$mode" = check ]; then
     phase "setup"
     failed=()
     # 1. The in-process suites (core, app, render, bench) built with clang, ASan + UBSan
-    # and libstdc++ assertions; the fuzz targets' build beside their tests.
+    # and libstdc++ assertions, in one build with the fuzz targets.
     ./.ci/sanitize.sh build || failed+=("sanitizer build")
-    phase "sanitizer build"
-    start_beside fuzz-build ./.ci/fuzz.sh --build
+    phase "sanitizer build (tests and fuzz targets)"
     ./.ci/sanitize.sh test || failed+=("sanitizer tests")
     phase "sanitizer tests"
-    finish_beside fuzz-build || failed+=("fuzz build")
-    phase "fuzz build (the rest)"
     # 2. Every fuzz target: its whole corpus replayed (tests/fuzz/corpus, tests/adversarial,
-    # generated seeds), then fuzzed ${MESHFAIR_FUZZ_SECONDS:-30} s; clang-tidy (bugprone-*)
-    # on core/ beside them.
+    # generated seeds), then fuzzed ${MESHFAIR_FUZZ_SECONDS:-20} s; beside them, where they
+    # leave a core idle (the replays, the last target alone), clang-tidy on core/ and the
+    # ThreadSanitizer build.
     start_beside clang-tidy ./.ci/tidy.sh
-    ./.ci/fuzz.sh || failed+=("fuzzing")
+    start_beside thread-sanitizer-build ./.ci/tsan.sh build
+    MESHFAIR_FUZZ_BUILD_DIR=build-asan MESHFAIR_FUZZ_SECONDS=${MESHFAIR_FUZZ_SECONDS:-20} \
+        ./.ci/fuzz.sh || failed+=("fuzzing")
     phase "fuzz replay and campaigns"
     finish_beside clang-tidy || failed+=("clang-tidy")
-    phase "clang-tidy (the rest)"
+    finish_beside thread-sanitizer-build || failed+=("thread-sanitizer build")
+    phase "clang-tidy, ThreadSanitizer build (the rest)"
     # 3. The live solver, the autosave and the recovery under ThreadSanitizer.
-    ./.ci/tsan.sh || failed+=("thread sanitizer")
-    phase "thread-sanitizer build and tests"
+    ./.ci/tsan.sh test || failed+=("thread sanitizer")
+    phase "thread-sanitizer tests"
     print_phases
     if [ ${#failed[@]} -gt 0 ]; then
         echo "The deep gate FAILED: ${failed[*]}." >&2
@@ -100,8 +98,10 @@ fi
 build=build
 # Unity translation units: each header is compiled once per batch of files, not once per
 # file, which takes about 30 % off a clean build.
-cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
-    -DMESHFAIR_WERROR=ON -DPython3_EXECUTABLE=/usr/bin/python3 >/dev/null
+# shellcheck source=.ci/clang_build.sh
+source .ci/clang_build.sh
+ninja_configure "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_UNITY_BUILD=ON \
+    -DMESHFAIR_WERROR=ON -DPython3_EXECUTABLE=/usr/bin/python3
 if [ "$mode" = run ]; then
     cmake --build "$build" -j"$(nproc)" --target meshfair-cli meshfair meshfair_python
 else
@@ -142,10 +142,6 @@ if [ "$mode" = run ]; then
 fi
 
 phase "setup and release build"
-# Under .ci/run, the gate's sanitizer build starts beside the tests at the lowest priority:
-# they wait for windows, for the processes they kill and for each other, and leave idle
-# about a quarter of both cores, which the build takes without taking a core a test wants.
-[ "$beside_gate" = 1 ] && start_beside gate-sanitizer-build ./.ci/sanitize.sh build
 # Every test once, in the release build: unit, CLI, adversarial, saving with its killed
 # processes, golden images, the real-window tests, the Python module, the Slurm job array.
 # The longest start first (their COST), so that the run does not end on one of them alone.
@@ -158,12 +154,6 @@ echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror ||
     status=1
 phase "formatting"
-if [ "$beside_gate" = 1 ]; then
-    # Its failure is the gate's to report: `check` builds it again and says.
-    finish_beside gate-sanitizer-build >/dev/null 2>&1 ||
-        echo "The gate's sanitizer build failed beside the tests; ./.ci/setup.sh check says why."
-    phase "gate's sanitizer build (the rest)"
-fi
 echo "The ten slowest tests:"
 # ctest's lines: "  3/415 Test  #12: NAME .......   Passed   35.21 sec"
 awk '{

@@ -33,9 +33,14 @@ fuzz_cxx() {
 }
 
 # fuzz_build_engine DIR ENGINE BUILD_TYPE: configures (once) and builds the fuzz targets
-# and the seed generator; incremental.
+# and the seed generator; incremental. A DIR configured by .ci/sanitize.sh (the sanitized
+# tests' build, MESHFAIR_FUZZ_ENGINE=shared) keeps its configuration: only built.
 fuzz_build_engine() {
     local dir=$1 engine=$2 type=$3 cxx
+    if grep -q '^MESHFAIR_FUZZ_ENGINE:STRING=shared$' "$dir/CMakeCache.txt" 2>/dev/null; then
+        cmake --build "$dir" -j"$(nproc)" --target fuzz_all
+        return
+    fi
     cxx=$(fuzz_cxx) || return 1
     mkdir -p "$dir"
     cmake -S "$fuzz_root" -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DCMAKE_CXX_COMPILER="$cxx" \
