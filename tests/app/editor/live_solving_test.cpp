@@ -134,6 +134,20 @@ std::vector<Scalar> cli_executable_positions(const fs::path& mesh, const fs::pat
     return io::read_mesh(out.string()).positions;
 }
 
+// Steps on the caller's thread, then frames on the solver's (the settings' steps per frame
+// each): the shape made of both is reproducible from the base.
+void step_then_play(EditorSession& s, int steps, int frames)
+{
+    const int per_frame = s.document().solver.iterations_per_frame;
+    s.dispatch(cmd::Step{steps});
+    s.dispatch(cmd::Play{frames});
+    while (s.playing())
+        s.take_frame();
+    CHECK(s.document().steps_from_base == steps + frames * per_frame);
+    CHECK(s.document().reproducible);
+    CHECK(s.document().mesh.positions != s.document().base_positions);
+}
+
 // What undo must restore, compared as a whole.
 struct State
 {
@@ -206,15 +220,7 @@ TEST_SUITE("Live solving")
         settings.centroid_mu = 0.5;
         settings.iterations_per_frame = 4;
         s.dispatch(cmd::SetSolverSettings{settings});
-
-        // Steps on the caller's thread, then frames on the solver's.
-        s.dispatch(cmd::Step{6});
-        s.dispatch(cmd::Play{5});
-        while (s.playing())
-            s.take_frame();
-        CHECK(s.document().steps_from_base == 6 + 5 * 4);
-        CHECK(s.document().reproducible);
-        CHECK(s.document().mesh.positions != s.document().base_positions);
+        step_then_play(s, 6, 5);
 
         const fs::path recipe = dir / "recipe.json";
         REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
@@ -737,14 +743,7 @@ TEST_SUITE("Live solving")
         settings.lambda = 0.4;
         settings.iterations_per_frame = 3;
         s.dispatch(cmd::SetSolverSettings{settings});
-        // Steps on the caller's thread, then frames on the solver's.
-        s.dispatch(cmd::Step{4});
-        s.dispatch(cmd::Play{3});
-        while (s.playing())
-            s.take_frame();
-        CHECK(s.document().steps_from_base == 4 + 3 * 3);
-        CHECK(s.document().reproducible);
-        CHECK(s.document().mesh.positions != s.document().base_positions);
+        step_then_play(s, 4, 3);
 
         const fs::path recipe = dir / "recipe.json";
         REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
