@@ -87,16 +87,24 @@ struct Editing
     }
 };
 
-// A region, pins inside it moved away, anchors, centroids (if asked) and normals on
-// faces, each made of a rectangle's selection.
-void make_every_kind_of_set(Editing& b, bool centroids)
+// A region "patch" and pins "pins" inside it moved by `offset`, each made of a
+// rectangle's selection.
+void make_region_and_moved_pins(Editing& b, const Vec3& offset)
 {
     EditorSession& s = b.session;
     b.rectangle(120, 80, 300, 220);
     REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
     b.rectangle(150, 100, 180, 130);
     REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
-    s.dispatch(cmd::MovePins{"pins", {0.0, 0.004, 0.0}});
+    s.dispatch(cmd::MovePins{"pins", offset});
+}
+
+// A region, pins inside it moved away, anchors, centroids (if asked) and normals on
+// faces, each made of a rectangle's selection.
+void make_every_kind_of_set(Editing& b, bool centroids)
+{
+    EditorSession& s = b.session;
+    make_region_and_moved_pins(b, {0.0, 0.004, 0.0});
     b.rectangle(200, 150, 260, 200);
     REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
     s.dispatch(cmd::SetElements{ElementKind::Faces});
@@ -650,11 +658,7 @@ TEST_SUITE("Live solving")
         const fs::path dir = test::temp_dir();
         Editing b(dir, noisy_sphere());
         EditorSession& s = b.session;
-        b.rectangle(120, 80, 300, 220);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
-        b.rectangle(150, 100, 180, 130);
-        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
-        s.dispatch(cmd::MovePins{"pins", {0.001, 0.0, 0.0}});
+        make_region_and_moved_pins(b, {0.001, 0.0, 0.0});
         s.dispatch(cmd::Step{4});
         const fs::path recipe = dir / "recipe.json";
         REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
