@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # Fuzzing CI job: builds the libFuzzer targets of tests/fuzz with clang (ASan + UBSan) in
-# build-fuzz/ (incremental), then for every target replays its whole seed corpus (the
+# build-fuzz/ (incremental; MESHFAIR_FUZZ_BUILD_DIR names another, such as the gate's
+# build-asan, configured by .ci/sanitize.sh), then for every target replays its whole seed corpus (the
 # committed tests/fuzz/corpus/<target>/, tests/adversarial/ and library-generated seeds)
 # and fuzzes it for MESHFAIR_FUZZ_SECONDS (default 30) seconds into the scratch corpus
 # build-fuzz/corpus/<target>/ (seeds that crashed in the replay are left out). Fails on any
@@ -126,7 +127,7 @@ echo "== fuzzing summary (logs in $logs)"
 printf '%s\n' "${summaries[@]}"
 if [ "$status" -ne 0 ]; then
     echo
-    echo "FAILED; reproducers (run: build-fuzz/tests/fuzz/TARGET FILE):"
+    echo "FAILED; reproducers (run: $(fuzz_binary "$fuzz_build" TARGET) FILE):"
     printf '  %s\n' "${reproducers[@]}"
 fi
 exit "$status"
