@@ -40,7 +40,7 @@ packages=(cmake ninja-build make g++ pkg-config libtinyobjloader-dev nlohmann-js
 
 missing=()
 for p in "${packages[@]}"; do
-    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+    [ "$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null)" = "install ok installed" ] || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
     echo "Installing missing Debian packages: ${missing[*]}"
@@ -150,7 +150,7 @@ mkdir -p "$(dirname "$ctest_log")"
 status=0
 (cd "$build" && ctest --output-on-failure -j"$(nproc)") 2>&1 | tee "$ctest_log" || status=$?
 phase "tests (ctest, $(nproc) at a time)"
-echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | head -1))"
+echo "Checking formatting (clang-format $(clang-format --version | grep -o '[0-9][0-9.]*' | awk 'NR == 1'))"
 find app core tests -name '*.cpp' -o -name '*.h' | sort | xargs clang-format --dry-run -Werror ||
     status=1
 phase "formatting"
@@ -164,7 +164,7 @@ awk '{
     name = rest
     sub(/ \.+ .*$/, "", name)
     printf "%s\t%s\n", field[n - 1], name
-}' "$ctest_log" | sort -t$'\t' -k1,1 -g -r | head -10 |
+}' "$ctest_log" | sort -t$'\t' -k1,1 -g -r | awk 'NR <= 10' |
     awk -F'\t' '{ printf "  %7.1f s  %s\n", $1, $2 }'
 print_phases
 if [ "$status" != 0 ]; then

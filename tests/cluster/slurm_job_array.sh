@@ -96,10 +96,10 @@ pids+=($!)
 slurmd -D -N meshfair-node &
 pids+=($!)
 for _ in $(seq 100); do
-    sinfo -h -o %T 2>/dev/null | grep -q idle && break
+    [[ "$(sinfo -h -o %T 2>/dev/null)" == *idle* ]] && break
     sleep 0.2
 done
-sinfo -h -o %T | grep -q idle || fail "the node did not come up: $(sinfo 2>&1)"
+[[ "$(sinfo -h -o %T)" == *idle* ]] || fail "the node did not come up: $(sinfo 2>&1)"
 
 # --- The scans: 7 PLY files (the bunny, noisy copies, a quad cube), one of
 # them malformed (a face past the last vertex).

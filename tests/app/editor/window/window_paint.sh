@@ -140,7 +140,7 @@ red=$(count 'r > 0.5 && g < 0.35 && b < 0.35' "$work/anchors.png")
 set_paint click_widget "smooth weights"
 drag 360 395 420 400 6
 wait_line "^gesture paint" $((strokes + 3))
-last_stroke | grep -q '"mode":"smooth"' || fail "no smoothing stroke: $(last_stroke)"
+[[ "$(last_stroke)" == *'"mode":"smooth"'* ]] || fail "no smoothing stroke: $(last_stroke)"
 # Back to the smoothing brush on the brush's region, with more steps a stroke.
 set_paint click_widget "smooth brush"
 click_widget "paint set"

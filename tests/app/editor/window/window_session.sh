@@ -115,7 +115,7 @@ wait_exit "$pid" "$log" "$name" "Discard and quit after the import"
 cmp "$work/cli.obj" "$work/scan.obj" ||
     fail "meshfair-cli smooth with the exported recipe does not give the saved file"
 cmp -s "$work/base.obj" "$work/scan.obj" && fail "the saved file is the base: nothing was smoothed"
-steps=$(grep -o '"iterations": [0-9]*' "$work/session-recipe.json" | head -1 | grep -o '[0-9]*$')
+steps=$(grep -o '"iterations": [0-9]*' "$work/session-recipe.json" | awk 'NR == 1' | grep -o '[0-9]*$')
 [ "$steps" -gt 0 ] || fail "the exported recipe runs no step"
 # The imported recipe gives the same sets and settings (its steps: none since the reopen).
 [ -f "$work/reimported.json" ] || fail "no reimported.json written: $(ls "$work")"

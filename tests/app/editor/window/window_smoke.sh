@@ -106,7 +106,7 @@ for mesh in "$bunny" "$work/bunny.off" "$work/bunny.ply" "$work/bunny.stl" \
         fi
         nap
     done
-    window=$(xdotool search --sync --name "MeshFair - $name" | head -1)
+    window=$(xdotool search --sync --name "MeshFair - $name" | awk 'NR == 1')
     if [ $((count++ % 2)) = 0 ]; then
         how="Ctrl+Q"
         xdotool windowfocus --sync "$window"

@@ -71,7 +71,7 @@ start_editor() {
     "$meshfair" "$mesh" --size 1000x700 --trace --widget-map "$map" "$@" >"$log" 2>&1 &
     pid=$!
     wait_first_frame "$pid" "$log" "$name"
-    win=$(xdotool search --sync --name "MeshFair - $(basename "$mesh")" | head -1)
+    win=$(xdotool search --sync --name "MeshFair - $(basename "$mesh")" | awk 'NR == 1')
     xdotool windowfocus --sync "$win"
     end=$((SECONDS + wait_limit))
     until [ -s "$map" ]; do
