@@ -124,8 +124,22 @@ void SolverController::restart_if_needed()
 bool SolverController::update()
 {
     restart_if_needed();
-    bool fresh = false;
+    bool fresh = take_positions();
+    if (run_open_ && !solver_.status().playing && solver_.status().ready)
+    {
+        // The solver may have published the run's last frame after the take above (it
+        // publishes and stops in one step): those positions belong to this run's undo step.
+        fresh = take_positions() || fresh;
+        run_open_ = false; // converged, or the frames asked for are done
+        record_segment();
+    }
+    return fresh;
+}
+
+bool SolverController::take_positions()
+{
     int steps = 0;
+    bool fresh = false;
     if (solver_.take(incoming_, display_, steps))
     {
         // The step count of these positions, taken with them: a frame the solver finishes
@@ -140,11 +154,6 @@ bool SolverController::update()
         if (seen_)
             seen_->positions = document_.versions.positions;
         fresh = true;
-    }
-    if (run_open_ && !solver_.status().playing && solver_.status().ready)
-    {
-        run_open_ = false; // converged, or the frames asked for are done
-        record_segment();
     }
     return fresh;
 }

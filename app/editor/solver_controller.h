@@ -64,6 +64,9 @@ public:
 private:
     //! The run since it began (or since the last segment) as one undo step.
     void record_segment();
+    //! The solver's newest positions into the document, if it published any since the last
+    //! take; true when it did.
+    bool take_positions();
     void restart_if_needed();
     //! \brief Whether the current shape, made by `steps_from_base` steps of its own recipe,
     //! is what the current sets and settings give after as many steps.
