@@ -23,10 +23,14 @@ cd "$root"
 # editor needs GLFW, OSMesa, GLM, Dear ImGui and stb; xvfb and xauth give it a display
 # where there is none. pybind11 and NumPy build the Python module for Debian's own Python
 # (/usr/bin/python3, for which python3-numpy and python3-pytest are). The builds use Ninja;
-# make is for the fuzz campaigns' own build (tests/fuzz/campaign.sh).
+# make is for the fuzz campaigns' own build (tests/fuzz/campaign.sh). The direct method
+# factors with CHOLMOD (libsuitesparse-dev), whose supernodal kernels call BLAS: with
+# OpenBLAS installed Debian's alternatives choose it over the reference BLAS, several
+# times slower.
 packages=(cmake ninja-build make g++ pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
-    doctest-dev libeigen3-dev libopenmesh-dev libglfw3-dev libosmesa6-dev libglm-dev
-    libimgui-dev libstb-dev xvfb xauth pybind11-dev python3-dev python3-numpy)
+    doctest-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread libopenmesh-dev
+    libglfw3-dev libosmesa6-dev libglm-dev libimgui-dev libstb-dev xvfb xauth pybind11-dev
+    python3-dev python3-numpy)
 # Tests also need: clang-format (style), strace (fault injection in the save tests and the
 # files-opened check), xdotool, x11-apps, imagemagick and libx11-dev (the editor's
 # real-window tests: synthetic keys, a screenshot taken from outside, its pixels, a close

@@ -123,7 +123,9 @@ int run_smooth(const SmoothOptions& o)
     if (o.tolerance)
         recipe.tolerance = *o.tolerance;
     if (o.method)
-        recipe.method = *o.method == "jacobi" ? Method::Jacobi : Method::GradientDescent;
+        recipe.method = *o.method == "jacobi"   ? Method::Jacobi
+                        : *o.method == "direct" ? Method::Direct
+                                                : Method::GradientDescent;
 
     const nlohmann::json report =
         cli::smooth_file(o.mesh, o.out, recipe, o.recipe, o.encoding, o.keep_normals);
@@ -350,8 +352,11 @@ int main(int argc, char** argv)
         ->add_option("--tolerance", smooth.tolerance,
                      "Stop when the relative energy decrease falls below this (0 = off)")
         ->check(CLI::NonNegativeNumber);
-    smooth_cmd->add_option("--method", smooth.method, "jacobi (default) or gradient_descent")
-        ->check(CLI::IsMember({"jacobi", "gradient_descent"}));
+    smooth_cmd
+        ->add_option("--method", smooth.method,
+                     "jacobi (default: the paper's steps), direct (the minimizer, by sparse "
+                     "Cholesky) or gradient_descent")
+        ->check(CLI::IsMember({"jacobi", "direct", "gradient_descent"}));
     smooth_cmd->add_option("--report", smooth.report, "Write the JSON report here ('-' = stdout)");
     smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));

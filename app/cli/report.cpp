@@ -149,6 +149,21 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
             total += n;
         j["flip_guard"] = {{"shortened", result.shortened}, {"total", total}};
     }
+    if (const SparseCholesky* factor = session.factorization())
+    {
+        // The direct method: how close each solve came to the minimizer (the gradient over
+        // the free vertices relative to the input's), and what the factorization cost.
+        const FactorStats& f = factor->stats();
+        const Scalar diagonal = bounding_box(mesh.positions).diagonal();
+        j["direct"] = {
+            {"relative_gradient", result.gradients},
+            {"jacobi_displacement", diagonal > 0 ? result.jacobi_displacement / diagonal : 0},
+            {"unknowns", factor->size()},
+            {"factor_nonzeros", f.factor_nonzeros},
+            {"factor_megabytes", f.factor_bytes() / 1e6},
+            {"analyse_seconds", f.analyse_seconds},
+            {"factor_seconds", f.factor_seconds}};
+    }
     if (!session.normal_smoothing_trace().empty())
         j["normal_smoothing_energy"] = session.normal_smoothing_trace();
     j["notes"] = read_report.notes;
@@ -170,6 +185,17 @@ std::string smooth_summary(const Json& report, const std::string& output)
          format_number(t["setup"].get<double>()) + ", solve " +
          format_number(t["solve"].get<double>()) + ", write " +
          format_number(t["write"].get<double>()) + "\n";
+    if (report.contains("direct") && !report["direct"]["relative_gradient"].empty())
+        s += "direct: gradient " +
+             format_number(report["direct"]["relative_gradient"].back().get<double>()) +
+             " of the input's, Jacobi displacement " +
+             format_number(report["direct"]["jacobi_displacement"].get<double>()) +
+             " of the diagonal; factor of " +
+             format_number(report["direct"]["unknowns"].get<double>()) + " unknowns, " +
+             format_number(report["direct"]["factor_megabytes"].get<double>()) +
+             " MB, analysed in " +
+             format_number(report["direct"]["analyse_seconds"].get<double>()) + " s, factored in " +
+             format_number(report["direct"]["factor_seconds"].get<double>()) + " s\n";
     if (report.contains("flip_guard"))
         s += "flip guard: " + std::to_string(report["flip_guard"]["total"].get<long long>()) +
              " vertex steps shortened so that no face turns over\n";

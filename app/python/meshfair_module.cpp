@@ -210,6 +210,22 @@ public:
             run_->step();
     }
     py::dict energy() const { return energies_of(run_->energy()); }
+    //! The recipe's run on the kept positions, as meshfair-cli smooth runs it: with the
+    //! direct method, to the minimizer (reusing the factorization after new targets).
+    py::dict solve()
+    {
+        SmoothResult result;
+        {
+            py::gil_scoped_release unlocked;
+            result = run(run_->session());
+        }
+        py::dict d;
+        d["iterations"] = result.iterations;
+        d["stopped_by_tolerance"] = result.stopped_by_tolerance;
+        d["relative_gradient"] = result.gradients;
+        d["energy"] = energies_of(result.energies.back());
+        return d;
+    }
     Positions positions() const
     {
         std::vector<Scalar> x(run_->session().positions().size());
@@ -312,7 +328,14 @@ PYBIND11_MODULE(meshfair, m)
         .def(py::init<const Positions&, const py::object&, const py::object&>(), py::arg("V"),
              py::arg("F"), py::arg("recipe") = py::none())
         .def("step", &PySession::step, py::arg("steps") = 1,
-             "Runs steps generalized Jacobi steps on the kept positions.")
+             "Runs steps steps of the recipe's method on the kept positions (with \"method\": "
+             "\"direct\", each solves for the minimizer from where it starts).")
+        .def("solve", &PySession::solve,
+             "Runs the recipe on the kept positions as meshfair-cli smooth does: its "
+             "iterations, stopped by its tolerance; with \"method\": \"direct\", to the "
+             "minimizer, the factorization kept from the session's creation (new targets "
+             "only change the right-hand side). Returns the iterations, the relative gradient "
+             "after each (direct) and the final energy.")
         .def("energy", &PySession::energy,
              "The energy of the kept positions, by term, and its total.")
         .def_property_readonly("positions", &PySession::positions,

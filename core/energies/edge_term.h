@@ -6,6 +6,7 @@
 #include <cstring>
 #include <span>
 
+#include "core/solver/free_hessian.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -34,6 +35,15 @@ public:
     Scalar quadratic(std::span<const Scalar> dx) const { return energy(dx); }
     //! diagonal[i] += n_i for every vertex.
     void add_diagonal(std::span<Scalar> diagonal) const;
+    //! Column i of the half Hessian (the graph Laplacian L, E_L = sum_a x_a^T L x_a over
+    //! the coordinates a): n_i at i, -1 at each neighbour. The direct method's matrix.
+    void add_hessian_column(Index i, HessianColumn& column) const
+    {
+        const std::span<const Index> neighbors = topology_->neighbors(i);
+        column.add(i, static_cast<Scalar>(neighbors.size()));
+        for (const Index j : neighbors)
+            column.add(j, -1);
+    }
     //! rhs_i += sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;

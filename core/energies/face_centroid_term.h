@@ -9,6 +9,7 @@
 #include "core/energies/index_list.h"
 #include "core/geometry/face_geometry.h"
 #include "core/mesh/mesh.h"
+#include "core/solver/free_hessian.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -58,6 +59,7 @@ public:
     //! set_targets_to_centroids or the term's end.
     void use_centroids_of(std::span<const Scalar> x);
     const IndexList& faces() const { return faces_; }
+    bool constrains(Index f) const { return constrained_[f] != 0; }
     //! mu_f of a constrained face.
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
 
@@ -66,6 +68,23 @@ public:
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
+    //! Column i of the exact half Hessian: mu_f / n_f^2 between i and every vertex of each
+    //! constrained face of i (each corner counted: a vertex twice in a face, twice). Not
+    //! the Jacobi diagonal of the Paper denominator, which majorizes it: the direct method
+    //! solves for the minimizer itself.
+    void add_hessian_column(Index i, HessianColumn& column) const
+    {
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = topology_->face_of_corner(c);
+            if (!constrained_[f])
+                continue;
+            const auto n = static_cast<Scalar>(mesh_->face_size(f));
+            const Scalar a = face_weight(f) / (n * n);
+            for (const Index k : mesh_->face(f))
+                column.add(k, a);
+        }
+    }
     //! rhs_i += the residuals of the constrained faces of i, for each i in `vertices`.
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;

@@ -8,6 +8,7 @@
 
 #include "core/energies/index_list.h"
 #include "core/mesh/mesh.h"
+#include "core/solver/free_hessian.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -58,6 +59,26 @@ public:
                    std::span<Scalar> block) const;
     void add_rhs(std::span<const Scalar> x, std::span<const Scalar> normals,
                  std::span<const Index> vertices, std::span<Scalar> rhs) const;
+    //! Column i of the half Hessian for the normals u: for each constrained face f of i and
+    //! each of its pairs (i, j), j the corner before or after i, M_f = mu_f u_f u_f^T at i
+    //! and -M_f at j (the Jacobi block of add_block is the sum of those at i).
+    void add_hessian_column(Index i, std::span<const Scalar> normals, HessianColumn& column) const
+    {
+        for (const Index c : topology_->corners_of_vertex(i))
+        {
+            const Index f = walk_.face(c);
+            if (!all_faces_ && !constrained_[f])
+                continue;
+            const auto [prev, next] = walk_.neighbors(c, f);
+            const Scalar* u = &normals[3 * static_cast<std::ptrdiff_t>(f)];
+            const Scalar w = face_weight(f);
+            const Scalar m[6] = {w * u[0] * u[0], w * u[0] * u[1], w * u[0] * u[2],
+                                 w * u[1] * u[1], w * u[1] * u[2], w * u[2] * u[2]};
+            column.add_block(i, m, 2);
+            column.add_block(prev, m, -1);
+            column.add_block(next, m, -1);
+        }
+    }
     //! One vertex's part, for the fused step: r += sum_{f in F_N(i)} mu_f u_f u_f^T
     //! ((x_prev - x_i) + (x_next - x_i)), with prev and next i's neighbours in face f.
     void add_vertex_rhs(Index i, const Scalar* x, const Scalar* normals, Scalar* r) const

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/energies/index_list.h"
+#include "core/solver/free_hessian.h"
 #include "core/types.h"
 
 namespace meshfair {
@@ -57,6 +58,12 @@ public:
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
     Scalar quadratic(std::span<const Scalar> dx) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
+    //! Column i of the half Hessian: mu_i at i (A_S = D_S, diagonal).
+    void add_hessian_column(Index i, HessianColumn& column) const
+    {
+        if (const Scalar w = weight(i); w != 0)
+            column.add(i, w);
+    }
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
     //! One vertex's part: r[a] += mu_i (t_i - x_i)[a] (mu_i = 0 off the constrained set);

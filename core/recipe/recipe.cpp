@@ -311,6 +311,22 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                               "is not available with method \"taubin\" (the normals "
                               "have no lambda|mu pair)");
     }
+    if (r.method == Method::Direct)
+    {
+        if (r.optimal_step)
+            throw RecipeError("lambda",
+                              "\"optimal\" is not a step length of method \"direct\" "
+                              "(each of its steps solves for the minimizer)");
+        if (r.joint)
+            throw RecipeError("joint",
+                              "is not available with method \"direct\" yet (the normals "
+                              "of joint mode move with the positions; use \"jacobi\")");
+        if (r.volume)
+            throw RecipeError("volume",
+                              "is not available with method \"direct\" yet (the volume "
+                              "is a constraint the factorization does not hold; use "
+                              "\"jacobi\")");
+    }
 }
 
 Recipe renumber_recipe(const Recipe& recipe, std::span<const Index> new_vertex,

@@ -22,7 +22,13 @@ enum class Method
     GradientDescent, //!< dx = -1/2 dE/dx (unpreconditioned), for the paper's comparison
     //! Taubin's lambda|mu \cite taubin_1995: each step is a Jacobi step of length lambda
     //! then one of length taubin_mu < -lambda (shrinks less; for comparison)
-    Taubin
+    Taubin,
+    //! \brief The minimizer of the energy over the free vertices, by sparse Cholesky
+    //! (SparseCholesky: CHOLMOD): each step solves A_ff dx = r(x) with A the half Hessian,
+    //! which lands a quadratic recipe on its minimizer in one step; further steps refine
+    //! it to rounding. The matrix is factored once per precomputation; moved targets
+    //! change only r.
+    Direct
 };
 
 //! A list of element indices, or every element of the mesh ("all").

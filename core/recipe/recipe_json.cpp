@@ -447,8 +447,10 @@ Recipe parse_recipe_json(const Json& j)
         r.tolerance = weight(j["tolerance"], "tolerance");
     if (j.contains("method"))
     {
-        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent, Method::Taubin};
-        r.method = methods[choice(j["method"], "method", {"jacobi", "gradient_descent", "taubin"})];
+        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent, Method::Taubin,
+                                      Method::Direct};
+        r.method = methods[choice(j["method"], "method",
+                                  {"jacobi", "gradient_descent", "taubin", "direct"})];
     }
     if (j.contains("taubin_mu"))
         r.taubin_mu = number(j["taubin_mu"], "taubin_mu");
@@ -626,6 +628,7 @@ nlohmann::json recipe_to_json(const Recipe& r)
     j["tolerance"] = r.tolerance;
     j["method"] = r.method == Method::Jacobi            ? "jacobi"
                   : r.method == Method::GradientDescent ? "gradient_descent"
+                  : r.method == Method::Direct          ? "direct"
                                                         : "taubin";
     if (r.method == Method::Taubin)
         j["taubin_mu"] = r.taubin_mu;

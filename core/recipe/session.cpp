@@ -4,11 +4,14 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <string>
 #include <utility>
 
 #include "core/energies/falloff.h"
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/solver/free_hessian.h"
 #include "core/solver/parallel.h"
 #include "core/solver/solver.h"
 
@@ -384,6 +387,96 @@ void Session::precompute()
         dx_.assign(3 * static_cast<size_t>(nv), 0);
         next_ = {};
     }
+    if (recipe_.method == Method::Direct)
+        factor_direct();
+    else
+    {
+        cholesky_.reset();
+        direct_rhs_ = {};
+    }
+}
+
+void Session::factor_direct()
+{
+    // With the normal term the coordinates couple (u u^T): one system of 3 #free unknowns.
+    // Without it the matrix is the same for x, y and z: #free unknowns, 3 right-hand sides.
+    direct_blocks_ = normal_.has_value();
+    const SymmetricMatrix a = assemble_free_hessian(
+        vertex_count_, free_, direct_blocks_, [&](Index i, HessianColumn& col) {
+            edge_.add_hessian_column(i, col);
+            if (soft_)
+                soft_->add_hessian_column(i, col);
+            if (centroid_)
+                centroid_->add_hessian_column(i, col);
+            if (normal_)
+                normal_->add_hessian_column(i, normals_, col);
+        });
+    // Checked before the factorization, which may well factor a singular matrix in
+    // doubles (a pivot of rounding size) and return garbage.
+    if (const std::optional<std::string> why = unheld_part())
+        throw RecipeError("method", *why);
+    if (!cholesky_)
+        cholesky_ = std::make_unique<SparseCholesky>();
+    cholesky_->analyse(a);
+    if (!cholesky_->factor(a))
+        throw RecipeError("method",
+                          "\"direct\": the system of the free vertices is not positive definite "
+                          "in double precision (weights many orders of magnitude apart: closer "
+                          "ones make it so)");
+    direct_rhs_.assign(3 * free_.size(), 0);
+}
+
+std::optional<std::string> Session::unheld_part() const
+{
+    // A free part (connected through edges) is held when it touches a fixed vertex (an
+    // edge to one), has an anchor with mu > 0, or a constrained face with mu_f > 0 among
+    // its faces: otherwise the edge term is flat along its translations, in every
+    // coordinate, and no term adds curvature there.
+    const Index nv = vertex_count_;
+    std::vector<Index> part(static_cast<size_t>(nv), kInvalidIndex);
+    std::vector<char> is_free(static_cast<size_t>(nv), 0);
+    for (const Index v : free_)
+        is_free[v] = 1;
+    std::vector<Index> stack;
+    Index parts = 0;
+    for (const Index seed : free_)
+    {
+        if (part[seed] != kInvalidIndex)
+            continue;
+        bool held = false;
+        Index count = 0;
+        part[seed] = parts;
+        stack.assign(1, seed);
+        while (!stack.empty())
+        {
+            const Index v = stack.back();
+            stack.pop_back();
+            ++count;
+            if (soft_ && soft_->weight(v) > 0)
+                held = true;
+            if (centroid_)
+                for (const Index c : topology_->corners_of_vertex(v))
+                    if (const Index f = topology_->face_of_corner(c);
+                        centroid_->constrains(f) && centroid_->face_weight(f) > 0)
+                        held = true;
+            for (const Index j : topology_->neighbors(v))
+                if (!is_free[j])
+                    held = true;
+                else if (part[j] == kInvalidIndex)
+                {
+                    part[j] = parts;
+                    stack.push_back(j);
+                }
+        }
+        if (!held)
+            return "\"direct\": the free part of " + std::to_string(count) +
+                   " vertices that holds vertex " + std::to_string(seed) +
+                   " is held by nothing (no pin, anchor, centroid constraint or fixed "
+                   "vertex next to it), so the energy has no unique minimizer; pin a "
+                   "vertex of it, anchor it (\"soft\"), or smooth it as part of a region";
+        ++parts;
+    }
+    return std::nullopt;
 }
 
 void Session::build_falloff_anchors(const std::vector<char>& fixed,
@@ -935,6 +1028,8 @@ StepInfo Session::general_step(std::span<Scalar> x)
         system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0);
         dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
     }
+    if (recipe_.method == Method::Direct)
+        return direct_step(x);
     const bool use_blocks = !system_.inverse.empty();
     if (joint_ && use_blocks)
         invert_blocks(); // the normals moved in the previous step
@@ -990,8 +1085,45 @@ StepInfo Session::general_step(std::span<Scalar> x)
     return info;
 }
 
-void Session::assemble_displacements(std::span<const Scalar> x, bool use_blocks)
+StepInfo Session::direct_step(std::span<Scalar> x)
 {
+    if (guard_)
+    {
+        guard_start_.resize(x.size());
+        std::copy(x.begin(), x.end(), guard_start_.begin());
+    }
+    assemble_rhs(x);
+    // r_f in the solver's order: by vertex with blocks, else by coordinate (3 columns).
+    const Index n = static_cast<Index>(free_.size());
+    const auto at = [&](Index k, int a) {
+        return direct_blocks_ ? 3 * static_cast<size_t>(k) + a
+                              : static_cast<size_t>(a) * static_cast<size_t>(n) + k;
+    };
+    parallel_for(n, [&](Index k) {
+        for (int a = 0; a < 3; ++a)
+            direct_rhs_[at(k, a)] = system_.rhs[3 * static_cast<size_t>(free_[k]) + a];
+    });
+    StepInfo info;
+    info.lambda = 1;
+    info.gradient = std::sqrt(deterministic_sum(3 * n, [&](Index m) {
+        return direct_rhs_[static_cast<size_t>(m)] * direct_rhs_[static_cast<size_t>(m)];
+    }));
+    cholesky_->solve(direct_rhs_, direct_blocks_ ? 1 : 3);
+    parallel_for(n, [&](Index k) {
+        for (int a = 0; a < 3; ++a)
+            x[3 * static_cast<size_t>(free_[k]) + a] += direct_rhs_[at(k, a)];
+    });
+    if (guard_)
+        info.shortened = guard_step(guard_start_, x);
+    else if (volume_)
+        volume_->project(x);
+    return info;
+}
+
+void Session::assemble_rhs(std::span<const Scalar> x)
+{
+    if (system_.rhs.size() != 3 * static_cast<size_t>(vertex_count_))
+        system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0); // a fused session
     parallel_for(static_cast<Index>(free_.size()),
                  [&](Index k) { std::fill_n(&system_.rhs[3 * free_[k]], 3, Scalar(0)); });
     edge_.add_rhs(x, free_, system_.rhs);
@@ -1001,6 +1133,39 @@ void Session::assemble_displacements(std::span<const Scalar> x, bool use_blocks)
         centroid_->add_rhs(x, free_, system_.rhs);
     if (normal_)
         normal_->add_rhs(x, normals_, free_, system_.rhs);
+}
+
+Scalar Session::gradient_norm(std::span<const Scalar> x)
+{
+    check_size(x, "gradient_norm");
+    assemble_rhs(x);
+    return std::sqrt(deterministic_sum(static_cast<Index>(free_.size()), [&](Index k) {
+        const Scalar* r = &system_.rhs[3 * static_cast<size_t>(free_[k])];
+        return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    }));
+}
+
+Scalar Session::max_jacobi_displacement(std::span<const Scalar> x)
+{
+    check_size(x, "max_jacobi_displacement");
+    if (dx_.size() != 3 * static_cast<size_t>(vertex_count_))
+        dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
+    if (system_.diagonal.empty() && system_.inverse.empty())
+        return 0; // no free vertex has a system
+    assemble_rhs(x);
+    jacobi_displacements(system_, free_, !system_.inverse.empty(), dx_);
+    Scalar largest = 0;
+    for (const Index i : free_)
+    {
+        const Scalar* d = &dx_[3 * static_cast<size_t>(i)];
+        largest = std::max(largest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    }
+    return largest;
+}
+
+void Session::assemble_displacements(std::span<const Scalar> x, bool use_blocks)
+{
+    assemble_rhs(x);
     if (recipe_.method == Method::GradientDescent)
         gradient_displacements(system_, free_, dx_);
     else // Jacobi, and each of Taubin's two passes
@@ -1062,6 +1227,34 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
         if (on_step)
             on_step(static_cast<int>(result.energies.size()) - 1, e);
     };
+    if (recipe.method == Method::Direct)
+    {
+        // Each step solves for the minimizer from where it starts; the rule is the
+        // gradient's, relative to the input's.
+        const Scalar tolerance = recipe.tolerance > 0 ? recipe.tolerance : Scalar(1e-12);
+        record(session.energy());
+        Scalar first = 0, last = 0;
+        for (int k = 0; k < recipe.iterations; ++k)
+        {
+            const StepInfo info = session.step();
+            if (k == 0)
+                first = info.gradient;
+            result.lambdas.push_back(info.lambda);
+            result.shortened.push_back(info.shortened);
+            ++result.iterations;
+            record(session.energy());
+            const Scalar now = session.gradient_norm(session.positions());
+            result.gradients.push_back(first > 0 ? now / first : 0);
+            if (result.gradients.back() <= tolerance || (k > 0 && now >= Scalar(0.5) * last))
+            {
+                result.stopped_by_tolerance = true;
+                break;
+            }
+            last = now;
+        }
+        result.jacobi_displacement = session.max_jacobi_displacement(session.positions());
+        return result;
+    }
     if (!session.fuses_energy())
     {
         record(session.energy());

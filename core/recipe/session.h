@@ -4,6 +4,7 @@
 
 #include <array>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -18,6 +19,7 @@
 #include "core/recipe/recipe.h"
 #include "core/solver/flip_guard.h"
 #include "core/solver/jacobi_system.h"
+#include "core/solver/sparse_cholesky.h"
 
 namespace meshfair {
 
@@ -63,6 +65,9 @@ struct StepInfo
     //! With Recipe::prevent_flips: the vertices whose steps FlipGuard shortened (one
     //! shortened again after the volume's correction counts again)
     Index shortened = 0;
+    //! The direct method: |r(x)| over the free vertices where the step started, r = -1/2
+    //! dE/dx (Session::gradient_norm); -1 for the other methods, which do not compute it.
+    Scalar gradient = -1;
 };
 
 //! \brief All smoothing strategies of \cite taubin_2012 combined in one solver, shaped
@@ -166,6 +171,16 @@ public:
     void revert_step();
     //! The energy of the kept positions.
     TermEnergies energy() const { return energy(x_); }
+    //! \brief |r(x)|, the Euclidean norm over the free vertices of r = -1/2 dE/dx (the
+    //! normals held): 0 exactly at the minimizer. The direct method's stopping rule
+    //! compares it with the input's.
+    Scalar gradient_norm(std::span<const Scalar> x);
+    //! \brief The largest length of a free vertex's generalized Jacobi displacement
+    //! A_i^-1 r_i at x: how far one more Jacobi step would move a vertex (0 at the
+    //! minimizer; any method's measure of "not converged").
+    Scalar max_jacobi_displacement(std::span<const Scalar> x);
+    //! The direct method's factorization (nullptr for the other methods).
+    const SparseCholesky* factorization() const { return cholesky_.get(); }
 
     std::span<const Index> free_vertices() const { return free_; }
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.
@@ -251,6 +266,16 @@ private:
     StepInfo general_step(std::span<Scalar> x);
     //! The right-hand side and the displacements dx_ of the free vertices at x.
     void assemble_displacements(std::span<const Scalar> x, bool use_blocks);
+    //! system_.rhs at the free vertices: r(x) = -1/2 dE/dx.
+    void assemble_rhs(std::span<const Scalar> x);
+    //! The direct method's precomputation: A_ff assembled, analysed and factored.
+    //! \throw RecipeError when A_ff is singular (a free part that nothing holds).
+    void factor_direct();
+    //! One step of the direct method: dx_f = A_ff^-1 r_f(x), then the flip guard if any.
+    StepInfo direct_step(std::span<Scalar> x);
+    //! \brief Why A_ff would be singular: the first free part (connected through edges) that
+    //! nothing holds, named by its size and one vertex; nullopt when every part is held.
+    std::optional<std::string> unheld_part() const;
     void check_size(std::span<const Scalar> x, const char* what) const;
 
     const Mesh* mesh_;
@@ -290,10 +315,15 @@ private:
     std::vector<Scalar> normals_; //!< 3 #F
     std::vector<Scalar> smoothing_trace_;
     JacobiSystem system_;
-    std::vector<Scalar> dx_;        //!< 3 #V, zero on non-free vertices
-    std::vector<Scalar> scratch_u_; //!< 3 #F for normal smoothing and joint mode, else empty
-    std::vector<Scalar> x_;         //!< kept positions (set_positions)
-    std::vector<Scalar> next_;      //!< 3 #V: the fused step's output, when fused()
+    //! The direct method's factor of A_ff (nullptr for the other methods), and whether A_ff
+    //! has 3x3 blocks (the normal term): 3 #free unknowns, else #free for 3 right-hand sides
+    std::unique_ptr<SparseCholesky> cholesky_;
+    bool direct_blocks_ = false;
+    std::vector<Scalar> direct_rhs_; //!< 3 #free: r_f, then dx_f, in the solver's order
+    std::vector<Scalar> dx_;         //!< 3 #V, zero on non-free vertices
+    std::vector<Scalar> scratch_u_;  //!< 3 #F for normal smoothing and joint mode, else empty
+    std::vector<Scalar> x_;          //!< kept positions (set_positions)
+    std::vector<Scalar> next_;       //!< 3 #V: the fused step's output, when fused()
     //! 3 #F: this step's per-face shares of the right-hand side for the fused step: the
     //! centroid residual, plus the normal term's share (FaceNormalTerm::face_share) when
     //! normal_shares_; else empty
@@ -341,12 +371,21 @@ struct SmoothResult
     std::vector<TermEnergies> energies; //!< before the first step, then after each one
     std::vector<Scalar> lambdas;        //!< per step
     std::vector<Index> shortened;       //!< per step: StepInfo::shortened
-    int iterations = 0;                 //!< steps taken
+    //! The direct method: |r(x)| / |r(x_0)| after each step (x_0 the input, r = -1/2 dE/dx
+    //! over the free vertices); empty for the other methods.
+    std::vector<Scalar> gradients;
+    //! The direct method: the largest free vertex's Jacobi displacement at the result
+    //! (Session::max_jacobi_displacement), how far one more Jacobi step would move it; -1
+    //! for the other methods.
+    Scalar jacobi_displacement = -1;
+    int iterations = 0; //!< steps taken
     bool stopped_by_tolerance = false;
 };
 
 //! \brief Runs session.recipe().iterations steps on x (modified in place), stopping early
-//! by the recipe's tolerance; `on_step` (optional) sees each step's energies.
+//! by the recipe's tolerance; `on_step` (optional) sees each step's energies. The direct
+//! method stops when the gradient relative to the input's falls to the tolerance (1e-12
+//! when it is 0), or stops falling (rounding): a quadratic recipe after one or two steps.
 SmoothResult run(Session& session, std::span<Scalar> x,
                  const std::function<void(int, const TermEnergies&)>& on_step = {});
 //! The same on the session's kept positions (set_positions or adopt_positions first).

@@ -125,8 +125,9 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"lambda": 0})") == "'r.json': lambda: must be > 0 (got 0)");
         CHECK(error_of(R"({"iterations": -2})") ==
               "'r.json': iterations: must be an integer in [0, 2147483647] (got -2)");
-        CHECK(error_of(R"({"method": "newton"})") ==
-              "'r.json': method: must be \"jacobi\", \"gradient_descent\" or \"taubin\"");
+        CHECK(
+            error_of(R"({"method": "newton"})") ==
+            "'r.json': method: must be \"jacobi\", \"gradient_descent\", \"taubin\" or \"direct\"");
         CHECK(error_of(R"({"centroid": {"faces": "all", "denominator": "printed"}})") ==
               "'r.json': centroid.denominator: must be \"paper\" or \"exact\"");
         CHECK(error_of(R"({"normal": {"faces": [0], "normals": [[0, 0, 0]]}})") ==

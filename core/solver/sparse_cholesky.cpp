@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#include "core/solver/sparse_cholesky.h"
+
+#include <cholmod.h>
+
+#include <chrono>
+#include <string>
+#include <type_traits>
+
+#include "core/errors.h"
+
+namespace meshfair {
+
+static_assert(std::is_same_v<SuiteSparse_long, std::int64_t> ||
+                  sizeof(SuiteSparse_long) == sizeof(std::int64_t),
+              "CHOLMOD's long indices are read in place as int64_t");
+
+void SymmetricMatrix::multiply(std::span<const Scalar> x, std::span<Scalar> y) const
+{
+    std::fill(y.begin(), y.end(), Scalar(0));
+    for (std::int64_t c = 0; c < size; ++c)
+        for (std::int64_t k = column_start[c]; k < column_start[c + 1]; ++k)
+        {
+            const std::int64_t r = row[k];
+            y[r] += value[k] * x[c];
+            if (r != c)
+                y[c] += value[k] * x[r];
+        }
+}
+
+struct SparseCholesky::Cholmod
+{
+    cholmod_common common{};
+    cholmod_factor* factor = nullptr;
+};
+
+namespace {
+
+// The matrix as CHOLMOD's view of our arrays: no copy of the indices or values.
+cholmod_sparse view(const SymmetricMatrix& a)
+{
+    cholmod_sparse s{};
+    s.nrow = static_cast<size_t>(a.size);
+    s.ncol = static_cast<size_t>(a.size);
+    s.nzmax = a.row.size();
+    // CHOLMOD reads these only: its interface is not const-qualified.
+    s.p = const_cast<std::int64_t*>(a.column_start.data());
+    s.i = const_cast<std::int64_t*>(a.row.data());
+    s.x = const_cast<Scalar*>(a.value.data());
+    s.stype = 1; // the upper triangle
+    s.itype = CHOLMOD_LONG;
+    s.xtype = CHOLMOD_REAL;
+    s.dtype = CHOLMOD_DOUBLE;
+    s.sorted = 1;
+    s.packed = 1;
+    return s;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void check_matrix(const SymmetricMatrix& a, const char* what)
+{
+    if (a.size < 0 || a.column_start.size() != static_cast<size_t>(a.size) + 1 ||
+        a.row.size() != a.value.size() ||
+        a.column_start.back() != static_cast<std::int64_t>(a.row.size()))
+        throw SolverError(std::string("SparseCholesky::") + what + ": malformed matrix");
+}
+
+} // namespace
+
+SparseCholesky::SparseCholesky() : cholmod_(std::make_unique<Cholmod>())
+{
+    cholmod_common& c = cholmod_->common;
+    cholmod_l_start(&c);
+    c.print = 0; // the library never prints; failures come back as exceptions
+    c.supernodal = CHOLMOD_SUPERNODAL;
+    // Never fall back to a partial factor: a matrix that is not positive definite is
+    // reported as such (factor() returns false).
+    c.quick_return_if_not_posdef = 1;
+}
+
+SparseCholesky::~SparseCholesky()
+{
+    cholmod_common& c = cholmod_->common;
+    if (cholmod_->factor != nullptr)
+        cholmod_l_free_factor(&cholmod_->factor, &c);
+    cholmod_l_finish(&c);
+}
+
+void SparseCholesky::analyse(const SymmetricMatrix& a)
+{
+    check_matrix(a, "analyse");
+    cholmod_common& c = cholmod_->common;
+    if (cholmod_->factor != nullptr)
+        cholmod_l_free_factor(&cholmod_->factor, &c);
+    factored_ = false;
+    size_ = a.size;
+    stats_ = {};
+    const auto start = std::chrono::steady_clock::now();
+    cholmod_sparse s = view(a);
+    cholmod_->factor = cholmod_l_analyze(&s, &c);
+    if (cholmod_->factor == nullptr || c.status < CHOLMOD_OK)
+        throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY
+                              ? "sparse Cholesky: out of memory in the analysis"
+                              : "sparse Cholesky: the analysis failed (CHOLMOD status " +
+                                    std::to_string(c.status) + ")");
+    stats_.analyse_seconds = seconds_since(start);
+    stats_.factor_nonzeros = c.lnz;
+}
+
+bool SparseCholesky::factor(const SymmetricMatrix& a)
+{
+    check_matrix(a, "factor");
+    if (cholmod_->factor == nullptr || a.size != size_)
+        throw SolverError("SparseCholesky::factor: analyse this pattern first");
+    cholmod_common& c = cholmod_->common;
+    factored_ = false;
+    const auto start = std::chrono::steady_clock::now();
+    cholmod_sparse s = view(a);
+    cholmod_l_factorize(&s, cholmod_->factor, &c);
+    stats_.factor_seconds = seconds_since(start);
+    if (c.status == CHOLMOD_NOT_POSDEF)
+        return false;
+    if (c.status < CHOLMOD_OK)
+        throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY
+                              ? "sparse Cholesky: out of memory in the factorization"
+                              : "sparse Cholesky: the factorization failed (CHOLMOD status " +
+                                    std::to_string(c.status) + ")");
+    // The supernodal factor's own count (with the zeros its supernodes hold).
+    const cholmod_factor* f = cholmod_->factor;
+    if (f->is_super && f->xsize > 0)
+        stats_.factor_nonzeros = static_cast<double>(f->xsize);
+    factored_ = true;
+    return true;
+}
+
+void SparseCholesky::solve(std::span<Scalar> b, int columns) const
+{
+    if (!factored_)
+        throw SolverError("SparseCholesky::solve: no factorization");
+    if (columns < 1 || b.size() != static_cast<size_t>(size_) * static_cast<size_t>(columns))
+        throw SolverError("SparseCholesky::solve: the right-hand side has the wrong size");
+    if (size_ == 0)
+        return;
+    cholmod_common& c = cholmod_->common;
+    cholmod_dense rhs{};
+    rhs.nrow = static_cast<size_t>(size_);
+    rhs.ncol = static_cast<size_t>(columns);
+    rhs.nzmax = b.size();
+    rhs.d = static_cast<size_t>(size_);
+    rhs.x = b.data();
+    rhs.xtype = CHOLMOD_REAL;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, cholmod_->factor, &rhs, &c);
+    if (x == nullptr)
+        throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY
+                              ? "sparse Cholesky: out of memory in the solve"
+                              : "sparse Cholesky: the solve failed");
+    const Scalar* values = static_cast<const Scalar*>(x->x);
+    std::copy(values, values + b.size(), b.begin());
+    cholmod_l_free_dense(&x, &c);
+}
+
+} // namespace meshfair

@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/types.h"
+
+namespace meshfair {
+
+//! \brief A symmetric sparse matrix by its upper triangle, in compressed columns: column c
+//! holds rows row[column_start[c] .. column_start[c + 1]), ascending, each <= c, with
+//! their values. The form CHOLMOD reads (stype 1) without a copy of the indices.
+struct SymmetricMatrix
+{
+    std::int64_t size = 0;
+    std::vector<std::int64_t> column_start; //!< size + 1
+    std::vector<std::int64_t> row;
+    std::vector<Scalar> value;
+    //! y = A x (both triangles), for checks and residuals.
+    void multiply(std::span<const Scalar> x, std::span<Scalar> y) const;
+};
+
+//! What a factorization cost, for reports and the memory budget.
+struct FactorStats
+{
+    double analyse_seconds = 0;
+    double factor_seconds = 0;
+    //! Nonzeros of the factor L (CHOLMOD's estimate after the analysis, then its count).
+    double factor_nonzeros = 0;
+    //! Bytes the factor takes: its values and its row indices (8 + 8 each).
+    double factor_bytes() const { return factor_nonzeros * 16; }
+};
+
+//! \brief Sparse Cholesky factorization A = L L^T of a symmetric positive definite
+//! matrix, by CHOLMOD (SuiteSparse, supernodal, with its fill-reducing ordering: AMD, or
+//! METIS when it is better), shaped like libigl's min_quad_with_fixed: analyse() once per
+//! sparsity pattern (the free vertices and the terms), factor() again when only values
+//! change (a weight), solve() for every new right-hand side (moved targets).
+//!
+//! Not copyable; one factorization at a time. The matrix passed to analyse() and factor()
+//! is read during the call only.
+class SparseCholesky
+{
+public:
+    SparseCholesky();
+    ~SparseCholesky();
+    SparseCholesky(const SparseCholesky&) = delete;
+    SparseCholesky& operator=(const SparseCholesky&) = delete;
+
+    //! Symbolic analysis: the ordering and the factor's structure, for this pattern.
+    //! \throw SolverError when CHOLMOD fails (out of memory).
+    void analyse(const SymmetricMatrix& a);
+    //! Numeric factorization of a matrix with the pattern given to analyse().
+    //! \return false when the matrix is not positive definite (its minimizer is not
+    //! unique); the factor is then unusable until a factor() that succeeds.
+    //! \throw SolverError on any other failure, or without a prior analyse().
+    bool factor(const SymmetricMatrix& a);
+    //! True after a factor() that succeeded.
+    bool factored() const { return factored_; }
+    //! Solves A X = B in place for `columns` right-hand sides stored one after the other
+    //! (column-major: b holds size * columns values).
+    //! \throw SolverError without a factorization or on a size mismatch.
+    void solve(std::span<Scalar> b, int columns) const;
+    std::int64_t size() const { return size_; }
+    const FactorStats& stats() const { return stats_; }
+
+private:
+    struct Cholmod;
+    std::unique_ptr<Cholmod> cholmod_;
+    std::int64_t size_ = 0;
+    bool factored_ = false;
+    FactorStats stats_;
+};
+
+} // namespace meshfair

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// The direct method ("method": "direct"): the minimizer of the recipe's energy over the
+// free vertices, against the independent reference (tests/direct_minimizer) on every kind
+// of mesh; one Jacobi step from it moves nothing; moved pins re-solve without a new
+// factorization; the same bits for any thread count; a free part nothing holds refused.
+#include <doctest/doctest.h>
+
+#include <cstring>
+#include <string>
+
+#include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/recipe/recipe_json.h"
+#include "core/recipe/session.h"
+#include "core/solver/parallel.h"
+#include "tests/direct_minimizer.h"
+#include "tests/helpers.h"
+#include "tests/session_checks.h"
+
+using namespace meshfair;
+
+namespace {
+
+using test::noisy;
+using test::RecipeCase;
+
+std::vector<Index> stride_indices(Index n, Index stride, Index first = 0)
+{
+    std::vector<Index> out;
+    for (Index k = first; k < n; k += stride)
+        out.push_back(k);
+    return out;
+}
+
+// Recipes of every term the direct method solves, on mesh m: pins moved off the surface,
+// weighted anchors, centroids and normals, and all of them at once.
+std::vector<RecipeCase> direct_cases(const Mesh& m)
+{
+    const Index nv = m.vertex_count(), nf = m.face_count();
+    std::vector<RecipeCase> cases;
+    Recipe pins;
+    pins.method = Method::Direct;
+    pins.hard = HardVertices{{0, nv - 1}, {}};
+    for (const Index v : pins.hard->vertices)
+        pins.hard->targets.push_back(
+            {m.positions[3 * v] + 0.3, m.positions[3 * v + 1], m.positions[3 * v + 2] - 0.2});
+    cases.push_back({"pins moved", pins});
+    Recipe soft;
+    soft.method = Method::Direct;
+    soft.soft = SoftVertices{{false, stride_indices(nv, 2)}, 0.5, {}};
+    for (size_t k = 0; k < soft.soft->vertices.indices.size(); ++k)
+        soft.soft->weights.push_back(0.5 + static_cast<Scalar>(k % 3));
+    cases.push_back({"weighted anchors", soft});
+    Recipe faces = pins;
+    faces.centroid =
+        CentroidConstraints{{false, stride_indices(nf, 2)}, 2.0, {}, CentroidDenominator::Paper};
+    faces.normal =
+        NormalConstraints{{false, stride_indices(nf, 1)}, 3.0, NormalSource::Initial, {}};
+    cases.push_back({"pins, centroids and normals", faces});
+    Recipe all = faces;
+    all.soft = soft.soft;
+    all.soft->vertices.indices = stride_indices(nv, 2, 1); // beside the pin at 0
+    all.soft->weights.resize(all.soft->vertices.indices.size(), 1.5);
+    all.hard = HardVertices{{0}, {}};
+    all.normal->weights.assign(static_cast<size_t>(nf), 0);
+    for (Index f = 0; f < nf; ++f)
+        all.normal->weights[static_cast<size_t>(f)] = 0.25 + static_cast<Scalar>(f % 4);
+    cases.push_back({"every term, weighted", all});
+    return cases;
+}
+
+// The session's run from the mesh's positions (pins at their targets first).
+struct DirectRun
+{
+    std::vector<Scalar> start, result;
+    SmoothResult run;
+};
+
+DirectRun run_direct(Session& session, const Mesh& m)
+{
+    DirectRun d;
+    d.start = m.positions;
+    session.apply_hard_targets(d.start);
+    d.result = d.start;
+    d.run = run(session, d.result);
+    return d;
+}
+
+void check_near(const std::vector<Scalar>& got, const std::vector<Scalar>& expected, Scalar scale)
+{
+    REQUIRE(got.size() == expected.size());
+    Scalar worst = 0;
+    for (size_t k = 0; k < got.size(); ++k)
+        worst = std::max(worst, std::abs(got[k] - expected[k]));
+    CHECK(worst <= 1e-10 * scale);
+}
+
+std::vector<std::pair<const char*, Mesh>> small_meshes()
+{
+    return {{"tetrahedron", noisy(test::tetrahedron(), 0.1)},
+            {"quad cube", noisy(test::quad_cube(), 0.1)},
+            {"open grid", noisy(test::open_grid(5, 4), 0.1)},
+            {"non-manifold fan", noisy(test::nonmanifold_fan(), 0.1)},
+            {"mixed polygons", noisy(test::mixed_polygons(), 0.1)}};
+}
+
+} // namespace
+
+TEST_SUITE("direct method")
+{
+    TEST_CASE("the minimizer of every term on every kind of mesh, as the reference solves it")
+    {
+        for (const auto& [name, m] : small_meshes())
+        {
+            const Topology t = build_topology(m);
+            const Scalar diagonal = bounding_box(m.positions).diagonal();
+            for (const RecipeCase& c : direct_cases(m))
+            {
+                CAPTURE(name);
+                CAPTURE(c.name);
+                Session session(m, t, c.recipe);
+                const DirectRun d = run_direct(session, m);
+                const std::vector<Index> free(session.free_vertices().begin(),
+                                              session.free_vertices().end());
+                const std::vector<Scalar> expected =
+                    test::direct_minimizer(m, t, c.recipe, d.start, free);
+                check_near(d.result, expected, diagonal);
+                // Solved in one step, refined in at most two more.
+                CHECK(d.run.iterations >= 1);
+                CHECK(d.run.iterations <= 3);
+                CHECK(d.run.stopped_by_tolerance);
+                REQUIRE(!d.run.gradients.empty());
+                CHECK(d.run.gradients.front() <= 1e-9);
+                // What the issue measures: no free vertex's Jacobi displacement is left.
+                CHECK(session.max_jacobi_displacement(d.result) <= 1e-9 * diagonal);
+            }
+        }
+    }
+
+    TEST_CASE("one Jacobi step from the direct result moves nothing")
+    {
+        const Mesh m = noisy(test::icosphere(3), 0.05);
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        for (const RecipeCase& c : direct_cases(m))
+        {
+            CAPTURE(c.name);
+            Session direct(m, t, c.recipe);
+            const DirectRun d = run_direct(direct, m);
+            Recipe jacobi = c.recipe;
+            jacobi.method = Method::Jacobi;
+            jacobi.iterations = 1;
+            Session step(m, t, jacobi);
+            std::vector<Scalar> x = d.result;
+            run(step, x);
+            check_near(x, d.result, diagonal);
+            // And the Jacobi iteration from the input is still far from it after one step:
+            // the check could fail.
+            std::vector<Scalar> y = d.start;
+            run(step, y);
+            Scalar apart = 0;
+            for (size_t k = 0; k < y.size(); ++k)
+                apart = std::max(apart, std::abs(y[k] - d.result[k]));
+            CHECK(apart > 1e-4 * diagonal);
+        }
+    }
+
+    TEST_CASE("moved pins: a new right-hand side, the same factorization, the new minimizer")
+    {
+        const Mesh m = test::open_grid(12, 10); // flat: the dome is the only height
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        Recipe r;
+        r.method = Method::Direct;
+        r.region = Region{{}, stride_indices(m.face_count(), 1)};
+        // The border fixed by the region's rest: a region of the interior faces only.
+        r.region->faces.clear();
+        for (Index f = 0; f < m.face_count(); ++f)
+            if (f % 12 != 0 && f % 12 != 11 && f >= 12 && f < 108)
+                r.region->faces.push_back(f);
+        const Index pin = 5 * 13 + 6; // the middle of the grid
+        r.hard = HardVertices{{pin}, {{m.positions[3 * pin], m.positions[3 * pin + 1], 0.5}}};
+        Session session(m, t, r);
+        DirectRun d = run_direct(session, m);
+        CHECK(d.result[3 * pin + 2] == 0.5);
+        // The dome: every free vertex rose, none above the pin.
+        for (const Index v : session.free_vertices())
+        {
+            CHECK(d.result[3 * v + 2] > m.positions[3 * v + 2]);
+            CHECK(d.result[3 * v + 2] < 0.5);
+        }
+        const std::vector<Scalar> lifted = {m.positions[3 * pin], m.positions[3 * pin + 1], 0.9};
+        session.set_hard_targets(lifted);
+        session.apply_hard_targets(d.result);
+        const std::vector<Scalar> from = d.result;
+        session.set_positions(d.result);
+        run(session);
+        const std::span<const Scalar> kept = session.positions();
+        Recipe moved = r;
+        moved.hard->targets = {{lifted[0], lifted[1], lifted[2]}};
+        const std::vector<Index> free(session.free_vertices().begin(),
+                                      session.free_vertices().end());
+        check_near(std::vector<Scalar>(kept.begin(), kept.end()),
+                   test::direct_minimizer(m, t, moved, from, free), diagonal);
+        CHECK(session.precompute_count() == 1);
+    }
+
+    TEST_CASE("the same bits for 1, 2 and 3 threads")
+    {
+        const Mesh m = noisy(test::icosphere(5), 0.01); // 10,242 vertices: parallel loops
+        const Topology t = build_topology(m);
+        for (const RecipeCase& c : direct_cases(m))
+        {
+            CAPTURE(c.name);
+            std::vector<std::vector<Scalar>> results;
+            for (const int threads : {1, 2, 3})
+            {
+                set_thread_count(threads);
+                Session session(m, t, c.recipe);
+                results.push_back(run_direct(session, m).result);
+            }
+            set_thread_count(0);
+            for (size_t k = 1; k < results.size(); ++k)
+                CHECK(std::memcmp(results[0].data(), results[k].data(),
+                                  results[0].size() * sizeof(Scalar)) == 0);
+            CHECK(results[0] != m.positions);
+        }
+    }
+
+    TEST_CASE("a free part that nothing holds is refused, named by its size and a vertex")
+    {
+        // Two triangles: one pinned, the other free with nothing holding it.
+        const Mesh m = test::two_components();
+        const Topology t = build_topology(m);
+        Recipe r;
+        r.method = Method::Direct;
+        r.hard = HardVertices{{0}, {}};
+        try
+        {
+            Session session(m, t, r);
+            FAIL("an unheld part was accepted");
+        }
+        catch (const RecipeError& e)
+        {
+            const std::string what = e.what();
+            CHECK(what.find("3 vertices") != std::string::npos);
+            CHECK(what.find("vertex 3") != std::string::npos);
+            CHECK(what.find("held by nothing") != std::string::npos);
+        }
+        // Held by an anchor on that triangle, it is accepted.
+        r.soft = SoftVertices{{false, {4}}, 0.1, {}};
+        CHECK_NOTHROW(Session(m, t, r));
+        // A closed mesh with nothing at all: plain smoothing has no minimizer.
+        const Mesh sphere = test::icosphere(1);
+        Recipe plain;
+        plain.method = Method::Direct;
+        CHECK_THROWS_AS(Session(sphere, build_topology(sphere), plain), RecipeError);
+    }
+
+    TEST_CASE("falloff anchors around pins: the Jacobi displacement vanishes")
+    {
+        const Mesh m = noisy(test::open_grid(10, 10), 0.02);
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        Recipe r;
+        r.method = Method::Direct;
+        const Index pin = 5 * 11 + 5;
+        r.hard = HardVertices{{pin}, {{m.positions[3 * pin], m.positions[3 * pin + 1], 0.4}}};
+        r.falloff = Falloff{};
+        r.falloff->radius = 4;
+        Session session(m, t, r);
+        const DirectRun d = run_direct(session, m);
+        CHECK(session.max_jacobi_displacement(d.result) <= 1e-9 * diagonal);
+        CHECK(session.max_jacobi_displacement(d.start) > 1e-3 * diagonal);
+    }
+
+    TEST_CASE("\"method\": \"direct\" in a recipe file, and what it does not take")
+    {
+        const Recipe r = parse_recipe(R"({"method": "direct", "iterations": 4})", "direct.json");
+        CHECK(r.method == Method::Direct);
+        CHECK(parse_recipe(recipe_to_json(r).dump(), "again.json").method == Method::Direct);
+        const Mesh m = test::tetrahedron();
+        for (const char* text :
+             {R"({"method": "direct", "lambda": "optimal"})",
+              R"({"method": "direct", "volume": {}})",
+              R"({"method": "direct", "normal": {"faces": "all"}, "joint": {"gamma": 1}})"})
+        {
+            CAPTURE(text);
+            CHECK_THROWS_AS(check_recipe(parse_recipe(text, "r.json"), m), RecipeError);
+        }
+    }
+}

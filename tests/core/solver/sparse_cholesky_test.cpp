@@ -1,0 +1,219 @@
+// SPDX-License-Identifier: MIT
+// Copyright 2026 the MeshFair authors.
+//
+// The sparse Cholesky factorization (CHOLMOD) and the half Hessian of the free vertices:
+// each term's column against its own energy, by polarization.
+#include <doctest/doctest.h>
+
+#include <cmath>
+#include <random>
+
+#include "core/energies/edge_term.h"
+#include "core/energies/face_centroid_term.h"
+#include "core/energies/face_normal_term.h"
+#include "core/energies/soft_vertex_term.h"
+#include "core/errors.h"
+#include "core/geometry/face_geometry.h"
+#include "core/solver/free_hessian.h"
+#include "core/solver/sparse_cholesky.h"
+#include "tests/helpers.h"
+
+using namespace meshfair;
+
+namespace {
+
+// The path graph's Laplacian plus `shift` on the diagonal, upper triangle by columns.
+SymmetricMatrix shifted_path(std::int64_t n, Scalar shift)
+{
+    SymmetricMatrix a;
+    a.size = n;
+    a.column_start.push_back(0);
+    for (std::int64_t c = 0; c < n; ++c)
+    {
+        if (c > 0)
+        {
+            a.row.push_back(c - 1);
+            a.value.push_back(-1);
+        }
+        a.row.push_back(c);
+        a.value.push_back((c > 0 ? 1 : 0) + (c + 1 < n ? 1 : 0) + shift);
+        a.column_start.push_back(static_cast<std::int64_t>(a.row.size()));
+    }
+    return a;
+}
+
+// The dense matrix of a SymmetricMatrix (both triangles).
+std::vector<Scalar> dense(const SymmetricMatrix& a)
+{
+    const auto n = static_cast<size_t>(a.size);
+    std::vector<Scalar> d(n * n, 0);
+    for (size_t c = 0; c < n; ++c)
+        for (auto k = static_cast<size_t>(a.column_start[c]);
+             k < static_cast<size_t>(a.column_start[c + 1]); ++k)
+        {
+            const auto r = static_cast<size_t>(a.row[k]);
+            CHECK(r <= c);
+            d[r * n + c] += a.value[k];
+            if (r != c)
+                d[c * n + r] += a.value[k];
+        }
+    return d;
+}
+
+} // namespace
+
+TEST_SUITE("SparseCholesky")
+{
+    TEST_CASE("solves a positive definite system for several right-hand sides")
+    {
+        const SymmetricMatrix a = shifted_path(50, 0.1);
+        SparseCholesky cholesky;
+        cholesky.analyse(a);
+        REQUIRE(cholesky.factor(a));
+        std::mt19937 random(3);
+        std::uniform_real_distribution<Scalar> value(-1, 1);
+        std::vector<Scalar> x(150);
+        for (Scalar& v : x)
+            v = value(random);
+        std::vector<Scalar> b(150);
+        for (int c = 0; c < 3; ++c)
+            a.multiply(std::span<const Scalar>(x).subspan(50 * c, 50),
+                       std::span<Scalar>(b).subspan(50 * c, 50));
+        cholesky.solve(b, 3);
+        for (size_t k = 0; k < x.size(); ++k)
+            CHECK(b[k] == doctest::Approx(x[k]).epsilon(1e-12));
+        CHECK(cholesky.stats().factor_nonzeros >= 50);
+    }
+
+    TEST_CASE("a new factorization of the same pattern, then a matrix that is not definite")
+    {
+        SparseCholesky cholesky;
+        cholesky.analyse(shifted_path(10, 1));
+        REQUIRE(cholesky.factor(shifted_path(10, 1)));
+        REQUIRE(cholesky.factor(shifted_path(10, 2)));
+        std::vector<Scalar> b(10, 1);
+        cholesky.solve(b, 1);
+        std::vector<Scalar> back(10);
+        shifted_path(10, 2).multiply(b, back);
+        for (const Scalar v : back)
+            CHECK(v == doctest::Approx(1).epsilon(1e-12));
+        // The path's Laplacian alone is singular: the constants are its null space.
+        CHECK_FALSE(cholesky.factor(shifted_path(10, 0)));
+        CHECK_FALSE(cholesky.factored());
+        CHECK_THROWS_AS(cholesky.solve(b, 1), SolverError);
+    }
+
+    TEST_CASE("misuse is refused: no analysis, a wrong size, a malformed matrix")
+    {
+        SparseCholesky cholesky;
+        CHECK_THROWS_AS(cholesky.factor(shifted_path(4, 1)), SolverError);
+        cholesky.analyse(shifted_path(4, 1));
+        CHECK_THROWS_AS(cholesky.factor(shifted_path(5, 1)), SolverError);
+        REQUIRE(cholesky.factor(shifted_path(4, 1)));
+        std::vector<Scalar> b(7, 0);
+        CHECK_THROWS_AS(cholesky.solve(b, 2), SolverError);
+        SymmetricMatrix broken = shifted_path(4, 1);
+        broken.column_start.back() = 1;
+        CHECK_THROWS_AS(cholesky.analyse(broken), SolverError);
+    }
+}
+
+TEST_SUITE("free Hessian")
+{
+    // Every term's half Hessian A (E(x + d) = E(x) - 2 r^T d + d^T A d) read off its
+    // energy: for a quadratic E, d^T A d = E(x + d) - E(x) + 2 r^T d, and with r taken
+    // from the gradient by polarization, A's entries are
+    // (E(x + s e_p + s e_q) - E(x + s e_p) - E(x + s e_q) + E(x)) / (2 s^2).
+    TEST_CASE("each term's columns are the Hessian of its energy, on every kind of mesh")
+    {
+        for (const auto& [name, mesh] : {std::pair{"tetrahedron", test::tetrahedron()},
+                                         {"quad cube", test::quad_cube()},
+                                         {"open grid", test::open_grid(3, 2)},
+                                         {"non-manifold fan", test::nonmanifold_fan()},
+                                         {"mixed polygons", test::mixed_polygons()}})
+        {
+            CAPTURE(name);
+            Mesh m = mesh;
+            test::perturb(m, 0.1, 5);
+            const Topology t = build_topology(m);
+            const Index nv = m.vertex_count(), nf = m.face_count();
+            std::vector<Index> faces, vertices;
+            for (Index f = 0; f < nf; f += 2)
+                faces.push_back(f);
+            for (Index v = 0; v < nv; v += 2)
+                vertices.push_back(v);
+            std::vector<Scalar> face_w(faces.size()), vertex_w(vertices.size());
+            for (size_t k = 0; k < face_w.size(); ++k)
+                face_w[k] = 0.5 + static_cast<Scalar>(k);
+            for (size_t k = 0; k < vertex_w.size(); ++k)
+                vertex_w[k] = 1.5 + static_cast<Scalar>(k);
+            const EdgeTerm edge(t);
+            const std::vector<Scalar> targets(3 * vertices.size(), 0.25);
+            const SoftVertexTerm soft(nv, vertices, 0.7, targets, vertex_w);
+            FaceCentroidTerm centroid(m, t, faces, 1.3, CentroidDenominator::Paper, face_w);
+            centroid.set_targets_to_centroids(m.positions);
+            const FaceNormalTerm normal(m, t, faces, 2.1, face_w);
+            const std::vector<Scalar> normals = face_normals(m, m.positions);
+            const auto energy = [&](std::span<const Scalar> x) {
+                return edge.energy(x) + soft.energy(x) + centroid.energy(x) +
+                       normal.energy(x, normals);
+            };
+            std::vector<Index> free;
+            for (Index v = 0; v < nv; ++v)
+                if (v != 1) // one fixed vertex: its entries are dropped
+                    free.push_back(v);
+            const SymmetricMatrix a =
+                assemble_free_hessian(nv, free, true, [&](Index i, HessianColumn& col) {
+                    edge.add_hessian_column(i, col);
+                    soft.add_hessian_column(i, col);
+                    centroid.add_hessian_column(i, col);
+                    normal.add_hessian_column(i, normals, col);
+                });
+            const std::vector<Scalar> d = dense(a);
+            const auto n = static_cast<size_t>(a.size);
+            REQUIRE(n == 3 * free.size());
+            const Scalar s = 0.5;
+            std::vector<Scalar> x = m.positions;
+            const Scalar e0 = energy(x);
+            const auto coordinate = [&](size_t p) {
+                return 3 * static_cast<size_t>(free[p / 3]) + p % 3;
+            };
+            for (size_t p = 0; p < n; ++p)
+                for (size_t q = p; q < n; ++q)
+                {
+                    x[coordinate(p)] += s;
+                    const Scalar ep = energy(x);
+                    x[coordinate(q)] += s;
+                    const Scalar epq = energy(x);
+                    x[coordinate(p)] -= s;
+                    const Scalar eq = energy(x);
+                    x[coordinate(q)] -= s;
+                    const Scalar expected = (epq - ep - eq + e0) / (2 * s * s);
+                    CAPTURE(p);
+                    CAPTURE(q);
+                    CHECK(d[p * n + q] == doctest::Approx(expected).epsilon(1e-9).scale(1));
+                }
+            // Without the normal term the matrix is one coordinate's: the same entries
+            // as the blocks' xx.
+            const SymmetricMatrix s1 =
+                assemble_free_hessian(nv, free, false, [&](Index i, HessianColumn& col) {
+                    edge.add_hessian_column(i, col);
+                    soft.add_hessian_column(i, col);
+                    centroid.add_hessian_column(i, col);
+                });
+            const std::vector<Scalar> d1 = dense(s1);
+            const SymmetricMatrix s3 =
+                assemble_free_hessian(nv, free, true, [&](Index i, HessianColumn& col) {
+                    edge.add_hessian_column(i, col);
+                    soft.add_hessian_column(i, col);
+                    centroid.add_hessian_column(i, col);
+                });
+            const std::vector<Scalar> d3 = dense(s3);
+            const size_t m1 = free.size();
+            for (size_t p = 0; p < m1; ++p)
+                for (size_t q = 0; q < m1; ++q)
+                    for (size_t a1 = 0; a1 < 3; ++a1)
+                        CHECK(d3[(3 * p + a1) * n + 3 * q + a1] == d1[p * m1 + q]);
+        }
+    }
+}
