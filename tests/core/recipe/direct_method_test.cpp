@@ -112,8 +112,11 @@ TEST_SUITE("direct method")
 {
     TEST_CASE("the minimizer of every term on every kind of mesh, as the reference solves it")
     {
-        for (const auto& [name, m] : small_meshes())
+        for (const auto& named : small_meshes())
         {
+            // Not a structured binding: CAPTURE's lambda cannot name one (clang 14).
+            const char* name = named.first;
+            const Mesh& m = named.second;
             const Topology t = build_topology(m);
             const Scalar diagonal = bounding_box(m.positions).diagonal();
             for (const RecipeCase& c : direct_cases(m))
