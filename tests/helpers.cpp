@@ -98,6 +98,14 @@ Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<In
     return m;
 }
 
+std::vector<Index> stride_indices(Index n, Index stride, Index first)
+{
+    std::vector<Index> out;
+    for (Index k = first; k < n; k += stride)
+        out.push_back(k);
+    return out;
+}
+
 std::vector<Index> all_indices(Index n)
 {
     std::vector<Index> v(n);

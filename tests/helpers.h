@@ -50,6 +50,8 @@ io::Property property(const char* name, io::ValueType type, std::vector<double> 
 Mesh make_mesh(const std::vector<Vec3>& points, const std::vector<std::vector<Index>>& faces);
 //! 0, 1, ..., n - 1.
 std::vector<Index> all_indices(Index n);
+//! first, first + stride, ... below n: every stride-th element of a set.
+std::vector<Index> stride_indices(Index n, Index stride, Index first = 0);
 
 // Synthetic meshes (pmp-style fixtures).
 Mesh tetrahedron();             //!< 4 vertices, 4 triangles, closed

@@ -26,14 +26,6 @@ namespace {
 using test::noisy;
 using test::RecipeCase;
 
-std::vector<Index> stride_indices(Index n, Index stride, Index first = 0)
-{
-    std::vector<Index> out;
-    for (Index k = first; k < n; k += stride)
-        out.push_back(k);
-    return out;
-}
-
 // Recipes of every term the direct method solves, on mesh m: pins moved off the surface,
 // weighted anchors, centroids and normals, and all of them at once.
 std::vector<RecipeCase> direct_cases(const Mesh& m)
@@ -49,19 +41,19 @@ std::vector<RecipeCase> direct_cases(const Mesh& m)
     cases.push_back({"pins moved", pins});
     Recipe soft;
     soft.method = Method::Direct;
-    soft.soft = SoftVertices{{false, stride_indices(nv, 2)}, 0.5, {}};
+    soft.soft = SoftVertices{{false, test::stride_indices(nv, 2)}, 0.5, {}};
     for (size_t k = 0; k < soft.soft->vertices.indices.size(); ++k)
         soft.soft->weights.push_back(0.5 + static_cast<Scalar>(k % 3));
     cases.push_back({"weighted anchors", soft});
     Recipe faces = pins;
-    faces.centroid =
-        CentroidConstraints{{false, stride_indices(nf, 2)}, 2.0, {}, CentroidDenominator::Paper};
+    faces.centroid = CentroidConstraints{
+        {false, test::stride_indices(nf, 2)}, 2.0, {}, CentroidDenominator::Paper};
     faces.normal =
-        NormalConstraints{{false, stride_indices(nf, 1)}, 3.0, NormalSource::Initial, {}};
+        NormalConstraints{{false, test::stride_indices(nf, 1)}, 3.0, NormalSource::Initial, {}};
     cases.push_back({"pins, centroids and normals", faces});
     Recipe all = faces;
     all.soft = soft.soft;
-    all.soft->vertices.indices = stride_indices(nv, 2, 1); // beside the pin at 0
+    all.soft->vertices.indices = test::stride_indices(nv, 2, 1); // beside the pin at 0
     all.soft->weights.resize(all.soft->vertices.indices.size(), 1.5);
     all.hard = HardVertices{{0}, {}};
     all.normal->weights.assign(static_cast<size_t>(nf), 0);
@@ -177,7 +169,7 @@ TEST_SUITE("direct method")
         const Scalar diagonal = bounding_box(m.positions).diagonal();
         Recipe r;
         r.method = Method::Direct;
-        r.region = Region{{}, stride_indices(m.face_count(), 1)};
+        r.region = Region{{}, test::stride_indices(m.face_count(), 1)};
         // The border fixed by the region's rest: a region of the interior faces only.
         r.region->faces.clear();
         for (Index f = 0; f < m.face_count(); ++f)

@@ -33,14 +33,6 @@ std::vector<Scalar> random_weights(size_t count, unsigned seed)
     return w;
 }
 
-std::vector<Index> every(Index n, Index stride, Index first = 0)
-{
-    std::vector<Index> out;
-    for (Index k = first; k < n; k += stride)
-        out.push_back(k);
-    return out;
-}
-
 // Every weighted term alone and combined, with random weights (normals held fixed but
 // for "smoothed", whose soft normals are weighted too).
 std::vector<RecipeCase> weighted_configurations(const Mesh& m)
@@ -51,7 +43,7 @@ std::vector<RecipeCase> weighted_configurations(const Mesh& m)
     base.iterations = 20;
 
     Recipe soft = base;
-    soft.soft = SoftVertices{{false, every(nv, 2)}, 0.5, {}};
+    soft.soft = SoftVertices{{false, test::stride_indices(nv, 2)}, 0.5, {}};
     soft.soft->weights = random_weights(soft.soft->vertices.indices.size(), 1);
     cases.push_back({"soft list", soft});
 
@@ -71,7 +63,8 @@ std::vector<RecipeCase> weighted_configurations(const Mesh& m)
     }
 
     Recipe normal = base;
-    normal.normal = NormalConstraints{{false, every(nf, 2, 1)}, 2.0, NormalSource::Initial, {}};
+    normal.normal =
+        NormalConstraints{{false, test::stride_indices(nf, 2, 1)}, 2.0, NormalSource::Initial, {}};
     normal.normal->weights = random_weights(normal.normal->faces.indices.size(), 4);
     cases.push_back({"normal", normal});
 
@@ -79,20 +72,22 @@ std::vector<RecipeCase> weighted_configurations(const Mesh& m)
     smoothed.normal = NormalConstraints{{true, {}}, 1.0, NormalSource::Smoothed, {}};
     smoothed.normal->weights = random_weights(static_cast<size_t>(nf), 5);
     smoothed.normal_smoothing = NormalSmoothing{};
-    smoothed.normal_smoothing->soft.faces = every(nf, 3);
+    smoothed.normal_smoothing->soft.faces = test::stride_indices(nf, 3);
     smoothed.normal_smoothing->soft.mu = 0.7;
     smoothed.normal_smoothing->soft.weights =
         random_weights(smoothed.normal_smoothing->soft.faces.size(), 6);
     cases.push_back({"smoothed normals", smoothed});
 
     Recipe all = base;
-    all.region = Region{every(nv, 1, 1), {}};
+    all.region = Region{test::stride_indices(nv, 1, 1), {}};
     all.hard = HardVertices{{nv / 3}, {}};
     all.soft = SoftVertices{{false, {2, nv - 2}}, 0.3, {}};
     all.soft->weights = {2.0, 0.5};
-    all.centroid = CentroidConstraints{{false, every(nf, 3)}, 1.0, {}, CentroidDenominator::Paper};
+    all.centroid = CentroidConstraints{
+        {false, test::stride_indices(nf, 3)}, 1.0, {}, CentroidDenominator::Paper};
     all.centroid->weights = random_weights(all.centroid->faces.indices.size(), 7);
-    all.normal = NormalConstraints{{false, every(nf, 2)}, 1.5, NormalSource::Initial, {}};
+    all.normal =
+        NormalConstraints{{false, test::stride_indices(nf, 2)}, 1.5, NormalSource::Initial, {}};
     all.normal->weights = random_weights(all.normal->faces.indices.size(), 8);
     cases.push_back({"combined", all});
     return cases;
@@ -160,7 +155,7 @@ TEST_SUITE("Session")
         base.hard = HardVertices{{0, 11}, {}};
         std::vector<RecipeCase> cases;
         Recipe soft = base;
-        soft.soft = SoftVertices{{false, every(nv, 1, 1)}, 0.5, {}};
+        soft.soft = SoftVertices{{false, test::stride_indices(nv, 1, 1)}, 0.5, {}};
         soft.soft->vertices.indices.erase(soft.soft->vertices.indices.begin() + 10);
         soft.soft->weights = random_weights(soft.soft->vertices.indices.size(), 11);
         soft.soft->targets.assign(soft.soft->weights.size(), Vec3{0.1, -0.2, 0.3});
@@ -168,12 +163,13 @@ TEST_SUITE("Session")
         for (const auto d : {CentroidDenominator::Paper, CentroidDenominator::Exact})
         {
             Recipe c = base;
-            c.centroid = CentroidConstraints{{false, every(nf, 1)}, 2.0, {}, d};
+            c.centroid = CentroidConstraints{{false, test::stride_indices(nf, 1)}, 2.0, {}, d};
             c.centroid->weights = random_weights(static_cast<size_t>(nf), 12);
             cases.push_back({"centroid", c});
         }
         Recipe normal = base;
-        normal.normal = NormalConstraints{{false, every(nf, 1)}, 3.0, NormalSource::Initial, {}};
+        normal.normal =
+            NormalConstraints{{false, test::stride_indices(nf, 1)}, 3.0, NormalSource::Initial, {}};
         normal.normal->weights = random_weights(static_cast<size_t>(nf), 13);
         cases.push_back({"normal", normal});
         Recipe all = normal;
