@@ -401,6 +401,10 @@ void Session::factor_direct()
     // With the normal term the coordinates couple (u u^T): one system of 3 #free unknowns.
     // Without it the matrix is the same for x, y and z: #free unknowns, 3 right-hand sides.
     direct_blocks_ = normal_.has_value();
+    // Checked before the factorization, which may well factor a singular matrix in
+    // doubles (a pivot of rounding size) and return garbage.
+    if (const std::optional<std::string> why = unheld_part())
+        throw RecipeError("method", *why);
     const SymmetricMatrix a = assemble_free_hessian(
         vertex_count_, free_, direct_blocks_, [&](Index i, HessianColumn& col) {
             edge_.add_hessian_column(i, col);
@@ -411,10 +415,6 @@ void Session::factor_direct()
             if (normal_)
                 normal_->add_hessian_column(i, normals_, col);
         });
-    // Checked before the factorization, which may well factor a singular matrix in
-    // doubles (a pivot of rounding size) and return garbage.
-    if (const std::optional<std::string> why = unheld_part())
-        throw RecipeError("method", *why);
     if (!cholesky_)
         cholesky_ = std::make_unique<SparseCholesky>();
     cholesky_->analyse(a);
@@ -1105,9 +1105,7 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     });
     StepInfo info;
     info.lambda = 1;
-    info.gradient = std::sqrt(deterministic_sum(3 * n, [&](Index m) {
-        return direct_rhs_[static_cast<size_t>(m)] * direct_rhs_[static_cast<size_t>(m)];
-    }));
+    info.gradient = rhs_norm();
     cholesky_->solve(direct_rhs_, direct_blocks_ ? 1 : 3);
     parallel_for(n, [&](Index k) {
         for (int a = 0; a < 3; ++a)
@@ -1135,32 +1133,32 @@ void Session::assemble_rhs(std::span<const Scalar> x)
         normal_->add_rhs(x, normals_, free_, system_.rhs);
 }
 
-Scalar Session::gradient_norm(std::span<const Scalar> x)
+Scalar Session::rhs_norm() const
 {
-    check_size(x, "gradient_norm");
-    assemble_rhs(x);
     return std::sqrt(deterministic_sum(static_cast<Index>(free_.size()), [&](Index k) {
         const Scalar* r = &system_.rhs[3 * static_cast<size_t>(free_[k])];
         return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
     }));
 }
 
-Scalar Session::max_jacobi_displacement(std::span<const Scalar> x)
+Session::Residual Session::residual(std::span<const Scalar> x)
 {
-    check_size(x, "max_jacobi_displacement");
+    check_size(x, "residual");
+    Residual out;
+    assemble_rhs(x);
+    out.gradient = rhs_norm();
+    if (free_.empty())
+        return out;
     if (dx_.size() != 3 * static_cast<size_t>(vertex_count_))
         dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
-    if (system_.diagonal.empty() && system_.inverse.empty())
-        return 0; // no free vertex has a system
-    assemble_rhs(x);
     jacobi_displacements(system_, free_, !system_.inverse.empty(), dx_);
-    Scalar largest = 0;
     for (const Index i : free_)
     {
         const Scalar* d = &dx_[3 * static_cast<size_t>(i)];
-        largest = std::max(largest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+        out.jacobi_displacement =
+            std::max(out.jacobi_displacement, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
     }
-    return largest;
+    return out;
 }
 
 void Session::assemble_displacements(std::span<const Scalar> x, bool use_blocks)
@@ -1243,7 +1241,11 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
             result.shortened.push_back(info.shortened);
             ++result.iterations;
             record(session.energy());
-            const Scalar now = session.gradient_norm(session.positions());
+            // r at the new positions, once: the stopping rule's gradient and the report's
+            // Jacobi displacement.
+            const Session::Residual residual = session.residual(session.positions());
+            const Scalar now = residual.gradient;
+            result.jacobi_displacement = residual.jacobi_displacement;
             result.gradients.push_back(first > 0 ? now / first : 0);
             if (result.gradients.back() <= tolerance || (k > 0 && now >= Scalar(0.5) * last))
             {
@@ -1252,7 +1254,6 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
             }
             last = now;
         }
-        result.jacobi_displacement = session.max_jacobi_displacement(session.positions());
         return result;
     }
     if (!session.fuses_energy())

@@ -66,7 +66,7 @@ struct StepInfo
     //! shortened again after the volume's correction counts again)
     Index shortened = 0;
     //! The direct method: |r(x)| over the free vertices where the step started, r = -1/2
-    //! dE/dx (Session::gradient_norm); -1 for the other methods, which do not compute it.
+    //! dE/dx (Session::Residual::gradient); -1 for the other methods, which do not compute it.
     Scalar gradient = -1;
 };
 
@@ -171,14 +171,18 @@ public:
     void revert_step();
     //! The energy of the kept positions.
     TermEnergies energy() const { return energy(x_); }
-    //! \brief |r(x)|, the Euclidean norm over the free vertices of r = -1/2 dE/dx (the
-    //! normals held): 0 exactly at the minimizer. The direct method's stopping rule
-    //! compares it with the input's.
-    Scalar gradient_norm(std::span<const Scalar> x);
-    //! \brief The largest length of a free vertex's generalized Jacobi displacement
-    //! A_i^-1 r_i at x: how far one more Jacobi step would move a vertex (0 at the
-    //! minimizer; any method's measure of "not converged").
-    Scalar max_jacobi_displacement(std::span<const Scalar> x);
+    //! How far positions are from the minimizer, from one assembly of r = -1/2 dE/dx (the
+    //! normals held) at the free vertices.
+    struct Residual
+    {
+        //! |r(x)|, the Euclidean norm over the free vertices: 0 exactly at the minimizer.
+        //! The direct method's stopping rule compares it with the input's.
+        Scalar gradient = 0;
+        //! The largest length of a free vertex's generalized Jacobi displacement A_i^-1 r_i:
+        //! how far one more Jacobi step would move a vertex.
+        Scalar jacobi_displacement = 0;
+    };
+    Residual residual(std::span<const Scalar> x);
     //! The direct method's factorization (nullptr for the other methods).
     const SparseCholesky* factorization() const { return cholesky_.get(); }
 
@@ -268,6 +272,8 @@ private:
     void assemble_displacements(std::span<const Scalar> x, bool use_blocks);
     //! system_.rhs at the free vertices: r(x) = -1/2 dE/dx.
     void assemble_rhs(std::span<const Scalar> x);
+    //! |system_.rhs| over the free vertices, the same for any thread count.
+    Scalar rhs_norm() const;
     //! The direct method's precomputation: A_ff assembled, analysed and factored.
     //! \throw RecipeError when A_ff is singular (a free part that nothing holds).
     void factor_direct();
@@ -375,7 +381,7 @@ struct SmoothResult
     //! over the free vertices); empty for the other methods.
     std::vector<Scalar> gradients;
     //! The direct method: the largest free vertex's Jacobi displacement at the result
-    //! (Session::max_jacobi_displacement), how far one more Jacobi step would move it; -1
+    //! (Session::Residual), how far one more Jacobi step would move it; -1
     //! for the other methods.
     Scalar jacobi_displacement = -1;
     int iterations = 0; //!< steps taken

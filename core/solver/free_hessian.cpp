@@ -62,49 +62,44 @@ SymmetricMatrix assemble_free_hessian(Index vertex_count, std::span<const Index>
     a.column_start.assign(static_cast<size_t>(a.size) + 1, 0);
     // Two passes over the columns, each on contiguous ranges of free vertices: the counts,
     // then the entries at their places. Every column is written by one range alone.
-    parallel_ranges(n, [&](Index begin, Index end) {
-        HessianColumn col;
-        std::vector<HessianColumn::Entry> entries;
-        for (Index k = begin; k < end; ++k)
-        {
-            free_entries(free[k], k, free_index, col, column, entries);
-            for (int c = 0; c < per; ++c)
+    // each_column(emit) calls emit(at, c, k, entries) for matrix column `at`, the c-th of
+    // the k-th free vertex, with that vertex's entries sorted.
+    const auto each_column = [&](auto&& emit) {
+        parallel_ranges(n, [&](Index begin, Index end) {
+            HessianColumn col;
+            std::vector<HessianColumn::Entry> entries;
+            for (Index k = begin; k < end; ++k)
             {
-                std::int64_t count = 0;
-                if (blocks)
-                    block_column(k, c, entries, [&](std::int64_t, Scalar) { ++count; });
-                else
-                    count = static_cast<std::int64_t>(entries.size());
-                a.column_start[static_cast<size_t>(std::int64_t{k} * per + c) + 1] = count;
+                free_entries(free[k], k, free_index, col, column, entries);
+                for (int c = 0; c < per; ++c)
+                    emit(static_cast<size_t>(std::int64_t{k} * per + c), c, k, entries);
             }
-        }
+        });
+    };
+    // The entries of matrix column c of free vertex k: put(row, value) in ascending rows.
+    const auto column_entries = [&](int c, Index k, const auto& entries, auto&& put) {
+        if (blocks)
+            block_column(k, c, entries, put);
+        else
+            for (const HessianColumn::Entry& e : entries)
+                put(e.vertex, e.scalar);
+    };
+    each_column([&](size_t at, int c, Index k, const auto& entries) {
+        std::int64_t count = 0;
+        column_entries(c, k, entries, [&](std::int64_t, Scalar) { ++count; });
+        a.column_start[at + 1] = count;
     });
     for (size_t c = 1; c < a.column_start.size(); ++c)
         a.column_start[c] += a.column_start[c - 1];
     a.row.resize(static_cast<size_t>(a.column_start.back()));
     a.value.resize(a.row.size());
-    parallel_ranges(n, [&](Index begin, Index end) {
-        HessianColumn col;
-        std::vector<HessianColumn::Entry> entries;
-        for (Index k = begin; k < end; ++k)
-        {
-            free_entries(free[k], k, free_index, col, column, entries);
-            for (int c = 0; c < per; ++c)
-            {
-                size_t at = static_cast<size_t>(
-                    a.column_start[static_cast<size_t>(std::int64_t{k} * per + c)]);
-                const auto put = [&](std::int64_t row, Scalar v) {
-                    a.row[at] = row;
-                    a.value[at] = v;
-                    ++at;
-                };
-                if (blocks)
-                    block_column(k, c, entries, put);
-                else
-                    for (const HessianColumn::Entry& e : entries)
-                        put(e.vertex, e.scalar);
-            }
-        }
+    each_column([&](size_t at, int c, Index k, const auto& entries) {
+        auto next = static_cast<size_t>(a.column_start[at]);
+        column_entries(c, k, entries, [&](std::int64_t row, Scalar v) {
+            a.row[next] = row;
+            a.value[next] = v;
+            ++next;
+        });
     });
     return a;
 }
