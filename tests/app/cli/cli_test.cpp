@@ -170,6 +170,27 @@ TEST_SUITE("Cli")
         CHECK(j["lambda"][0].get<double>() != 0.5);
     }
 
+    TEST_CASE("--method direct: the minimizer in one solve, its gradient and factor reported")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string recipe = (dir / "pins.json").string();
+        // Two pins lifted on the bunny (one component, which they hold): a unique minimizer.
+        test::write_bytes(recipe, R"({"iterations": 5, "hard": {"vertices": [0, 100],
+            "targets": [[0, 0.2, 0], [0, 0.2, 0.05]]}})");
+        const Run r =
+            cli("smooth " + bunny() + " -o " + test::shell_quote((dir / "o.obj").string()) +
+                " --recipe " + test::shell_quote(recipe) + " --method direct --report -");
+        REQUIRE(r.code == 0);
+        const auto j = nlohmann::json::parse(r.out);
+        REQUIRE(j.contains("direct"));
+        CHECK(j["iterations"].get<int>() <= 2);
+        CHECK(j["stopped_by_tolerance"] == true);
+        CHECK(j["direct"]["relative_gradient"].back().get<double>() <= 1e-12);
+        CHECK(j["direct"]["jacobi_displacement"].get<double>() <= 1e-9);
+        CHECK(j["direct"]["unknowns"].get<long long>() == 34835 - 2);
+        CHECK(j["direct"]["factor_nonzeros"].get<double>() > 34835);
+    }
+
     TEST_CASE("noise is deterministic for a seed")
     {
         const fs::path dir = test::temp_dir();

@@ -130,6 +130,27 @@ def test_session_hard_targets_move_the_pins():
         s.set_hard_targets(np.full((2, 3), np.nan))
 
 
+def test_session_solve_gives_the_direct_minimizer_again_after_new_targets(tmp_path):
+    V, F = meshfair.read(BUNNY)
+    recipe = {"method": "direct", "hard": {"vertices": [0, 100]}}
+    s = meshfair.Session(V, F, recipe)
+    first = s.solve()
+    assert first["iterations"] <= 2 and first["stopped_by_tolerance"]
+    assert first["relative_gradient"][-1] <= 1e-12
+    # New targets: the session's factorization solves again, and gives what a new
+    # session (a new factorization) gives from the same start.
+    targets = V[[0, 100]] + [0.0, 0.0, 0.05]
+    s.set_hard_targets(targets)
+    start = s.positions
+    again = s.solve()
+    assert again["relative_gradient"][-1] <= 1e-12
+    assert np.array_equal(s.positions[[0, 100]], targets)
+    fresh = meshfair.Session(start, F, {"method": "direct", "hard": {"vertices": [0, 100]}})
+    fresh.solve()
+    assert np.allclose(s.positions, fresh.positions, rtol=0, atol=1e-9)
+    assert not np.allclose(s.positions, start, rtol=0, atol=1e-6)
+
+
 def test_errors_are_python_exceptions_with_the_core_messages(tmp_path):
     V, F = meshfair.read(BUNNY)
     with pytest.raises(ValueError, match=r"soft\.vertices\[1\]: vertex 99999 is out of range"):
