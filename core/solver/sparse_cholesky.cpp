@@ -3,8 +3,10 @@
 #include "core/solver/sparse_cholesky.h"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <chrono>
+#include <mutex>
 #include <string>
 #include <type_traits>
 
@@ -29,8 +31,72 @@ void SymmetricMatrix::multiply(std::span<const Scalar> x, std::span<Scalar> y) c
         }
 }
 
+namespace {
+
+// CHOLMOD is loaded on the first factorization, not with the program: its BLAS
+// (OpenBLAS) starts a thread pool when it is loaded, which every process would pay for
+// (about 3 ms, and threads that a traced or forked process does not expect), although
+// only the direct method needs it. The library's name is its SONAME, found by CMake.
+struct CholmodLibrary
+{
+    decltype(&cholmod_l_start) start = nullptr;
+    decltype(&cholmod_l_finish) finish = nullptr;
+    decltype(&cholmod_l_analyze) analyze = nullptr;
+    decltype(&cholmod_l_factorize) factorize = nullptr;
+    decltype(&cholmod_l_solve) solve = nullptr;
+    decltype(&cholmod_l_free_factor) free_factor = nullptr;
+    decltype(&cholmod_l_free_dense) free_dense = nullptr;
+};
+
+template <class Function>
+void bind(void* handle, const char* name, Function& f)
+{
+    f = reinterpret_cast<Function>(dlsym(handle, name));
+    if (f == nullptr)
+        throw SolverError(std::string("sparse Cholesky: ") + MESHFAIR_CHOLMOD_LIBRARY + " has no " +
+                          name);
+}
+
+const CholmodLibrary& cholmod_library()
+{
+    static CholmodLibrary library;
+    static std::string failure;
+    static std::once_flag once;
+    std::call_once(once, [] {
+        // Never unloaded: the factor and the BLAS threads live as long as the process.
+        void* handle = dlopen(MESHFAIR_CHOLMOD_LIBRARY, RTLD_NOW | RTLD_LOCAL);
+        if (handle == nullptr)
+        {
+            const char* reason = dlerror();
+            failure = std::string("sparse Cholesky: cannot load ") + MESHFAIR_CHOLMOD_LIBRARY +
+                      " (Debian package libcholmod3): " + (reason ? reason : "unknown reason");
+            return;
+        }
+        try
+        {
+            bind(handle, "cholmod_l_start", library.start);
+            bind(handle, "cholmod_l_finish", library.finish);
+            bind(handle, "cholmod_l_analyze", library.analyze);
+            bind(handle, "cholmod_l_factorize", library.factorize);
+            bind(handle, "cholmod_l_solve", library.solve);
+            bind(handle, "cholmod_l_free_factor", library.free_factor);
+            bind(handle, "cholmod_l_free_dense", library.free_dense);
+        }
+        catch (const SolverError& e)
+        {
+            failure = e.what();
+        }
+    });
+    if (!failure.empty())
+        throw SolverError(failure);
+    return library;
+}
+
+} // namespace
+
 struct SparseCholesky::Cholmod
 {
+    const CholmodLibrary& library = cholmod_library();
     cholmod_common common{};
     cholmod_factor* factor = nullptr;
 };
@@ -75,7 +141,7 @@ void check_matrix(const SymmetricMatrix& a, const char* what)
 SparseCholesky::SparseCholesky() : cholmod_(std::make_unique<Cholmod>())
 {
     cholmod_common& c = cholmod_->common;
-    cholmod_l_start(&c);
+    cholmod_->library.start(&c);
     c.print = 0; // the library never prints; failures come back as exceptions
     c.supernodal = CHOLMOD_SUPERNODAL;
     // Never fall back to a partial factor: a matrix that is not positive definite is
@@ -87,8 +153,8 @@ SparseCholesky::~SparseCholesky()
 {
     cholmod_common& c = cholmod_->common;
     if (cholmod_->factor != nullptr)
-        cholmod_l_free_factor(&cholmod_->factor, &c);
-    cholmod_l_finish(&c);
+        cholmod_->library.free_factor(&cholmod_->factor, &c);
+    cholmod_->library.finish(&c);
 }
 
 void SparseCholesky::analyse(const SymmetricMatrix& a)
@@ -96,13 +162,13 @@ void SparseCholesky::analyse(const SymmetricMatrix& a)
     check_matrix(a, "analyse");
     cholmod_common& c = cholmod_->common;
     if (cholmod_->factor != nullptr)
-        cholmod_l_free_factor(&cholmod_->factor, &c);
+        cholmod_->library.free_factor(&cholmod_->factor, &c);
     factored_ = false;
     size_ = a.size;
     stats_ = {};
     const auto start = std::chrono::steady_clock::now();
     cholmod_sparse s = view(a);
-    cholmod_->factor = cholmod_l_analyze(&s, &c);
+    cholmod_->factor = cholmod_->library.analyze(&s, &c);
     if (cholmod_->factor == nullptr || c.status < CHOLMOD_OK)
         throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY
                               ? "sparse Cholesky: out of memory in the analysis"
@@ -121,7 +187,7 @@ bool SparseCholesky::factor(const SymmetricMatrix& a)
     factored_ = false;
     const auto start = std::chrono::steady_clock::now();
     cholmod_sparse s = view(a);
-    cholmod_l_factorize(&s, cholmod_->factor, &c);
+    cholmod_->library.factorize(&s, cholmod_->factor, &c);
     stats_.factor_seconds = seconds_since(start);
     if (c.status == CHOLMOD_NOT_POSDEF)
         return false;
@@ -155,14 +221,14 @@ void SparseCholesky::solve(std::span<Scalar> b, int columns) const
     rhs.x = b.data();
     rhs.xtype = CHOLMOD_REAL;
     rhs.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense* x = cholmod_l_solve(CHOLMOD_A, cholmod_->factor, &rhs, &c);
+    cholmod_dense* x = cholmod_->library.solve(CHOLMOD_A, cholmod_->factor, &rhs, &c);
     if (x == nullptr)
         throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY
                               ? "sparse Cholesky: out of memory in the solve"
                               : "sparse Cholesky: the solve failed");
     const Scalar* values = static_cast<const Scalar*>(x->x);
     std::copy(values, values + b.size(), b.begin());
-    cholmod_l_free_dense(&x, &c);
+    cholmod_->library.free_dense(&x, &c);
 }
 
 } // namespace meshfair

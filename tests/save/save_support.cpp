@@ -364,16 +364,12 @@ std::vector<std::string> save_args(const fs::path& in, const fs::path& out)
 // LeakSanitizer cannot run under ptrace; in the sanitizer build the traced CLI runs
 // without it (ASan and UBSan stay on). Harmless in other builds.
 const char* const kTracedEnvironment = "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1";
-// OpenBLAS (under CHOLMOD, the direct method's) starts its thread pool when it is loaded:
-// a second thread's calls would interleave with the save's and change their count.
-const char* const kOneBlasThread = "OPENBLAS_NUM_THREADS=1";
 
 std::vector<std::string> under_strace(const std::string& inject,
                                       const std::vector<std::string>& argv)
 {
-    std::vector<std::string> all{strace_path(),      "-f", "-qq",          "-E",
-                                 kTracedEnvironment, "-E", kOneBlasThread, "-o",
-                                 "/dev/null",        "-e", inject,         "--"};
+    std::vector<std::string> all{strace_path(), "-f",        "-qq", "-E",   kTracedEnvironment,
+                                 "-o",          "/dev/null", "-e",  inject, "--"};
     all.insert(all.end(), argv.begin(), argv.end());
     return all;
 }
@@ -384,9 +380,8 @@ std::vector<Syscall> trace_syscalls(const std::vector<std::string>& argv, const 
     for (int attempt = 0; attempt < 3; ++attempt)
     {
         const fs::path log = log_dir / ("strace-" + std::to_string(::getpid()) + ".log");
-        std::vector<std::string> all{strace_path(),      "-f", "-qq",          "-E",
-                                     kTracedEnvironment, "-E", kOneBlasThread, "-o",
-                                     log.string(),       "--"};
+        std::vector<std::string> all{strace_path(),      "-f", "-qq",        "-E",
+                                     kTracedEnvironment, "-o", log.string(), "--"};
         all.insert(all.end(), argv.begin(), argv.end());
         const Result r = run(all, log_dir);
         if (r.code != 0)

@@ -31,6 +31,15 @@ std::string bunny()
     return test::shell_quote((test::assets_dir() / "bunny.obj").string());
 }
 
+// Two pins lifted on the bunny (one component, which they hold): a unique minimizer.
+std::string pins_recipe(const fs::path& dir)
+{
+    const std::string recipe = (dir / "pins.json").string();
+    test::write_bytes(recipe, R"({"iterations": 5, "hard": {"vertices": [0, 100],
+        "targets": [[0, 0.2, 0], [0, 0.2, 0.05]]}})");
+    return recipe;
+}
+
 // A textured scan patch as exporters write it: a wavy 20 x 20 quad grid with a texture
 // seam down its middle (the right half's faces have their own texture coordinates), one
 // normal and one colour per vertex, a material library, a group and a smoothing group.
@@ -173,10 +182,7 @@ TEST_SUITE("Cli")
     TEST_CASE("--method direct: the minimizer in one solve, its gradient and factor reported")
     {
         const fs::path dir = test::temp_dir();
-        const std::string recipe = (dir / "pins.json").string();
-        // Two pins lifted on the bunny (one component, which they hold): a unique minimizer.
-        test::write_bytes(recipe, R"({"iterations": 5, "hard": {"vertices": [0, 100],
-            "targets": [[0, 0.2, 0], [0, 0.2, 0.05]]}})");
+        const std::string recipe = pins_recipe(dir);
         const Run r =
             cli("smooth " + bunny() + " -o " + test::shell_quote((dir / "o.obj").string()) +
                 " --recipe " + test::shell_quote(recipe) + " --method direct --report -");
@@ -189,6 +195,23 @@ TEST_SUITE("Cli")
         CHECK(j["direct"]["jacobi_displacement"].get<double>() <= 1e-9);
         CHECK(j["direct"]["unknowns"].get<long long>() == 34835 - 2);
         CHECK(j["direct"]["factor_nonzeros"].get<double>() > 34835);
+    }
+
+    TEST_CASE("CHOLMOD and its BLAS are loaded by the direct method only")
+    {
+        // The dynamic loader names every library it opens (LD_DEBUG=files): a process that
+        // never factors must not pay for loading CHOLMOD and starting OpenBLAS's threads.
+        const fs::path dir = test::temp_dir();
+        const auto loads_cholmod = [&](const std::string& method) {
+            const test::CommandRun r = test::run_command(
+                "LD_DEBUG=files " + test::shell_quote(MESHFAIR_CLI) + " smooth " + bunny() +
+                " -o " + test::shell_quote((dir / (method + ".obj")).string()) + " --recipe " +
+                test::shell_quote(pins_recipe(dir)) + " --method " + method + " -q");
+            REQUIRE(r.code == 0);
+            return r.err.find("file=libcholmod") != std::string::npos;
+        };
+        CHECK_FALSE(loads_cholmod("jacobi"));
+        CHECK(loads_cholmod("direct"));
     }
 
     TEST_CASE("noise is deterministic for a seed")
