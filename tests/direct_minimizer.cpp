@@ -6,6 +6,9 @@
 
 #include <Eigen/Sparse>
 
+#include <map>
+#include <set>
+
 #include "core/geometry/face_geometry.h"
 
 namespace meshfair::test {
@@ -18,6 +21,51 @@ Scalar element_weight(Scalar mu, const std::vector<Scalar>& weights, size_t k)
     return weights.empty() ? mu : mu * weights[k];
 }
 
+// mu L^T L of the squared umbrella operator, from the faces alone: each edge's face count
+// (1: a boundary edge), each vertex's neighbours, then rows u_k = (1/m_k) sum_{U(k)} x_j -
+// x_k with U(k) all neighbours inside, the two boundary neighbours on a boundary, and no
+// row for other boundary vertices (BendingTerm's definition).
+template <class Add>
+void add_bending(const Mesh& m, double mu, Add& add)
+{
+    const Index nv = m.vertex_count();
+    std::map<std::pair<Index, Index>, int> faces_at_edge;
+    for (Index f = 0; f < m.face_count(); ++f)
+    {
+        const auto face = m.face(f);
+        for (size_t c = 0; c < face.size(); ++c)
+        {
+            const Index i = face[c], j = face[(c + 1) % face.size()];
+            ++faces_at_edge[{std::min(i, j), std::max(i, j)}];
+        }
+    }
+    std::vector<std::set<Index>> neighbours(nv), boundary(nv);
+    for (const auto& [edge, count] : faces_at_edge)
+    {
+        neighbours[edge.first].insert(edge.second);
+        neighbours[edge.second].insert(edge.first);
+        if (count == 1)
+        {
+            boundary[edge.first].insert(edge.second);
+            boundary[edge.second].insert(edge.first);
+        }
+    }
+    for (Index k = 0; k < nv; ++k)
+    {
+        const std::set<Index>& u = boundary[k].empty() ? neighbours[k] : boundary[k];
+        if (u.empty() || (!boundary[k].empty() && boundary[k].size() != 2))
+            continue;
+        // Row l_k: -1 at k, 1/m at each j of U(k); A += mu l_k^T l_k.
+        std::vector<std::pair<Index, double>> row{{k, -1.0}};
+        for (const Index j : u)
+            row.emplace_back(j, 1.0 / static_cast<double>(u.size()));
+        for (const auto& [p, vp] : row)
+            for (const auto& [q, vq] : row)
+                for (int a = 0; a < 3; ++a)
+                    add(3 * p + a, 3 * q + a, mu * vp * vq);
+    }
+}
+
 } // namespace
 
 std::vector<Scalar> direct_minimizer(const Mesh& m, const Topology& t, const Recipe& r,
@@ -28,17 +76,20 @@ std::vector<Scalar> direct_minimizer(const Mesh& m, const Topology& t, const Rec
     std::vector<Eigen::Triplet<double>> entries;
     Eigen::VectorXd b = Eigen::VectorXd::Zero(n);
     auto add = [&](Index p, Index q, double v) { entries.emplace_back(p, q, v); };
+    const double membrane = r.bending ? r.bending->membrane : 1.0;
     for (Index e = 0; e < t.edge_count(); ++e)
     {
         const Index i = t.edge_vertices[2 * e], j = t.edge_vertices[2 * e + 1];
         for (int a = 0; a < 3; ++a)
         {
-            add(3 * i + a, 3 * i + a, 1);
-            add(3 * j + a, 3 * j + a, 1);
-            add(3 * i + a, 3 * j + a, -1);
-            add(3 * j + a, 3 * i + a, -1);
+            add(3 * i + a, 3 * i + a, membrane);
+            add(3 * j + a, 3 * j + a, membrane);
+            add(3 * i + a, 3 * j + a, -membrane);
+            add(3 * j + a, 3 * i + a, -membrane);
         }
     }
+    if (r.bending)
+        add_bending(m, r.bending->mu, add);
     const std::span<const Scalar> x0 = m.positions;
     if (r.soft)
         for (size_t k = 0; k < r.soft->vertices.indices.size(); ++k)

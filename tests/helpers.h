@@ -66,6 +66,12 @@ Mesh mixed_polygons(); //!< open patch of triangles, quads and a pentagon
 //! b's vertices and faces after a's (two components when apart), b moved by `shift`.
 Mesh joined(const Mesh& a, const Mesh& b, Vec3 shift);
 
+//! a . b
+inline Scalar dot(const Vec3& a, const Vec3& b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
 //! Restores the default thread count when a test case ends, whatever happens.
 struct ThreadCountGuard
 {

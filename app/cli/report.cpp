@@ -121,7 +121,8 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
         Scalar TermEnergies::*field;
     };
     const Term terms[] = {
-        {"edge", true, &TermEnergies::edge},
+        {"edge", !recipe.bending || recipe.bending->membrane > 0, &TermEnergies::edge},
+        {"bending", recipe.bending.has_value(), &TermEnergies::bending},
         {"soft", recipe.soft.has_value(), &TermEnergies::soft},
         {"centroid", recipe.centroid.has_value(), &TermEnergies::centroid},
         {"normal", recipe.normal.has_value(), &TermEnergies::normal},

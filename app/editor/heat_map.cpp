@@ -10,12 +10,13 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<EnergyTerm, std::string_view>, 5> kTermNames = {{
+constexpr std::array<std::pair<EnergyTerm, std::string_view>, 6> kTermNames = {{
     {EnergyTerm::Total, "total"},
     {EnergyTerm::Edge, "edge"},
     {EnergyTerm::Soft, "anchor"},
     {EnergyTerm::Centroid, "centroid"},
     {EnergyTerm::Normal, "normal"},
+    {EnergyTerm::Bending, "bending"},
 }};
 
 } // namespace

@@ -181,6 +181,7 @@ py::dict energies_of(const TermEnergies& e)
     d["normal"] = e.normal;
     d["normal_smoothing"] = e.normal_smoothing;
     d["normal_soft"] = e.normal_soft;
+    d["bending"] = e.bending;
     d["total"] = e.total();
     return d;
 }

@@ -26,6 +26,12 @@ class EdgeTerm
 {
 public:
     explicit EdgeTerm(const Topology& topology) : topology_(&topology) {}
+    //! \brief Scales the term by w >= 0: w E_L (1, the paper's, by default; the bending
+    //! section's "membrane" weight). Every method below scales with it, except the fused
+    //! step's add_vertex_rhs and vertex_part, which are the paper's w = 1 (the session does
+    //! not fuse a step with another weight). w = 1 gives the same bits as no weight.
+    void set_weight(Scalar w) { weight_ = w; }
+    Scalar weight() const { return weight_; }
 
     Scalar energy(std::span<const Scalar> x) const;
     //! \brief Adds each vertex's share of energy(x) to per_vertex (#V): half of each
@@ -40,11 +46,11 @@ public:
     void add_hessian_column(Index i, HessianColumn& column) const
     {
         const std::span<const Index> neighbors = topology_->neighbors(i);
-        column.add(i, static_cast<Scalar>(neighbors.size()));
+        column.add(i, weight_ * static_cast<Scalar>(neighbors.size()));
         for (const Index j : neighbors)
-            column.add(j, -1);
+            column.add(j, -weight_);
     }
-    //! rhs_i += sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
+    //! rhs_i += w sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
                  std::span<Scalar> rhs) const;
     //! The same for one vertex: r[0..2] += sum_{j in V(i)} (x_j - x_i). Inline, for the
@@ -94,6 +100,7 @@ public:
 
 private:
     const Topology* topology_;
+    Scalar weight_ = 1;
 };
 
 } // namespace meshfair

@@ -286,6 +286,11 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                               "needs a \"normal\" section (its faces and mu couple x "
                               "and u)");
     }
+    if (r.bending)
+    {
+        check_weight(r.bending->mu, "bending.mu");
+        check_weight(r.bending->membrane, "bending.membrane");
+    }
     if (r.falloff)
     {
         const Falloff& f = *r.falloff;

@@ -124,6 +124,17 @@ struct Joint
     Scalar gamma = 1;
 };
 
+//! \brief The thin-plate term (BendingTerm): mu times the squared umbrella operator over
+//! every vertex, so a region meets the fixed rest without a crease and a dragged pin
+//! raises a dome. `membrane` weighs the edge term beside it: 0 (the default) is the thin
+//! plate alone, whose minimizer is the smooth dome; 1 is the paper's edge term as well.
+struct Bending
+{
+    Scalar mu = 1;
+    Scalar membrane = 0;
+    bool operator==(const Bending&) const = default;
+};
+
 //! \brief Soft anchors that fade with the distance along the surface from the fixed rest
 //! around a region (its border) and from the pins (hard vertices): vertex i at distance d
 //! is held with mu * curve(d / radius) (0 from the radius on), toward its input position
@@ -154,7 +165,8 @@ struct KeepVolume
 
 //! \brief Everything one smoothing run needs besides the mesh: the constraint sets and
 //! weights of \cite taubin_2012 ("Combining all the Smoothing Strategies") and the
-//! iteration settings. Absent sections are inactive; the edge term is always on.
+//! iteration settings. Absent sections are inactive; the edge term is always on (scaled by
+//! the bending section's membrane weight when there is one).
 //! The JSON form is documented in docs/recipe.md (see recipe_json.h).
 struct Recipe
 {
@@ -175,6 +187,7 @@ struct Recipe
     std::optional<NormalConstraints> normal;
     std::optional<NormalSmoothing> normal_smoothing;
     std::optional<Joint> joint;
+    std::optional<Bending> bending;
     std::optional<KeepVolume> volume;
     std::optional<Falloff> falloff;
 };

@@ -435,10 +435,10 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
-    expect_object(
-        j, "",
-        {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard", "soft",
-         "centroid", "normal", "normal_smoothing", "joint", "volume", "falloff", "prevent_flips"});
+    expect_object(j, "",
+                  {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
+                   "soft", "centroid", "normal", "normal_smoothing", "joint", "bending", "volume",
+                   "falloff", "prevent_flips"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -530,6 +530,17 @@ Recipe parse_recipe_json(const Json& j)
         if (s.contains("gamma"))
             joint.gamma = weight(s["gamma"], "joint.gamma");
         r.joint = joint;
+    }
+    if (j.contains("bending"))
+    {
+        const Json& s = j["bending"];
+        expect_object(s, "bending", {"mu", "membrane"});
+        Bending bending;
+        if (s.contains("mu"))
+            bending.mu = weight(s["mu"], "bending.mu");
+        if (s.contains("membrane"))
+            bending.membrane = weight(s["membrane"], "bending.membrane");
+        r.bending = bending;
     }
     if (j.contains("volume"))
     {
@@ -709,6 +720,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
     }
     if (r.joint)
         j["joint"] = {{"gamma", r.joint->gamma}};
+    if (r.bending)
+        j["bending"] = {{"mu", r.bending->mu}, {"membrane", r.bending->membrane}};
     if (r.volume)
     {
         j["volume"] = Json::object();

@@ -76,6 +76,8 @@ TopologyParts required_topology(const Recipe& recipe)
         parts = parts | TopologyParts::Dual;
     if (recipe.volume)
         parts = parts | TopologyParts::Corners | TopologyParts::Edges;
+    if (recipe.bending) // its umbrellas follow the open boundaries
+        parts = parts | TopologyParts::Edges;
     if (recipe.prevent_flips)
         parts = parts | TopologyParts::Corners;
     return parts;
@@ -268,9 +270,16 @@ void Session::precompute()
             guard_start_.assign(3 * static_cast<size_t>(nv), 0);
     }
 
+    edge_.set_weight(recipe_.bending ? recipe_.bending->membrane : Scalar(1));
+    bending_.reset();
+    if (recipe_.bending)
+        bending_.emplace(*topology_, recipe_.bending->mu);
+
     // The Jacobi system: constant diagonal, blocks while the normals stay fixed.
     system_.diagonal.assign(nv, 0);
     edge_.add_diagonal(system_.diagonal);
+    if (bending_)
+        bending_->add_diagonal(system_.diagonal);
     if (soft_)
         soft_->add_diagonal(system_.diagonal);
     if (centroid_)
@@ -279,6 +288,8 @@ void Session::precompute()
     for (Index v = 0; v < nv; ++v)
         if (!fixed[v] && system_.diagonal[v] > 0)
             free_.push_back(v);
+    if (bending_)
+        bending_->set_free(free_);
     system_.block.clear();
     system_.inverse.clear();
     // On triangles the fused step takes the normal term's corner parts from per-face
@@ -408,6 +419,8 @@ void Session::factor_direct()
     const SymmetricMatrix a = assemble_free_hessian(
         vertex_count_, free_, direct_blocks_, [&](Index i, HessianColumn& col) {
             edge_.add_hessian_column(i, col);
+            if (bending_)
+                bending_->add_hessian_column(i, col);
             if (soft_)
                 soft_->add_hessian_column(i, col);
             if (centroid_)
@@ -682,8 +695,10 @@ void Session::check_size(std::span<const Scalar> x, const char* what) const
 bool Session::fused() const
 {
     // Taubin's method is two such steps, of lambda and of mu.
+    // The fused kernels hold the paper's terms; the bending term (and the edge term's
+    // weight that comes with it) takes the general step.
     return (recipe_.method == Method::Jacobi || recipe_.method == Method::Taubin) &&
-           !recipe_.optimal_step && !joint_;
+           !recipe_.optimal_step && !joint_ && !recipe_.bending;
 }
 
 Session::FacePass Session::face_pass(const std::vector<Index>& active, const IndexList& listed)
@@ -1058,6 +1073,8 @@ StepInfo Session::general_step(std::span<Scalar> x)
     if (recipe_.optimal_step)
     {
         Scalar q = edge_.quadratic(dx_);
+        if (bending_)
+            q += bending_->quadratic(dx_);
         if (soft_)
             q += soft_->quadratic(dx_);
         if (centroid_)
@@ -1125,6 +1142,8 @@ void Session::assemble_rhs(std::span<const Scalar> x)
     parallel_for(static_cast<Index>(free_.size()),
                  [&](Index k) { std::fill_n(&system_.rhs[3 * free_[k]], 3, Scalar(0)); });
     edge_.add_rhs(x, free_, system_.rhs);
+    if (bending_)
+        bending_->add_rhs(x, system_.rhs);
     if (soft_)
         soft_->add_rhs(x, free_, system_.rhs);
     if (centroid_)
@@ -1184,12 +1203,16 @@ void Session::vertex_energy(std::span<const Scalar> x, EnergyTerm term,
         centroid_->add_vertex_energy(x, per_vertex);
     if (normal_ && (all || term == EnergyTerm::Normal))
         normal_->add_vertex_energy(x, normals_, per_vertex);
+    if (bending_ && (all || term == EnergyTerm::Bending))
+        bending_->add_vertex_energy(x, per_vertex);
 }
 
 TermEnergies Session::energy(std::span<const Scalar> x) const
 {
     TermEnergies e;
     e.edge = edge_.energy(x);
+    if (bending_)
+        e.bending = bending_->energy(x);
     if (soft_)
         e.soft = soft_->energy(x);
     if (centroid_)

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/bending_term.h"
 #include "core/energies/edge_term.h"
 #include "core/energies/face_centroid_term.h"
 #include "core/energies/face_normal_term.h"
@@ -32,9 +33,10 @@ struct TermEnergies
     Scalar normal = 0;           //!< face-normal constraints, each face-edge pair once
     Scalar normal_smoothing = 0; //!< joint mode: gamma sum_{E*} |u_f - u_g|^2
     Scalar normal_soft = 0;      //!< joint mode: soft normal constraints on u
+    Scalar bending = 0;          //!< mu sum_k |u_k|^2, the squared umbrella operator
     Scalar total() const
     {
-        return edge + soft + centroid + normal + normal_smoothing + normal_soft;
+        return edge + soft + centroid + normal + normal_smoothing + normal_soft + bending;
     }
     TermEnergies& operator+=(const TermEnergies& o)
     {
@@ -44,6 +46,7 @@ struct TermEnergies
         normal += o.normal;
         normal_smoothing += o.normal_smoothing;
         normal_soft += o.normal_soft;
+        bending += o.bending;
         return *this;
     }
 };
@@ -55,7 +58,8 @@ enum class EnergyTerm
     Edge,
     Soft,
     Centroid,
-    Normal
+    Normal,
+    Bending
 };
 
 //! What one step did.
@@ -305,6 +309,7 @@ private:
     std::optional<NormalSmoothingTerm> smoothing_;
     std::optional<BilateralFaceWeights> bilateral_; //!< the smoothing term's weights, if any
     std::optional<JointTerm> joint_;
+    std::optional<BendingTerm> bending_;
     int joint_steps_ = 0; //!< joint steps since the precomputation (for reweighting)
     std::optional<VolumeConstraint> volume_;
     std::optional<FlipGuard> guard_;

@@ -2,7 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 // Read -> topology -> a recipe with every term -> 3 solver steps; every coordinate must
 // stay finite (or the recipe be refused with an InvalidInputError). Steering: byte 0
-// picks the recipe's variants (bit 0 gradient descent, 1 optimal step, 2 region, 3 hard
+// picks the recipe's variants (bit 0 gradient descent, 1 optimal step, both: the direct
+// method with the bending term instead, 2 region, 3 hard
 // targets, 4 exact centroid denominator, 5 initial normals (with bit 7: custom ones)
 // instead of smoothed, 6 joint mode, 7 soft vertices as a list instead of "all"); the
 // rest is a mesh file of any format, recognized by its content (sniff_format).
@@ -85,6 +86,14 @@ Recipe recipe_for(const Mesh& mesh, unsigned flags)
     }
     if (flags & 64)
         r.joint = Joint{0.5};
+    if ((flags & 3) == 3)
+    {
+        // The direct method with every term it takes (not joint mode): one factorization.
+        r.method = Method::Direct;
+        r.optimal_step = false;
+        r.joint.reset();
+        r.bending = Bending{0.7, 0.5};
+    }
     return r;
 }
 

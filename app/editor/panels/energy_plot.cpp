@@ -41,7 +41,8 @@ void energy_plot(const PanelContext& ui)
     const Curve curves[] = {{&TermEnergies::edge, "edge", IM_COL32(120, 200, 120, 255)},
                             {&TermEnergies::soft, "anchor", IM_COL32(240, 190, 40, 255)},
                             {&TermEnergies::centroid, "centroid", IM_COL32(70, 140, 240, 255)},
-                            {&TermEnergies::normal, "normal", IM_COL32(180, 90, 230, 255)}};
+                            {&TermEnergies::normal, "normal", IM_COL32(180, 90, 230, 255)},
+                            {&TermEnergies::bending, "bending", IM_COL32(240, 110, 90, 255)}};
     // Each curve relative to its own largest value over the run, so that terms of very
     // different sizes all show how they converge (a term that starts at 0, as a soft
     // constraint on the input does, rises and settles).

@@ -193,10 +193,11 @@ void solver_panel(const PanelContext& ui)
                        document.reproducible ? "" : " (recipe changed during the run)");
     if (!state.offscreen) // a time would make offscreen frames differ from run to run
         ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
-    const char* heat_items[] = {"off", "total", "edge", "anchor", "centroid", "normal"};
+    const char* heat_items[] = {"off", "total", "edge", "anchor", "centroid", "normal", "bending"};
     int heat = state.heat_map ? 1 + static_cast<int>(*state.heat_map) : 0;
     ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("heat map: energy share", &heat, heat_items, 6))
+    if (ImGui::Combo("heat map: energy share", &heat, heat_items,
+                     static_cast<int>(std::size(heat_items))))
         ui.give(SetHeatMap{heat == 0
                                ? std::nullopt
                                : std::optional<EnergyTerm>(static_cast<EnergyTerm>(heat - 1))});

@@ -200,10 +200,7 @@ Volumes capped_volumes(const Mesh& m)
     return out;
 }
 
-Scalar dot(const Vec3& a, const Vec3& b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using test::dot;
 
 //! \brief Faces turned over: their Newell vector more than 90 degrees from the input's.
 //! Counted among the faces that lie in the input surface, within 60 degrees of the surface

@@ -107,7 +107,7 @@ def test_session_steps_give_smooth_positions(tmp_path):
     s = meshfair.Session(V, F, recipe)
     before = s.energy()
     assert set(before) == {"edge", "soft", "centroid", "normal", "normal_smoothing",
-                           "normal_soft", "total"}
+                           "normal_soft", "bending", "total"}
     assert np.array_equal(s.positions, V)
     s.step(3)
     s.step()

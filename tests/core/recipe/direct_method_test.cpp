@@ -60,6 +60,17 @@ std::vector<RecipeCase> direct_cases(const Mesh& m)
     for (Index f = 0; f < nf; ++f)
         all.normal->weights[static_cast<size_t>(f)] = 0.25 + static_cast<Scalar>(f % 4);
     cases.push_back({"every term, weighted", all});
+    Recipe plate;
+    plate.method = Method::Direct;
+    plate.bending = Bending{2.0, 0.0};
+    plate.hard = HardVertices{{0, nv / 2, nv - 1}, {}};
+    for (const Index v : plate.hard->vertices)
+        plate.hard->targets.push_back(
+            {m.positions[3 * v], m.positions[3 * v + 1] + 0.25, m.positions[3 * v + 2]});
+    cases.push_back({"the thin plate alone, pins moved", plate});
+    Recipe membrane = all;
+    membrane.bending = Bending{0.5, 0.3};
+    cases.push_back({"the thin plate with a membrane and every term", membrane});
     return cases;
 }
 

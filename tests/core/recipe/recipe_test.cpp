@@ -42,7 +42,7 @@ TEST_SUITE("Recipe")
             "normal_smoothing": {"iterations": 4, "lambda": 0.25,
                 "hard": {"faces": [2], "normals": [[0, 1, 0]]},
                 "soft": {"faces": [3], "mu": 0.1}},
-            "joint": {"gamma": 3}})",
+            "joint": {"gamma": 3}, "bending": {"mu": 2.5, "membrane": 0.5}})",
                                       "r.json");
         CHECK(r.iterations == 12);
         CHECK(r.optimal_step);
@@ -56,6 +56,7 @@ TEST_SUITE("Recipe")
         CHECK(r.normal_smoothing->hard.faces == std::vector<Index>{2});
         CHECK(r.normal_smoothing->soft.mu == 0.1);
         CHECK(r.joint->gamma == 3);
+        CHECK(r.bending == Bending{2.5, 0.5});
         CHECK_NOTHROW(check_recipe(r, test::quad_cube()));
     }
 
@@ -67,6 +68,8 @@ TEST_SUITE("Recipe")
         CHECK_FALSE(r.optimal_step);
         CHECK_FALSE(r.soft.has_value());
         CHECK_FALSE(r.normal.has_value());
+        CHECK_FALSE(r.bending.has_value());
+        CHECK(parse_recipe(R"({"bending": {}})", "r.json").bending == Bending{1, 0});
         const Recipe s =
             parse_recipe(R"({"normal": {"faces": "all"}, "normal_smoothing": {}})", "r.json");
         CHECK(s.normal->source == NormalSource::Smoothed);
@@ -77,11 +80,13 @@ TEST_SUITE("Recipe")
         const Recipe r = parse_recipe(R"({"lambda": 0.3, "soft": {"vertices": "all", "mu": 2},
             "centroid": {"faces": [1, 2], "targets": [[1, 2, 3], [4, 5, 6]]},
             "normal": {"faces": "all", "normals": "smoothed"},
-            "normal_smoothing": {"iterations": 3, "hard": {"faces": [0]}}, "joint": {"gamma": 0.5}})",
+            "normal_smoothing": {"iterations": 3, "hard": {"faces": [0]}}, "joint": {"gamma": 0.5},
+            "bending": {"mu": 0.25, "membrane": 2}})",
                                       "r.json");
         const Recipe back = parse_recipe(recipe_to_json(r).dump(), "again.json");
         CHECK(recipe_to_json(back) == recipe_to_json(r));
         CHECK(back.centroid->targets[1] == Vec3{4, 5, 6});
+        CHECK(back.bending == Bending{0.25, 2});
     }
 
     TEST_CASE("every malformed recipe is refused naming the key")
@@ -89,7 +94,13 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
-              "volume, falloff, prevent_flips)");
+              "bending, volume, falloff, prevent_flips)");
+        CHECK(error_of(R"({"bending": {"stiffness": 1}})") ==
+              "'r.json': bending.stiffness: unknown key (allowed here: mu, membrane)");
+        CHECK(error_of(R"({"bending": {"mu": -1}})") ==
+              "'r.json': bending.mu: must be >= 0 (got -1)");
+        CHECK(error_of(R"({"bending": {"membrane": "yes"}})") ==
+              "'r.json': bending.membrane: must be a number");
         CHECK(error_of(R"({"soft": {"vertices": [1], "muu": 1}})") ==
               "'r.json': soft.muu: unknown key (allowed here: vertices, mu, targets, weights)");
         CHECK(error_of(R"({"hard": {"vertices": [1, 9]}})") ==

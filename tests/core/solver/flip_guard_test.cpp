@@ -29,10 +29,7 @@ Mesh hexagon_fan()
     return test::make_mesh(points, faces);
 }
 
-Scalar dot(const Vec3& a, const Vec3& b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+using test::dot;
 
 //! The faces that break, at y, a reference they kept at x (the header's rule, computed
 //! here apart: own normals at x0 for faces within 60 degrees of the faces around them, the

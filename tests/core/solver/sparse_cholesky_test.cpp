@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "core/energies/bending_term.h"
 #include "core/energies/edge_term.h"
 #include "core/energies/face_centroid_term.h"
 #include "core/energies/face_normal_term.h"
@@ -155,10 +156,11 @@ TEST_SUITE("free Hessian")
             FaceCentroidTerm centroid(m, t, faces, 1.3, CentroidDenominator::Paper, face_w);
             centroid.set_targets_to_centroids(m.positions);
             const FaceNormalTerm normal(m, t, faces, 2.1, face_w);
+            const BendingTerm bending(t, 0.9);
             const std::vector<Scalar> normals = face_normals(m, m.positions);
             const auto energy = [&](std::span<const Scalar> x) {
                 return edge.energy(x) + soft.energy(x) + centroid.energy(x) +
-                       normal.energy(x, normals);
+                       normal.energy(x, normals) + bending.energy(x);
             };
             std::vector<Index> free;
             for (Index v = 0; v < nv; ++v)
@@ -170,6 +172,7 @@ TEST_SUITE("free Hessian")
                     soft.add_hessian_column(i, col);
                     centroid.add_hessian_column(i, col);
                     normal.add_hessian_column(i, normals, col);
+                    bending.add_hessian_column(i, col);
                 });
             const std::vector<Scalar> d = dense(a);
             const auto n = static_cast<size_t>(a.size);
@@ -201,6 +204,7 @@ TEST_SUITE("free Hessian")
                 edge.add_hessian_column(i, col);
                 soft.add_hessian_column(i, col);
                 centroid.add_hessian_column(i, col);
+                bending.add_hessian_column(i, col);
             };
             const std::vector<Scalar> d1 = dense(assemble_free_hessian(nv, free, false, isotropic));
             const SymmetricMatrix s3 = assemble_free_hessian(nv, free, true, isotropic);
