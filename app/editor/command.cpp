@@ -59,6 +59,8 @@ CommandSpec spec_of(const Command& command)
             }
             else if constexpr (std::is_same_v<T, cmd::SetSolverSettings>)
                 return {"solver settings", kSettings, kSettings};
+            else if constexpr (std::is_same_v<T, cmd::Solve>)
+                return {"solve", kSettings, kSettings};
             else if constexpr (std::is_same_v<T, cmd::ImportRecipe>)
                 return {"import recipe", kSets | kSettings, kSets | kSettings | kSetMembers, true};
             else if constexpr (std::is_same_v<T, cmd::ApplyPreset>)
@@ -139,6 +141,7 @@ std::string_view command_name(const Command& command)
                                             "pause",
                                             "play/pause",
                                             "step",
+                                            "solve",
                                             "reset",
                                             "apply",
                                             "noise",

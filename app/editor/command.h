@@ -242,6 +242,12 @@ struct Step
 {
     int steps = 0;
 };
+//! \brief Shows the minimizer of the sets: the direct method from now on (a settings
+//! change, undone as one), so the shape is solved again whenever the sets change and a
+//! dragged pin's shape is the minimizer at every move.
+struct Solve
+{
+};
 struct ResetShape
 {
 };
@@ -336,10 +342,10 @@ using Command = std::variant<
     cmd::DeleteSet, cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet,
     cmd::RemoveFromSet, cmd::CloseHoles, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection,
     cmd::MovePins, cmd::PaintDab, cmd::SetPaintSettings, cmd::SetSolverSettings, cmd::Play,
-    cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::ResetShape, cmd::ApplyShape, cmd::AddNoise,
-    cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh, cmd::ExportRecipe, cmd::ImportRecipe,
-    cmd::ApplyPreset, cmd::ShowDialog, cmd::Screenshot, cmd::Quit, cmd::QuitDiscarding,
-    cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
+    cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::Solve, cmd::ResetShape, cmd::ApplyShape,
+    cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh, cmd::ExportRecipe,
+    cmd::ImportRecipe, cmd::ApplyPreset, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,
+    cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
 
 //! \brief Where a command comes from, for the undo step it makes: commands of one
 //! interaction (a drag of a tool, a slider held) with the same key merge into one step,

@@ -223,6 +223,24 @@ bool CommandExecutor::operator()(const cmd::Step& c) const
     return true;
 }
 
+bool CommandExecutor::operator()(const cmd::Solve&) const
+{
+    if (d.solver.method == Method::Direct)
+    {
+        say("the shape is the minimizer of the sets (method: direct)");
+        return false;
+    }
+    SolverSettings settings = d.solver;
+    settings.method = Method::Direct;
+    // What the direct method does not take yet would leave nothing to show.
+    settings.optimal_step = false;
+    settings.joint = false;
+    settings.keep_volume = false;
+    d.solver = settings;
+    say("solving for the minimizer of the sets (method: direct)");
+    return true;
+}
+
 bool CommandExecutor::operator()(const cmd::ResetShape&) const
 {
     d.mesh.positions = d.base_positions;

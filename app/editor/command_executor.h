@@ -90,6 +90,7 @@ struct CommandExecutor
     bool operator()(const cmd::Pause&) const;
     bool operator()(const cmd::TogglePlay&) const;
     bool operator()(const cmd::Step& c) const;
+    bool operator()(const cmd::Solve& c) const;
     bool operator()(const cmd::ResetShape&) const;
     bool operator()(const cmd::ApplyShape&) const;
     bool operator()(const cmd::AddNoise& c) const;

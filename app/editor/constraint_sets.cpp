@@ -311,6 +311,13 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
         problems.push_back("Taubin's method takes a fixed lambda and no joint mode");
     if (settings.method == Method::Taubin && !(settings.taubin_mu < -settings.lambda))
         problems.push_back("Taubin's mu must be below -lambda");
+    if (settings.method == Method::Direct && (settings.optimal_step || settings.joint))
+        problems.push_back(
+            "the direct method solves for the minimizer: no optimal lambda, no joint mode");
+    if (settings.method == Method::Direct && settings.keep_volume)
+        problems.push_back(
+            "the direct method does not keep volumes yet: turn 'keep volume' off or "
+            "choose Jacobi steps");
     return problems;
 }
 
@@ -328,6 +335,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         r.volume = settings.volume;
     r.prevent_flips = settings.prevent_flips;
     r.falloff = settings.falloff;
+    r.bending = settings.bending;
     // A region's weight map: vertices of freedom 0 stay out, those of freedom in (0, 1) are
     // held by anchors of region_anchor_weight after the anchor sets' (which win).
     std::vector<Index> fading;
@@ -671,8 +679,10 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
         s.joint = true;
         s.gamma = r.joint->gamma;
     }
-    // The editor runs Jacobi steps or Taubin's pairs; gradient descent comes in as Jacobi.
-    s.method = r.method == Method::Taubin ? Method::Taubin : Method::Jacobi;
+    // The editor runs Jacobi steps, Taubin's pairs or the direct method; gradient descent
+    // comes in as Jacobi.
+    s.method = r.method == Method::GradientDescent ? Method::Jacobi : r.method;
+    s.bending = r.bending;
     s.taubin_mu = r.taubin_mu;
     if (r.normal_smoothing)
         s.bilateral = r.normal_smoothing->bilateral;

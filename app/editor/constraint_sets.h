@@ -89,7 +89,9 @@ struct SolverSettings
     Scalar soft_normal_mu = 1;
     bool joint = false;
     Scalar gamma = 1;
-    //! Jacobi steps, or Taubin's lambda|mu pairs (the editor runs no gradient descent).
+    //! Jacobi steps, Taubin's lambda|mu pairs, or the direct method: the shape shown is then
+    //! the minimizer of the sets, solved again whenever they change (the editor runs no
+    //! gradient descent).
     Method method = Method::Jacobi;
     Scalar taubin_mu = -0.53;
     //! Feature-preserving normal smoothing (with smoothed normals or joint mode), when set.
@@ -101,6 +103,8 @@ struct SolverSettings
     bool prevent_flips = false;
     //! Anchors fading from the regions' border and from the pins, when set.
     std::optional<Falloff> falloff;
+    //! The thin plate (a dome, not a horn, under a dragged pin), when set.
+    std::optional<Bending> bending;
     bool operator==(const SolverSettings&) const = default;
 };
 

@@ -183,6 +183,12 @@ void EditorSession::wait_for_heat()
     update();
 }
 
+void EditorSession::settle_solver()
+{
+    solver_.settle();
+    update();
+}
+
 void EditorSession::update()
 {
     const bool was_playing = solver_.playing();

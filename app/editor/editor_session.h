@@ -91,6 +91,10 @@ public:
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     //! Waits for the solver's shares of the heat map's term and shows them (scripts).
     void wait_for_heat();
+    //! \brief Waits until the solver is idle (restarted for the sets as they are, the direct
+    //! method's minimizer solved) and shows its positions: what a script sees next is the
+    //! shape for its last command, as a person sees it a moment later.
+    void settle_solver();
 
     //! \brief Once per frame, before drawing: restarts the solver when the recipe or the
     //! shape changed, takes its newest positions, and autosaves when it is time.

@@ -31,6 +31,7 @@ struct PanelMemory
     ToolKind tool = ToolKind::Navigate;
     BilateralWeights bilateral;
     Falloff falloff;
+    Bending bending;
 };
 
 //! The interaction state the editor owns (the document holds the data).

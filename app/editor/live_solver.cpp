@@ -14,6 +14,9 @@ namespace meshfair::app {
 namespace {
 
 constexpr size_t kMaxEnergySamples = 20000;
+// The direct method's solve: its first step lands on the minimizer, the others refine it
+// to rounding when the guard or rounding left something (DirectConvergence stops them).
+constexpr int kDirectSolveSteps = 4;
 
 } // namespace
 
@@ -46,6 +49,7 @@ void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vec
         energies_.clear();
         known_energy_.reset();
         energy_due_ = false;
+        solve_due_ = false; // the restart decides
         ++status_.energy_version;
         fresh_ = false;
     }
@@ -67,6 +71,7 @@ void LiveSolver::clear()
     energies_.clear();
     known_energy_.reset();
     energy_due_ = false;
+    solve_due_ = false;
     fresh_ = false;
 }
 
@@ -118,7 +123,9 @@ void LiveSolver::step_now(int n)
 bool LiveSolver::wait_published()
 {
     std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return fresh_ || (!status_.playing && !busy_ && !restart_); });
+    done_.wait(lock, [&] {
+        return fresh_ || (!status_.playing && !busy_ && !restart_ && !(solve_due_ && run_));
+    });
     return fresh_;
 }
 
@@ -142,7 +149,9 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     published_steps_ = status_.steps;
     std::swap(display_back_, display_published_);
     fresh_ = true;
+    solve_due_ = session.recipe().method == Method::Direct;
     done_.notify_all();
+    wake_.notify_all();
 }
 
 void LiveSolver::wait_idle()
@@ -150,7 +159,7 @@ void LiveSolver::wait_idle()
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] {
         return !busy_ && !restart_ && !(heat_dirty_ && run_) &&
-               !(energy_due_ && run_ && !status_.playing);
+               !(energy_due_ && run_ && !status_.playing) && !(solve_due_ && run_);
     });
 }
 
@@ -276,6 +285,19 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             known = EnergySample{first + done, now};
         }
     }
+    else if (session.recipe().method == Method::Direct)
+    {
+        // Each step solves for the minimizer from where it starts: the run stops by run()'s
+        // rule on the gradient, after one step (two when rounding leaves some to refine).
+        DirectConvergence rule(session.recipe().tolerance);
+        for (; done < n && !converged_now; ++done)
+        {
+            const StepInfo info = run_->step();
+            converged_now =
+                rule.stop_after(info.gradient, session.residual(session.positions()).gradient);
+        }
+        known = EnergySample{first + done, run_->energy()};
+    }
     else
     {
         TermEnergies before = known && known->step == first ? known->energy : run_->energy();
@@ -353,10 +375,19 @@ void LiveSolver::worker()
             return quit_ || (restart_ && !busy_) ||
                    (status_.playing && run_ && !fresh_ && !busy_ && !restart_) ||
                    (heat_dirty_ && run_ && !busy_ && !restart_) ||
-                   (energy_due_ && run_ && !busy_ && !restart_ && !status_.playing);
+                   (energy_due_ && run_ && !busy_ && !restart_ && !status_.playing) ||
+                   (solve_due_ && run_ && !busy_ && !restart_ && !status_.playing);
         });
         if (quit_)
             return;
+        if (solve_due_ && run_ && !restart_ && !status_.playing && !busy_)
+        {
+            // The direct method's minimizer for the recipe as it is now (at most a few
+            // refining steps; the first lands on it).
+            solve_due_ = false;
+            run_steps(kDirectSolveSteps, lock);
+            continue;
+        }
         if (energy_due_ && !restart_ && !status_.playing && !(heat_dirty_ && run_))
         {
             // The plot's last point for the positions shown (the run paused between the
@@ -498,6 +529,7 @@ void LiveSolver::worker()
                     known_energy_ = energies_.back();
                     energy_due_ = false;
                     ++status_.energy_version;
+                    solve_due_ = r.recipe.method == Method::Direct;
                     if (moved)
                     {
                         published_ = std::move(published);

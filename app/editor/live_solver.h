@@ -77,6 +77,8 @@ public:
     //! \brief New targets for the recipe's hard vertices (3 per vertex, in the recipe's
     //! order): the pins move there and the run goes on, with no precomputation (hard
     //! vertices are fixed: their targets are right-hand side only). Publishes the positions.
+    //! With the direct method the worker then solves for the new minimizer (a
+    //! back-substitution with the factorization kept) and publishes it too.
     void move_hard_targets(std::span<const Scalar> targets);
     void set_iterations_per_frame(int n);
     //! \brief Runs `n` steps on the calling thread (waiting for the precomputation and for
@@ -85,7 +87,8 @@ public:
     //! \brief Waits until a frame is published or playing stops; true when there is one to
     //! take. For scripts and tests, which show frames as fast as they come.
     bool wait_published();
-    //! Waits until the worker is idle (precomputed, not mid-frame); for tests and scripts.
+    //! Waits until the worker is idle (precomputed, not mid-frame, the direct method's
+    //! minimizer solved); for tests and scripts.
     void wait_idle();
 
     //! \brief Also publish each vertex's share of `term` with every frame (a heat map;
@@ -151,6 +154,9 @@ private:
     //! sweep gives the energy of the positions it starts from, one step behind.
     std::optional<EnergySample> known_energy_;
     bool energy_due_ = false; // the plot's last point is behind the positions (paused)
+    // The direct method's run shows its minimizer by itself: solved on the worker after a
+    // restart and after the pins move, without playing.
+    bool solve_due_ = false;
     std::optional<EnergyTerm> heat_term_;
     bool heat_dirty_ = false;           // shares wanted for the current positions
     std::vector<float> heat_published_; // colours (heat_colors), newest

@@ -225,13 +225,15 @@ Json settings_json(const SolverSettings& s)
             {"joint", s.joint},
             {"gamma", s.gamma},
             {"taubin", s.method == Method::Taubin},
+            {"direct", s.method == Method::Direct},
             {"taubin_mu", s.taubin_mu},
             {"bilateral", s.bilateral ? bilateral_json(*s.bilateral) : Json(nullptr)},
             {"keep_volume", s.keep_volume},
             {"volume_open_capped", s.volume.open == OpenVolume::Capped},
             {"volume_free_components", s.volume.free_components_only},
             {"prevent_flips", s.prevent_flips},
-            {"falloff", s.falloff ? falloff_json(*s.falloff) : Json(nullptr)}};
+            {"falloff", s.falloff ? falloff_json(*s.falloff) : Json(nullptr)},
+            {"bending", s.bending ? bending_json(*s.bending) : Json(nullptr)}};
 }
 
 SolverSettings settings_of(const Json& j)
@@ -257,7 +259,9 @@ SolverSettings settings_of(const Json& j)
     s.joint = j.at("joint").get<bool>();
     s.gamma = non_negative_at(j, "gamma");
     // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
-    s.method = j.value("taubin", false) ? Method::Taubin : Method::Jacobi;
+    s.method = j.value("taubin", false)   ? Method::Taubin
+               : j.value("direct", false) ? Method::Direct
+                                          : Method::Jacobi;
     if (j.contains("taubin_mu"))
     {
         s.taubin_mu = j.at("taubin_mu").get<Scalar>();
@@ -272,6 +276,8 @@ SolverSettings settings_of(const Json& j)
     s.prevent_flips = j.value("prevent_flips", false);
     if (j.contains("falloff") && !j["falloff"].is_null())
         s.falloff = parse_falloff(j["falloff"], "settings.falloff");
+    if (j.contains("bending") && !j["bending"].is_null())
+        s.bending = parse_bending(j["bending"], "settings.bending");
     return s;
 }
 

@@ -65,6 +65,8 @@ SolverSettings merged_settings(const SolverSettings& g, const std::vector<std::s
             s.bilateral = g.bilateral;
         else if (key == "falloff")
             s.falloff = g.falloff;
+        else if (key == "bending")
+            s.bending = g.bending;
     }
     return s;
 }
@@ -169,6 +171,13 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 for (int k = 0; k < a.count; ++k)
                     host.run_frame();
                 break;
+        }
+        // The direct method solves by itself after the sets change (a command, a key, a
+        // pin dragged): what comes next sees the minimizer, as a person does a moment later.
+        if (session.document().solver.method == Method::Direct && a.kind != Kind::Screenshot)
+        {
+            session.settle_solver();
+            host.run_frame();
         }
         session.end_interaction(); // each action is an undo step of its own
     }

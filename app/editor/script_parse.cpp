@@ -108,7 +108,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                                         "reset",         "apply",          "export_recipe",
                                         "import_recipe", "noise",          "heat_map",
                                         "autosave",      "recover",        "up_axis",
-                                        "paint",         "paint_settings", "preset"};
+                                        "paint",         "paint_settings", "preset",
+                                        "solve"};
     // Options, and the actions each belongs to.
     static const std::pair<const char*, const char*> options[] = {
         {"name", "create_set rename_set"},
@@ -494,9 +495,11 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else if (key == "method")
             {
                 const std::string m = r.text(value, k);
-                if (m != "jacobi" && m != "taubin")
-                    r.bad(k, "must be \"jacobi\" or \"taubin\"");
-                s.method = m == "taubin" ? Method::Taubin : Method::Jacobi;
+                if (m != "jacobi" && m != "taubin" && m != "direct")
+                    r.bad(k, "must be \"jacobi\", \"taubin\" or \"direct\"");
+                s.method = m == "taubin"   ? Method::Taubin
+                           : m == "direct" ? Method::Direct
+                                           : Method::Jacobi;
             }
             else if (key == "taubin_mu")
                 s.taubin_mu = r.number(value, k, -1e3, 0);
@@ -506,7 +509,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                     r.bad(k, "must be true or false");
                 (key == "keep_volume" ? s.keep_volume : s.prevent_flips) = value.get<bool>();
             }
-            else if (key == "bilateral" || key == "falloff")
+            else if (key == "bilateral" || key == "falloff" || key == "bending")
             {
                 // A recipe's object (docs/recipe.md), or null for none.
                 if (!value.is_null())
@@ -514,6 +517,8 @@ ScriptAction parse_action(const Json& j, const Reader& r)
                     {
                         if (key == "bilateral")
                             s.bilateral = parse_bilateral(value, k);
+                        else if (key == "bending")
+                            s.bending = parse_bending(value, k);
                         else
                             s.falloff = parse_falloff(value, k);
                     }
@@ -556,13 +561,15 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         }
         command(AddNoise{r.number(v, kind, 0, 10), seed});
     }
-    else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover")
+    else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover" ||
+             kind == "solve")
     {
         if (!v.is_boolean() || !v.get<bool>())
             r.bad(kind, "must be true");
         command(kind == "reset"      ? Command(ResetShape{})
                 : kind == "apply"    ? Command(ApplyShape{})
                 : kind == "autosave" ? Command(Autosave{})
+                : kind == "solve"    ? Command(Solve{})
                                      : Command(Recover{}));
     }
     else

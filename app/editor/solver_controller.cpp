@@ -229,7 +229,7 @@ bool SolverController::step(int n, std::string& why)
     return true;
 }
 
-void SolverController::wait_for_heat()
+void SolverController::settle()
 {
     update(); // a pending restart first
     solver_.wait_idle();

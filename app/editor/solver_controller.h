@@ -56,7 +56,9 @@ public:
     void set_heat(std::optional<EnergyTerm> term) { solver_.set_heat(term); }
     bool take_heat(std::vector<float>& heat) { return solver_.take_heat(heat); }
     //! Waits for the solver's shares of the heat map's term (scripts).
-    void wait_for_heat();
+    void wait_for_heat() { settle(); }
+    //! Restarts if needed and waits until the solver is idle, then takes its positions.
+    void settle();
     SolverStatus status() const { return solver_.status(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     std::vector<std::string> notes() const { return solver_.notes(); }

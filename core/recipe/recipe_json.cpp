@@ -532,16 +532,7 @@ Recipe parse_recipe_json(const Json& j)
         r.joint = joint;
     }
     if (j.contains("bending"))
-    {
-        const Json& s = j["bending"];
-        expect_object(s, "bending", {"mu", "membrane"});
-        Bending bending;
-        if (s.contains("mu"))
-            bending.mu = weight(s["mu"], "bending.mu");
-        if (s.contains("membrane"))
-            bending.membrane = weight(s["membrane"], "bending.membrane");
-        r.bending = bending;
-    }
+        r.bending = parse_bending(j["bending"], "bending");
     if (j.contains("volume"))
     {
         const Json& s = j["volume"];
@@ -721,7 +712,7 @@ nlohmann::json recipe_to_json(const Recipe& r)
     if (r.joint)
         j["joint"] = {{"gamma", r.joint->gamma}};
     if (r.bending)
-        j["bending"] = {{"mu", r.bending->mu}, {"membrane", r.bending->membrane}};
+        j["bending"] = bending_json(*r.bending);
     if (r.volume)
     {
         j["volume"] = Json::object();
@@ -758,6 +749,22 @@ BilateralWeights parse_bilateral(const Json& s, const std::string& key)
                           ? FaceNeighborhood::Edge
                           : FaceNeighborhood::Vertex;
     return b;
+}
+
+Bending parse_bending(const Json& s, const std::string& key)
+{
+    expect_object(s, key, {"mu", "membrane"});
+    Bending b;
+    if (s.contains("mu"))
+        b.mu = weight(s["mu"], key + ".mu");
+    if (s.contains("membrane"))
+        b.membrane = weight(s["membrane"], key + ".membrane");
+    return b;
+}
+
+Json bending_json(const Bending& b)
+{
+    return {{"mu", b.mu}, {"membrane", b.membrane}};
 }
 
 Falloff parse_falloff(const Json& s, const std::string& key)

@@ -40,5 +40,8 @@ nlohmann::json bilateral_json(const BilateralWeights& b);
 //! The same for a recipe's "falloff" object.
 Falloff parse_falloff(const nlohmann::json& j, const std::string& key);
 nlohmann::json falloff_json(const Falloff& f);
+//! The "bending" section's object, read (RecipeError naming `key`'s members) and written.
+Bending parse_bending(const nlohmann::json& j, const std::string& key);
+nlohmann::json bending_json(const Bending& b);
 
 } // namespace meshfair

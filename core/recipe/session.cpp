@@ -1252,14 +1252,11 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
     {
         // Each step solves for the minimizer from where it starts; the rule is the
         // gradient's, relative to the input's.
-        const Scalar tolerance = recipe.tolerance > 0 ? recipe.tolerance : Scalar(1e-12);
+        DirectConvergence rule(recipe.tolerance);
         record(session.energy());
-        Scalar first = 0, last = 0;
         for (int k = 0; k < recipe.iterations; ++k)
         {
             const StepInfo info = session.step();
-            if (k == 0)
-                first = info.gradient;
             result.lambdas.push_back(info.lambda);
             result.shortened.push_back(info.shortened);
             ++result.iterations;
@@ -1267,15 +1264,14 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
             // r at the new positions, once: the stopping rule's gradient and the report's
             // Jacobi displacement.
             const Session::Residual residual = session.residual(session.positions());
-            const Scalar now = residual.gradient;
             result.jacobi_displacement = residual.jacobi_displacement;
-            result.gradients.push_back(first > 0 ? now / first : 0);
-            if (result.gradients.back() <= tolerance || (k > 0 && now >= Scalar(0.5) * last))
+            const bool stop = rule.stop_after(info.gradient, residual.gradient);
+            result.gradients.push_back(rule.relative());
+            if (stop)
             {
                 result.stopped_by_tolerance = true;
                 break;
             }
-            last = now;
         }
         return result;
     }

@@ -376,6 +376,37 @@ private:
 //! for the face terms, the dual graph for normal smoothing and joint mode.
 TopologyParts required_topology(const Recipe& recipe);
 
+//! \brief The direct method's stopping rule, for run() and the editor's runs: after each
+//! step, the gradient |r| at its result relative to the gradient where the first step
+//! started (the input's) must be at most the tolerance (1e-12 when it is 0), or the step
+//! stops when it no longer halves the gradient (rounding: the minimizer is reached).
+class DirectConvergence
+{
+public:
+    explicit DirectConvergence(Scalar tolerance)
+        : tolerance_(tolerance > 0 ? tolerance : Scalar(1e-12))
+    {
+    }
+    //! A step that started at gradient `started` (StepInfo::gradient) and ended at `now`;
+    //! true when the run stops here.
+    bool stop_after(Scalar started, Scalar now)
+    {
+        if (steps_++ == 0)
+            first_ = started;
+        relative_ = first_ > 0 ? now / first_ : 0;
+        const bool stalled = steps_ > 1 && now >= Scalar(0.5) * last_;
+        last_ = now;
+        return relative_ <= tolerance_ || stalled;
+    }
+    //! The last step's gradient relative to the first's start.
+    Scalar relative() const { return relative_; }
+
+private:
+    Scalar tolerance_;
+    Scalar first_ = 0, last_ = 0, relative_ = 0;
+    int steps_ = 0;
+};
+
 //! The outcome of a whole run.
 struct SmoothResult
 {

@@ -71,6 +71,17 @@ void menu_bar(const PanelContext& ui)
         ui.track("Edit/Redo");
         ImGui::EndMenu();
     }
+    if (menu(ui, "Solve"))
+    {
+        if (item(ui, "Solve", "Play / pause", "Space"))
+            ui.give(TogglePlay{});
+        if (item(ui, "Solve", "Step"))
+            ui.give(Step{});
+        if (item(ui, "Solve", "Solve: the minimizer", "Enter",
+                 ui.document.solver.method == Method::Direct))
+            ui.give(Solve{});
+        ImGui::EndMenu();
+    }
     if (menu(ui, "Select"))
     {
         static constexpr std::pair<SelectionCommand, const char*> items[] = {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 #include <algorithm>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -138,11 +139,37 @@ void solver_panel(const PanelContext& ui)
             }
         }
     }
-    bool taubin = s.method == Method::Taubin;
-    if (ui.checkbox("Taubin lambda|mu", &taubin))
+    // The methods the editor runs, in the combo's order.
+    constexpr Method methods[] = {Method::Jacobi, Method::Taubin, Method::Direct};
+    const char* method_items[] = {"Jacobi steps", "Taubin lambda|mu", "direct: the minimizer"};
+    int method = static_cast<int>(std::find(std::begin(methods), std::end(methods), s.method) -
+                                  std::begin(methods));
+    ImGui::SetNextItemWidth(170);
+    if (ImGui::Combo("method", &method, method_items, static_cast<int>(std::size(method_items))))
     {
-        s.method = taubin ? Method::Taubin : Method::Jacobi;
+        s.method = methods[std::clamp(method, 0, 2)];
         toggled = true;
+    }
+    ui.track("method");
+    Bending& last_bending = ui.state.panels.bending; // turned off then on: as it was
+    if (s.bending)
+        last_bending = *s.bending;
+    bool bending = s.bending.has_value();
+    if (ui.checkbox("thin plate (a dome under pins)", &bending))
+    {
+        s.bending = bending ? std::optional<Bending>(last_bending) : std::nullopt;
+        toggled = true;
+    }
+    if (s.bending)
+    {
+        dragged |= weight_slider(ui, "bending mu", s.bending->mu);
+        float membrane = float(s.bending->membrane);
+        if (ImGui::SliderFloat("membrane", &membrane, 0.0f, 1.0f, "%.3f"))
+        {
+            s.bending->membrane = std::clamp(Scalar(membrane), Scalar(0), Scalar(1));
+            dragged = true;
+        }
+        ui.track("membrane");
     }
     toggled |= ui.checkbox("keep volume", &s.keep_volume);
     ImGui::SameLine();
@@ -178,6 +205,9 @@ void solver_panel(const PanelContext& ui)
     ImGui::SameLine();
     if (ui.button("Step"))
         ui.give(Step{});
+    ImGui::SameLine();
+    if (ui.button("Solve"))
+        ui.give(Solve{});
     ImGui::SameLine();
     if (ui.button("Reset"))
         ui.give(ResetShape{});

@@ -147,6 +147,7 @@ TEST_SUITE("Editor input")
         CHECK(
             std::holds_alternative<cmd::CreateSet>(*command_for_key(*parse_key_chord("shift+r"))));
         CHECK(std::holds_alternative<cmd::SetTool>(*command_for_key(*parse_key_chord("r"))));
+        CHECK(std::holds_alternative<cmd::Solve>(*command_for_key(*parse_key_chord("enter"))));
         CHECK_FALSE(parse_key_chord("hyper+q").has_value());
     }
 
@@ -193,6 +194,7 @@ TEST_SUITE("Editor input")
         CHECK(e.doc().sets[0].name == "rrr wide");
         CHECK(e.session.tool() == ToolKind::Navigate);
         CHECK_FALSE(e.session.playing());
+        CHECK(e.doc().solver.method == Method::Jacobi); // Enter ended the field, not Solve
 
         // Save as: the dialog's name field holds "bunny.obj"; Ctrl+A selects it and the
         // typed name replaces it, every character of a fast burst kept.

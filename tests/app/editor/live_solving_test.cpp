@@ -215,6 +215,61 @@ TEST_SUITE("Live solving")
         CHECK(s.document().modified);
     }
 
+    TEST_CASE(
+        "Solve shows the minimizer, and a moved pin's shape is the minimizer without a "
+        "refactorization")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        make_region_and_moved_pins(b, {0.0, 0.05, 0.0});
+        SolverSettings settings = s.document().solver;
+        settings.bending = Bending{1.0, 0.0};
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{settings}));
+        REQUIRE(s.dispatch(cmd::Solve{}));
+        CHECK(s.history().undo_label() == "solve");
+        CHECK(s.document().solver.method == Method::Direct);
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(s.document().steps_from_base >= 1);
+        CHECK(s.document().reproducible);
+        // The shape is the command line's: the exported recipe ("method": "direct", the
+        // bending section, as many steps) gives it bit for bit.
+        CHECK(cli_reproduces(s, b.path, dir));
+        const std::vector<Scalar> solved = s.document().mesh.positions;
+        const int restarts = s.solver_status().restarts;
+        const Scalar diagonal = meshfair::bounding_box(solved).diagonal();
+        const auto distance = [](const std::vector<Scalar>& a, const std::vector<Scalar>& c) {
+            Scalar worst = 0;
+            for (size_t k = 0; k < a.size(); ++k)
+                worst = std::max(worst, std::abs(a[k] - c[k]));
+            return worst;
+        };
+
+        // A pin moved: solved again on the solver's thread with the factorization kept (no
+        // restart), and the shape is the minimizer for the new targets, as the command line
+        // solves it from the base.
+        REQUIRE(s.dispatch(cmd::MovePins{"pins", {0.0, 0.03, 0.02}}));
+        s.settle_solver();
+        CHECK(s.solver_status().restarts == restarts);
+        const std::vector<Scalar> moved = s.document().mesh.positions;
+        CHECK(distance(moved, solved) >= 0.03); // the pins moved by (0, 0.03, 0.02)
+        const fs::path recipe = dir / "moved.json";
+        REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
+        CHECK(distance(cli_positions(b.path, recipe), file_order_mesh(s.document()).positions) <=
+              1e-9 * diagonal);
+
+        // Undo of the move: the pins go back and the minimizer with them.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        s.settle_solver();
+        CHECK(distance(s.document().mesh.positions, solved) <= 1e-9 * diagonal);
+        // Solve again changes nothing: the shape already is the minimizer.
+        CHECK_FALSE(s.dispatch(cmd::Solve{}));
+        // Undo of Solve: back to Jacobi steps.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().solver.method == Method::Jacobi);
+    }
+
     TEST_CASE("the exported recipe reproduces the editor's shape through meshfair-cli")
     {
         const fs::path dir = test::temp_dir();
