@@ -207,6 +207,14 @@ void EditorSession::update()
         std::fprintf(trace_, "run stopped: %d steps from the base\n", document_.steps_from_base);
         std::fflush(trace_);
     }
+    if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)
+    {
+        // The direct method's minimizer is on screen (after a restart, or pins moved).
+        solves_traced_ = solver_.solves_shown();
+        std::fprintf(trace_, "solved: the minimizer, %d steps from the base\n",
+                     document_.steps_from_base);
+        std::fflush(trace_);
+    }
 }
 
 void EditorSession::autosave(double interval_s)

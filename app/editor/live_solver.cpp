@@ -178,10 +178,17 @@ bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry,
         std::swap(positions, published_);
         std::swap(geometry, display_published_);
         steps = published_steps_;
+        solves_taken_ = published_solves_;
         fresh_ = false;
     }
     wake_.notify_all(); // a playing worker waits for this
     return true;
+}
+
+int LiveSolver::solves_taken() const
+{
+    std::lock_guard lock(mutex_);
+    return solves_taken_;
 }
 
 void LiveSolver::set_heat(std::optional<EnergyTerm> term)
@@ -353,6 +360,9 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         }
         std::swap(back_, published_);
         published_steps_ = status_.steps;
+        if (solving_ && !solve_due_) // not overtaken by another move of the pins
+            ++solves_;
+        published_solves_ = solves_;
         std::swap(display_back_, display_published_);
         fresh_ = true;
         if (heat && heat == heat_term_)
@@ -385,7 +395,9 @@ void LiveSolver::worker()
             // The direct method's minimizer for the recipe as it is now (at most a few
             // refining steps; the first lands on it).
             solve_due_ = false;
+            solving_ = true;
             run_steps(kDirectSolveSteps, lock);
+            solving_ = false;
             continue;
         }
         if (energy_due_ && !restart_ && !status_.playing && !(heat_dirty_ && run_))

@@ -101,6 +101,10 @@ public:
     //! into `steps` (status() may already count a later frame's); false when there are
     //! none. Called once per frame by the interface.
     bool take(std::vector<Scalar>& positions, DisplayGeometry& geometry, int& steps);
+    //! \brief How many of the direct method's own solves (after a restart, after pins
+    //! moved) the positions last taken include: a trace can say when the shape shown is the
+    //! minimizer.
+    int solves_taken() const;
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
     std::vector<EnergySample> energies() const;
@@ -138,6 +142,10 @@ private:
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest
     int published_steps_ = 0;       // the run's step count at published_
+    int published_solves_ = 0;      // direct solves finished at published_ (solves())
+    int solves_ = 0;                // direct solves finished so far
+    int solves_taken_ = 0;          // published_solves_ of the positions last taken
+    bool solving_ = false;          // the worker runs a direct solve (not a played frame)
     std::vector<Scalar> back_;      // file order, being written (while busy_)
     DisplayGeometry display_published_, display_back_;
     std::vector<Index> vertex_face_offsets_, vertex_faces_; // of the run (set at a restart)

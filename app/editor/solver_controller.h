@@ -60,6 +60,8 @@ public:
     //! Restarts if needed and waits until the solver is idle, then takes its positions.
     void settle();
     SolverStatus status() const { return solver_.status(); }
+    //! The direct method's solves that the document's positions include (LiveSolver).
+    int solves_shown() const { return solver_.solves_taken(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     std::vector<std::string> notes() const { return solver_.notes(); }
 
