@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/geometry/face_geometry.h"
+#include "core/recipe/energy_terms.h"
 
 namespace meshfair::cli {
 
@@ -114,31 +115,14 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
     for (const TermEnergies& e : result.energies)
         energy.push_back(e.total());
     j["energy"] = energy;
-    struct Term
-    {
-        const char* name;
-        bool active;
-        Scalar TermEnergies::*field;
-    };
-    const Term terms[] = {
-        {"edge", !recipe.bending || recipe.bending->membrane > 0, &TermEnergies::edge},
-        {"bending", recipe.bending.has_value(), &TermEnergies::bending},
-        {"soft", recipe.soft.has_value(), &TermEnergies::soft},
-        {"centroid", recipe.centroid.has_value(), &TermEnergies::centroid},
-        {"normal", recipe.normal.has_value(), &TermEnergies::normal},
-        {"normal_smoothing", recipe.joint.has_value(), &TermEnergies::normal_smoothing},
-        {"normal_soft",
-         recipe.joint && recipe.normal_smoothing && !recipe.normal_smoothing->soft.faces.empty(),
-         &TermEnergies::normal_soft},
-    };
     Json per_term = Json::object();
-    for (const Term& t : terms)
-        if (t.active)
+    for (const EnergyTermInfo& t : energy_terms())
+        if (t.in_recipe(recipe))
         {
             Json trace = Json::array();
             for (const TermEnergies& e : result.energies)
-                trace.push_back(e.*(t.field));
-            per_term[t.name] = trace;
+                trace.push_back(e.*(t.energy));
+            per_term[std::string(t.key)] = trace;
         }
     j["terms"] = per_term;
     j["lambda"] = result.lambdas;

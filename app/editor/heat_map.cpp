@@ -6,33 +6,34 @@
 #include <array>
 #include <utility>
 
+#include "core/recipe/energy_terms.h"
+
 namespace meshfair::app {
 
-namespace {
-
-constexpr std::array<std::pair<EnergyTerm, std::string_view>, 6> kTermNames = {{
-    {EnergyTerm::Total, "total"},
-    {EnergyTerm::Edge, "edge"},
-    {EnergyTerm::Soft, "anchor"},
-    {EnergyTerm::Centroid, "centroid"},
-    {EnergyTerm::Normal, "normal"},
-    {EnergyTerm::Bending, "bending"},
-}};
-
-} // namespace
+std::span<const EnergyTerm> heat_terms()
+{
+    static const std::vector<EnergyTerm> terms = [] {
+        std::vector<EnergyTerm> t{EnergyTerm::Total};
+        for (const EnergyTermInfo& info : energy_terms())
+            if (info.shares)
+                t.push_back(*info.shares);
+        return t;
+    }();
+    return terms;
+}
 
 std::string_view heat_term_name(EnergyTerm term)
 {
-    for (const auto& [t, name] : kTermNames)
-        if (t == term)
-            return name;
-    return {};
+    if (term == EnergyTerm::Total)
+        return "total";
+    const EnergyTermInfo* info = energy_term(term);
+    return info != nullptr ? info->label : std::string_view{};
 }
 
 std::optional<EnergyTerm> heat_term_named(std::string_view name)
 {
-    for (const auto& [t, n] : kTermNames)
-        if (n == name)
+    for (const EnergyTerm t : heat_terms())
+        if (heat_term_name(t) == name)
             return t;
     return std::nullopt;
 }

@@ -11,7 +11,11 @@
 
 namespace meshfair::app {
 
-//! "total", "edge", "anchor", "centroid", "normal" (the heat map menu and scripts).
+//! The heat map's terms, in its menu's order: the total, then each term with per-vertex
+//! shares in energy_terms()'s order.
+std::span<const EnergyTerm> heat_terms();
+//! "total", or the term's label in energy_terms() ("edge", "anchor", ...): the heat map
+//! menu's and scripts' word.
 std::string_view heat_term_name(EnergyTerm term);
 std::optional<EnergyTerm> heat_term_named(std::string_view name);
 

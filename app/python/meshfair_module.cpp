@@ -19,6 +19,7 @@
 #include "core/errors.h"
 #include "core/io/io.h"
 #include "core/mesh/mesh.h"
+#include "core/recipe/energy_terms.h"
 #include "core/recipe/locality_run.h"
 #include "core/recipe/recipe.h"
 #include "core/recipe/recipe_json.h"
@@ -175,13 +176,8 @@ void warn_solver_notes(const std::vector<std::string>& notes)
 py::dict energies_of(const TermEnergies& e)
 {
     py::dict d;
-    d["edge"] = e.edge;
-    d["soft"] = e.soft;
-    d["centroid"] = e.centroid;
-    d["normal"] = e.normal;
-    d["normal_smoothing"] = e.normal_smoothing;
-    d["normal_soft"] = e.normal_soft;
-    d["bending"] = e.bending;
+    for (const EnergyTermInfo& t : energy_terms())
+        d[py::str(std::string(t.key))] = e.*(t.energy);
     d["total"] = e.total();
     return d;
 }

@@ -3,14 +3,39 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
+#include "core/recipe/energy_terms.h"
 
 namespace meshfair::app {
 
 namespace {
+
+// Each term's colour in the plot (the total is white).
+ImU32 curve_color(EnergyTerm term)
+{
+    switch (term)
+    {
+        case EnergyTerm::Edge:
+            return IM_COL32(120, 200, 120, 255);
+        case EnergyTerm::Soft:
+            return IM_COL32(240, 190, 40, 255);
+        case EnergyTerm::Centroid:
+            return IM_COL32(70, 140, 240, 255);
+        case EnergyTerm::Normal:
+            return IM_COL32(180, 90, 230, 255);
+        case EnergyTerm::Bending:
+            return IM_COL32(240, 110, 90, 255);
+        case EnergyTerm::Total:
+            break;
+    }
+    return IM_COL32(255, 255, 255, 255);
+}
 
 // The energy curve of the current run: the total and each active term, log scale or not.
 void energy_plot(const PanelContext& ui)
@@ -35,21 +60,21 @@ void energy_plot(const PanelContext& ui)
     struct Curve
     {
         Scalar TermEnergies::*term;
-        const char* name;
+        std::string_view name;
         ImU32 color;
     };
-    const Curve curves[] = {{&TermEnergies::edge, "edge", IM_COL32(120, 200, 120, 255)},
-                            {&TermEnergies::soft, "anchor", IM_COL32(240, 190, 40, 255)},
-                            {&TermEnergies::centroid, "centroid", IM_COL32(70, 140, 240, 255)},
-                            {&TermEnergies::normal, "normal", IM_COL32(180, 90, 230, 255)},
-                            {&TermEnergies::bending, "bending", IM_COL32(240, 110, 90, 255)}};
+    // The terms of the positions (those with per-vertex shares), by energy_terms().
+    std::vector<Curve> curves;
+    for (const EnergyTermInfo& t : energy_terms())
+        if (t.shares)
+            curves.push_back({t.energy, t.label, curve_color(*t.shares)});
     // Each curve relative to its own largest value over the run, so that terms of very
     // different sizes all show how they converge (a term that starts at 0, as a soft
     // constraint on the input does, rises and settles).
-    std::vector<double> top(std::size(curves) + 1, 0.0);
+    std::vector<double> top(curves.size() + 1, 0.0);
     for (const EnergySample& s : e)
     {
-        for (size_t c = 0; c < std::size(curves); ++c)
+        for (size_t c = 0; c < curves.size(); ++c)
             top[c] = std::max(top[c], s.energy.*curves[c].term);
         top.back() = std::max(top.back(), s.energy.total());
     }
@@ -62,7 +87,7 @@ void energy_plot(const PanelContext& ui)
     for (const EnergySample& s : e)
     {
         lo = std::min(lo, value(s.energy.total(), top.back()));
-        for (size_t c = 0; c < std::size(curves); ++c)
+        for (size_t c = 0; c < curves.size(); ++c)
             if (top[c] > 0)
                 lo = std::min(lo, value(s.energy.*curves[c].term, top[c]));
     }
@@ -74,7 +99,7 @@ void energy_plot(const PanelContext& ui)
                       origin.y + float((hi - value(v, largest)) / (hi - lo)) * (size.y - 1));
     };
     std::vector<ImVec2> line;
-    for (size_t c = 0; c < std::size(curves); ++c)
+    for (size_t c = 0; c < curves.size(); ++c)
     {
         if (!(top[c] > 0))
             continue;
@@ -104,8 +129,8 @@ void energy_plot(const PanelContext& ui)
             if (!first)
                 ImGui::SameLine();
             first = false;
-            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.color), "%s %.4g ", c.name,
-                               now.*c.term);
+            ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(c.color), "%s %.4g ",
+                               std::string(c.name).c_str(), now.*c.term);
         }
 }
 

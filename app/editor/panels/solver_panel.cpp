@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "app/editor/heat_map.h"
 #include "app/editor/panels/panel_context.h"
 #include "app/editor/persistence.h"
 
@@ -223,14 +224,24 @@ void solver_panel(const PanelContext& ui)
                        document.reproducible ? "" : " (recipe changed during the run)");
     if (!state.offscreen) // a time would make offscreen frames differ from run to run
         ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
-    const char* heat_items[] = {"off", "total", "edge", "anchor", "centroid", "normal", "bending"};
-    int heat = state.heat_map ? 1 + static_cast<int>(*state.heat_map) : 0;
+    // "off", then the heat map's terms in their order.
+    const std::span<const EnergyTerm> terms = heat_terms();
+    std::vector<std::string> heat_names{"off"};
+    for (const EnergyTerm t : terms)
+        heat_names.emplace_back(heat_term_name(t));
+    std::vector<const char*> heat_items;
+    for (const std::string& n : heat_names)
+        heat_items.push_back(n.c_str());
+    int heat = 0;
+    for (size_t k = 0; k < terms.size(); ++k)
+        if (state.heat_map == terms[k])
+            heat = static_cast<int>(k) + 1;
     ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("heat map: energy share", &heat, heat_items,
-                     static_cast<int>(std::size(heat_items))))
+    if (ImGui::Combo("heat map: energy share", &heat, heat_items.data(),
+                     static_cast<int>(heat_items.size())))
         ui.give(SetHeatMap{heat == 0
                                ? std::nullopt
-                               : std::optional<EnergyTerm>(static_cast<EnergyTerm>(heat - 1))});
+                               : std::optional<EnergyTerm>(terms[static_cast<size_t>(heat) - 1])});
     ui.track("heat map");
     ImGui::SetNextItemWidth(100);
     ImGui::SliderFloat("##sigma", &ui.state.noise_sigma, 0.0f, 1.0f, "sigma %.2f");
