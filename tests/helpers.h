@@ -8,7 +8,7 @@
 
 #include "core/io/io.h"
 #include "core/mesh/mesh.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::test {
 

@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "core/geometry/face_geometry.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "core/solver/solver.h"
 #include "tests/direct_minimizer.h"
 #include "tests/helpers.h"

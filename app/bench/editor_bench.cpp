@@ -24,9 +24,9 @@
 #include "app/render/gl_renderer.h"
 #include "app/render/osmesa_context.h"
 #include "core/io/io.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/locality_run.h"
 #include "core/recipe/recipe_json.h"
-#include "core/solver/parallel.h"
 
 namespace {
 

@@ -30,9 +30,9 @@
 #include "app/bench/mesh_generator.h"
 #include "app/bench/openmesh_peer.h"
 #include "core/io/io.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "core/topology/topology.h"
 #include "core/topology/vertex_order.h"
 

@@ -29,9 +29,9 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "core/topology/topology.h"
 
 namespace {

@@ -11,7 +11,7 @@
 #include "app/bench/vec3_math.h"
 #include "core/energies/volume_constraint.h"
 #include "core/geometry/face_geometry.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::bench {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "core/geometry/face_geometry.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::bench {
 

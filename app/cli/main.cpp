@@ -30,10 +30,10 @@
 #include "core/geometry/face_geometry.h"
 #include "core/geometry/noise.h"
 #include "core/io/io.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/locality_run.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "core/topology/topology.h"
 #include "core/topology/vertex_order.h"
 

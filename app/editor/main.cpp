@@ -17,7 +17,7 @@
 #include "app/editor/window.h"
 #include "app/render/render_error.h"
 #include "core/errors.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace {
 

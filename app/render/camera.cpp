@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::app {
 

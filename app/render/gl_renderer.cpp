@@ -12,7 +12,7 @@
 #include "app/render/gl_program.h"
 #include "app/render/palette.h"
 #include "app/render/render_error.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::app {
 

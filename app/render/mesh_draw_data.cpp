@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::app {
 

@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "app/render/mesh_draw_data.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::app {
 

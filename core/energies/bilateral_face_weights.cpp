@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "core/geometry/face_geometry.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

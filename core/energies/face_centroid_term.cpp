@@ -6,7 +6,7 @@
 #include <utility>
 
 #include "core/geometry/face_geometry.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <utility>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "core/errors.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

@@ -12,7 +12,7 @@
 #include "core/io/attributes.h"
 #include "core/io/face_builder.h"
 #include "core/io/text_reader.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair::io {
 

@@ -11,8 +11,8 @@
 #include "core/energies/falloff.h"
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/parallel/parallel.h"
 #include "core/solver/free_hessian.h"
-#include "core/solver/parallel.h"
 #include "core/solver/solver.h"
 
 namespace meshfair {

@@ -2,7 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/solver/solver.h"
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

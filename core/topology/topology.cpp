@@ -8,7 +8,7 @@
 #include <numeric>
 #include <utility>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

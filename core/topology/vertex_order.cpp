@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 namespace meshfair {
 

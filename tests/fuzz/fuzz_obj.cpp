@@ -14,7 +14,7 @@
 
 #include "core/errors.h"
 #include "core/io/read_obj.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 #include "tests/fuzz/fuzz_support.h"
 
 namespace {

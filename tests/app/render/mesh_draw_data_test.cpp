@@ -9,7 +9,7 @@
 #include <set>
 #include <utility>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 #include "core/topology/topology.h"
 #include "core/topology/vertex_order.h"
 #include "tests/helpers.h"

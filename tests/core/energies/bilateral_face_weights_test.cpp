@@ -11,8 +11,8 @@
 
 #include "core/energies/normal_smoothing_term.h"
 #include "core/geometry/face_geometry.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "tests/energy_checks.h"
 #include "tests/helpers.h"
 #include "tests/session_checks.h"

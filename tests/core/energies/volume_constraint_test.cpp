@@ -9,8 +9,8 @@
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "tests/energy_checks.h"
 #include "tests/helpers.h"
 

@@ -12,9 +12,9 @@
 
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
+#include "core/parallel/parallel.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "tests/direct_minimizer.h"
 #include "tests/helpers.h"
 #include "tests/session_checks.h"

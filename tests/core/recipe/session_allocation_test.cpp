@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <vector>
 
+#include "core/parallel/parallel.h"
 #include "core/recipe/session.h"
-#include "core/solver/parallel.h"
 #include "tests/allocation_counter.h"
 #include "tests/helpers.h"
 

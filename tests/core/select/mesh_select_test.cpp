@@ -4,7 +4,7 @@
 
 #include <doctest/doctest.h>
 
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;

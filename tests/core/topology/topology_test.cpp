@@ -8,7 +8,7 @@
 #include <set>
 
 #include "core/io/io.h"
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 #include "core/topology/edge_graph.h"
 #include "tests/helpers.h"
 

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-#include "core/solver/parallel.h"
+#include "core/parallel/parallel.h"
 
 #include <doctest/doctest.h>
 #include <omp.h>
