@@ -125,6 +125,7 @@ int run_smooth(const SmoothOptions& o)
     if (o.method)
         recipe.method = *o.method == "jacobi"   ? Method::Jacobi
                         : *o.method == "direct" ? Method::Direct
+                        : *o.method == "cg"     ? Method::ConjugateGradient
                                                 : Method::GradientDescent;
 
     const nlohmann::json report =
@@ -355,8 +356,8 @@ int main(int argc, char** argv)
     smooth_cmd
         ->add_option("--method", smooth.method,
                      "jacobi (default: the paper's steps), direct (the minimizer, by sparse "
-                     "Cholesky) or gradient_descent")
-        ->check(CLI::IsMember({"jacobi", "direct", "gradient_descent"}));
+                     "Cholesky), cg (the minimizer, by conjugate gradients) or gradient_descent")
+        ->check(CLI::IsMember({"jacobi", "direct", "cg", "gradient_descent"}));
     smooth_cmd->add_option("--report", smooth.report, "Write the JSON report here ('-' = stdout)");
     smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));

@@ -134,6 +134,17 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
             total += n;
         j["flip_guard"] = {{"shortened", result.shortened}, {"total", total}};
     }
+    if (session.conjugate_gradients())
+    {
+        // Conjugate gradients in place of the factor: how close each solve came to the
+        // minimizer and what it took.
+        const Scalar diagonal = bounding_box(mesh.positions).diagonal();
+        j["cg"] = {
+            {"relative_gradient", result.gradients},
+            {"jacobi_displacement", diagonal > 0 ? result.jacobi_displacement / diagonal : 0},
+            {"unknowns", 3 * session.free_vertices().size()},
+            {"iterations", result.inner_iterations}};
+    }
     if (const SparseCholesky* factor = session.factorization())
     {
         // The direct method: how close each solve came to the minimizer (the gradient over
@@ -181,6 +192,17 @@ std::string smooth_summary(const Json& report, const std::string& output)
              " MB, analysed in " +
              format_number(report["direct"]["analyse_seconds"].get<double>()) + " s, factored in " +
              format_number(report["direct"]["factor_seconds"].get<double>()) + " s\n";
+    if (report.contains("cg") && !report["cg"]["relative_gradient"].empty())
+    {
+        long long iterations = 0;
+        for (const auto& n : report["cg"]["iterations"])
+            iterations += n.get<long long>();
+        s += "conjugate gradients: gradient " +
+             format_number(report["cg"]["relative_gradient"].back().get<double>()) +
+             " of the input's, Jacobi displacement " +
+             format_number(report["cg"]["jacobi_displacement"].get<double>()) +
+             " of the diagonal, " + std::to_string(iterations) + " iterations\n";
+    }
     if (report.contains("flip_guard"))
         s += "flip guard: " + std::to_string(report["flip_guard"]["total"].get<long long>()) +
              " vertex steps shortened so that no face turns over\n";

@@ -225,7 +225,7 @@ bool CommandExecutor::operator()(const cmd::Step& c) const
 
 bool CommandExecutor::operator()(const cmd::Solve&) const
 {
-    if (d.solver.method == Method::Direct)
+    if (solves_for_minimizer(d.solver.method))
     {
         say("the shape is the minimizer of the sets (method: direct)");
         return false;

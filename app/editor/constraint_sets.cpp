@@ -311,10 +311,10 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
         problems.push_back("Taubin's method takes a fixed lambda and no joint mode");
     if (settings.method == Method::Taubin && !(settings.taubin_mu < -settings.lambda))
         problems.push_back("Taubin's mu must be below -lambda");
-    if (settings.method == Method::Direct && (settings.optimal_step || settings.joint))
+    if (solves_for_minimizer(settings.method) && (settings.optimal_step || settings.joint))
         problems.push_back(
             "the direct method solves for the minimizer: no optimal lambda, no joint mode");
-    if (settings.method == Method::Direct && settings.keep_volume)
+    if (solves_for_minimizer(settings.method) && settings.keep_volume)
         problems.push_back(
             "the direct method does not keep volumes yet: turn 'keep volume' off or "
             "choose Jacobi steps");

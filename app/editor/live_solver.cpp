@@ -149,7 +149,7 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     published_steps_ = status_.steps;
     std::swap(display_back_, display_published_);
     fresh_ = true;
-    solve_due_ = session.recipe().method == Method::Direct;
+    solve_due_ = solves_for_minimizer(session.recipe().method);
     done_.notify_all();
     wake_.notify_all();
 }
@@ -292,7 +292,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             known = EnergySample{first + done, now};
         }
     }
-    else if (session.recipe().method == Method::Direct)
+    else if (solves_for_minimizer(session.recipe().method))
     {
         // Each step solves for the minimizer from where it starts: the run stops by run()'s
         // rule on the gradient, after one step (two when rounding leaves some to refine).
@@ -541,7 +541,7 @@ void LiveSolver::worker()
                     known_energy_ = energies_.back();
                     energy_due_ = false;
                     ++status_.energy_version;
-                    solve_due_ = r.recipe.method == Method::Direct;
+                    solve_due_ = solves_for_minimizer(r.recipe.method);
                     if (moved)
                     {
                         published_ = std::move(published);

@@ -226,6 +226,7 @@ Json settings_json(const SolverSettings& s)
             {"gamma", s.gamma},
             {"taubin", s.method == Method::Taubin},
             {"direct", s.method == Method::Direct},
+            {"cg", s.method == Method::ConjugateGradient},
             {"taubin_mu", s.taubin_mu},
             {"bilateral", s.bilateral ? bilateral_json(*s.bilateral) : Json(nullptr)},
             {"keep_volume", s.keep_volume},
@@ -261,6 +262,7 @@ SolverSettings settings_of(const Json& j)
     // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
     s.method = j.value("taubin", false)   ? Method::Taubin
                : j.value("direct", false) ? Method::Direct
+               : j.value("cg", false)     ? Method::ConjugateGradient
                                           : Method::Jacobi;
     if (j.contains("taubin_mu"))
     {

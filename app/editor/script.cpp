@@ -174,7 +174,7 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
         }
         // The direct method solves by itself after the sets change (a command, a key, a
         // pin dragged): what comes next sees the minimizer, as a person does a moment later.
-        if (session.document().solver.method == Method::Direct && a.kind != Kind::Screenshot)
+        if (solves_for_minimizer(session.document().solver.method) && a.kind != Kind::Screenshot)
         {
             session.settle_solver();
             host.run_frame();

@@ -495,10 +495,11 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else if (key == "method")
             {
                 const std::string m = r.text(value, k);
-                if (m != "jacobi" && m != "taubin" && m != "direct")
-                    r.bad(k, "must be \"jacobi\", \"taubin\" or \"direct\"");
+                if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg")
+                    r.bad(k, "must be \"jacobi\", \"taubin\", \"direct\" or \"cg\"");
                 s.method = m == "taubin"   ? Method::Taubin
                            : m == "direct" ? Method::Direct
+                           : m == "cg"     ? Method::ConjugateGradient
                                            : Method::Jacobi;
             }
             else if (key == "taubin_mu")

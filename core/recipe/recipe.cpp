@@ -316,21 +316,22 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                               "is not available with method \"taubin\" (the normals "
                               "have no lambda|mu pair)");
     }
-    if (r.method == Method::Direct)
+    if (!std::isfinite(r.factor_budget_mb) || r.factor_budget_mb < 0)
+        throw RecipeError("factor_budget_mb", "must be finite and >= 0");
+    if (solves_for_minimizer(r.method))
     {
+        const std::string name = r.method == Method::Direct ? "\"direct\"" : "\"cg\"";
         if (r.optimal_step)
-            throw RecipeError("lambda",
-                              "\"optimal\" is not a step length of method \"direct\" "
-                              "(each of its steps solves for the minimizer)");
+            throw RecipeError("lambda", "\"optimal\" is not a step length of method " + name +
+                                            " (each of its steps solves for the minimizer)");
         if (r.joint)
-            throw RecipeError("joint",
-                              "is not available with method \"direct\" yet (the normals "
-                              "of joint mode move with the positions; use \"jacobi\")");
+            throw RecipeError("joint", "is not available with method " + name +
+                                           " yet (the normals of joint mode move with the "
+                                           "positions; use \"jacobi\")");
         if (r.volume)
-            throw RecipeError("volume",
-                              "is not available with method \"direct\" yet (the volume "
-                              "is a constraint the factorization does not hold; use "
-                              "\"jacobi\")");
+            throw RecipeError("volume", "is not available with method " + name +
+                                            " yet (the volume is a constraint its linear "
+                                            "system does not hold; use \"jacobi\")");
     }
 }
 

@@ -28,8 +28,19 @@ enum class Method
     //! which lands a quadratic recipe on its minimizer in one step; further steps refine
     //! it to rounding. The matrix is factored once per precomputation; moved targets
     //! change only r.
-    Direct
+    Direct,
+    //! \brief The same minimizer by conjugate gradients preconditioned by A_ff's diagonal
+    //! blocks (the paper's Jacobi blocks), from where the step starts: no factor, for systems
+    //! whose factor would not fit in memory; the direct method falls back to it when the
+    //! factor's estimate exceeds the recipe's factor budget or CHOLMOD runs out of memory.
+    ConjugateGradient
 };
+
+//! The methods whose step solves for the minimizer (Direct, ConjugateGradient).
+inline bool solves_for_minimizer(Method m)
+{
+    return m == Method::Direct || m == Method::ConjugateGradient;
+}
 
 //! A list of element indices, or every element of the mesh ("all").
 struct IndexSet
@@ -176,6 +187,10 @@ struct Recipe
     Scalar tolerance = 0; //!< stop when the relative energy decrease falls below
     Method method = Method::Jacobi;
     Scalar taubin_mu = -0.53; //!< the second step's length, Method::Taubin only
+    //! \brief The direct method's memory for its factor, in MB: a factor whose estimate
+    //! (after the symbolic analysis) exceeds it is not computed, and conjugate gradients
+    //! solve instead (noted). 0: half of the machine's physical memory.
+    Scalar factor_budget_mb = 0;
     //! Shorten the steps of vertices whose steps would turn a face of their star over
     //! (FlipGuard); off: the steps as the energy gives them, bit for bit.
     bool prevent_flips = false;

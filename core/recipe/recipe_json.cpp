@@ -438,7 +438,7 @@ Recipe parse_recipe_json(const Json& j)
     expect_object(j, "",
                   {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
                    "soft", "centroid", "normal", "normal_smoothing", "joint", "bending", "volume",
-                   "falloff", "prevent_flips"});
+                   "falloff", "prevent_flips", "factor_budget_mb"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -448,10 +448,12 @@ Recipe parse_recipe_json(const Json& j)
     if (j.contains("method"))
     {
         constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent, Method::Taubin,
-                                      Method::Direct};
+                                      Method::Direct, Method::ConjugateGradient};
         r.method = methods[choice(j["method"], "method",
-                                  {"jacobi", "gradient_descent", "taubin", "direct"})];
+                                  {"jacobi", "gradient_descent", "taubin", "direct", "cg"})];
     }
+    if (j.contains("factor_budget_mb"))
+        r.factor_budget_mb = weight(j["factor_budget_mb"], "factor_budget_mb");
     if (j.contains("taubin_mu"))
         r.taubin_mu = number(j["taubin_mu"], "taubin_mu");
     if (j.contains("region"))
@@ -628,10 +630,13 @@ nlohmann::json recipe_to_json(const Recipe& r)
     j["iterations"] = r.iterations;
     j["lambda"] = r.optimal_step ? Json("optimal") : Json(r.lambda);
     j["tolerance"] = r.tolerance;
-    j["method"] = r.method == Method::Jacobi            ? "jacobi"
-                  : r.method == Method::GradientDescent ? "gradient_descent"
-                  : r.method == Method::Direct          ? "direct"
-                                                        : "taubin";
+    j["method"] = r.method == Method::Jacobi              ? "jacobi"
+                  : r.method == Method::GradientDescent   ? "gradient_descent"
+                  : r.method == Method::Direct            ? "direct"
+                  : r.method == Method::ConjugateGradient ? "cg"
+                                                          : "taubin";
+    if (r.factor_budget_mb > 0)
+        j["factor_budget_mb"] = r.factor_budget_mb;
     if (r.method == Method::Taubin)
         j["taubin_mu"] = r.taubin_mu;
     if (r.region)

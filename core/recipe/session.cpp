@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/recipe/session.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -51,6 +53,24 @@ std::vector<Scalar> unit_normals(const std::vector<Vec3>& normals)
     for (size_t k = 0; k < flat.size(); k += 3)
         normalize3(&flat[k]);
     return flat;
+}
+
+} // namespace
+
+namespace {
+
+// Conjugate gradients stop at this residual relative to the step's right-hand side: the
+// minimizer to rounding, as the factor gives it (the run's rule then stops the steps).
+constexpr Scalar kConjugateGradientTolerance = 1e-13;
+
+// The direct method's factor budget in bytes: the recipe's, or half the physical memory.
+double factor_budget_bytes(Scalar budget_mb)
+{
+    if (budget_mb > 0)
+        return budget_mb * 1e6;
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && page > 0 ? 0.5 * static_cast<double>(pages) * static_cast<double>(page)
+                                 : 1e300;
 }
 
 } // namespace
@@ -398,13 +418,11 @@ void Session::precompute()
         dx_.assign(3 * static_cast<size_t>(nv), 0);
         next_ = {};
     }
-    if (recipe_.method == Method::Direct)
+    cholesky_.reset();
+    cg_.reset();
+    direct_rhs_ = {};
+    if (solves_for_minimizer(recipe_.method))
         factor_direct();
-    else
-    {
-        cholesky_.reset();
-        direct_rhs_ = {};
-    }
 }
 
 void Session::factor_direct()
@@ -428,15 +446,69 @@ void Session::factor_direct()
             if (normal_)
                 normal_->add_hessian_column(i, normals_, col);
         });
-    if (!cholesky_)
-        cholesky_ = std::make_unique<SparseCholesky>();
-    cholesky_->analyse(a);
-    if (!cholesky_->factor(a))
+    direct_rhs_.assign(3 * free_.size(), 0);
+    // Conjugate gradients: asked for, or in place of a factor that would not fit.
+    const auto use_conjugate_gradients = [&] {
+        cholesky_.reset();
+        ConjugateGradientSystem cg;
+        cg.a = SymmetricRows::from_upper(a);
+        cg.block = direct_blocks_ ? 3 : 1;
+        try
+        {
+            cg.inverse = block_jacobi_inverse(cg.a, cg.block);
+        }
+        catch (const SolverError&)
+        {
+            throw RecipeError("method",
+                              "the system of the free vertices is not positive "
+                              "definite in double precision (weights many orders "
+                              "of magnitude apart: closer ones make it so)");
+        }
+        cg_ = std::move(cg);
+    };
+    if (recipe_.method == Method::ConjugateGradient)
+    {
+        use_conjugate_gradients();
+        return;
+    }
+    cholesky_ = std::make_unique<SparseCholesky>();
+    try
+    {
+        cholesky_->analyse(a);
+    }
+    catch (const SolverError& e)
+    {
+        notes_.push_back(std::string(e.what()) + ": solved by conjugate gradients instead");
+        use_conjugate_gradients();
+        return;
+    }
+    const double budget = factor_budget_bytes(recipe_.factor_budget_mb);
+    if (cholesky_->stats().factor_bytes() > budget)
+    {
+        notes_.push_back("the factor would take " +
+                         std::to_string(std::lround(cholesky_->stats().factor_bytes() / 1e6)) +
+                         " MB, over the factor budget of " +
+                         std::to_string(std::lround(budget / 1e6)) +
+                         " MB: solved by conjugate gradients instead");
+        use_conjugate_gradients();
+        return;
+    }
+    bool positive = false;
+    try
+    {
+        positive = cholesky_->factor(a);
+    }
+    catch (const SolverError& e)
+    {
+        notes_.push_back(std::string(e.what()) + ": solved by conjugate gradients instead");
+        use_conjugate_gradients();
+        return;
+    }
+    if (!positive)
         throw RecipeError("method",
                           "\"direct\": the system of the free vertices is not positive definite "
                           "in double precision (weights many orders of magnitude apart: closer "
                           "ones make it so)");
-    direct_rhs_.assign(3 * free_.size(), 0);
 }
 
 std::optional<std::string> Session::unheld_part() const
@@ -1043,7 +1115,7 @@ StepInfo Session::general_step(std::span<Scalar> x)
         system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0);
         dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
     }
-    if (recipe_.method == Method::Direct)
+    if (solves_for_minimizer(recipe_.method))
         return direct_step(x);
     const bool use_blocks = !system_.inverse.empty();
     if (joint_ && use_blocks)
@@ -1123,7 +1195,25 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     StepInfo info;
     info.lambda = 1;
     info.gradient = rhs_norm();
-    cholesky_->solve(direct_rhs_, direct_blocks_ ? 1 : 3);
+    if (cholesky_)
+        cholesky_->solve(direct_rhs_, direct_blocks_ ? 1 : 3);
+    else
+    {
+        // A d = r from d = 0 (the step starts at the current positions, the last solution):
+        // one solve of 3 #free unknowns with blocks, else one per coordinate.
+        const size_t m = static_cast<size_t>(cg_->a.size);
+        std::vector<Scalar> b(m);
+        for (size_t c = 0; c * m < direct_rhs_.size(); ++c)
+        {
+            const std::span<Scalar> d(direct_rhs_.data() + c * m, m);
+            std::copy(d.begin(), d.end(), b.begin());
+            std::fill(d.begin(), d.end(), Scalar(0));
+            const ConjugateGradientResult r = conjugate_gradient(
+                cg_->a, cg_->inverse, cg_->block, b, d, kConjugateGradientTolerance,
+                static_cast<int>(std::min<size_t>(4 * m + 100, 1000000)));
+            info.inner_iterations += r.iterations;
+        }
+    }
     parallel_for(n, [&](Index k) {
         for (int a = 0; a < 3; ++a)
             x[3 * static_cast<size_t>(free_[k]) + a] += direct_rhs_[at(k, a)];
@@ -1248,7 +1338,7 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
         if (on_step)
             on_step(static_cast<int>(result.energies.size()) - 1, e);
     };
-    if (recipe.method == Method::Direct)
+    if (solves_for_minimizer(recipe.method))
     {
         // Each step solves for the minimizer from where it starts; the rule is the
         // gradient's, relative to the input's.
@@ -1259,6 +1349,7 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
             const StepInfo info = session.step();
             result.lambdas.push_back(info.lambda);
             result.shortened.push_back(info.shortened);
+            result.inner_iterations.push_back(info.inner_iterations);
             ++result.iterations;
             record(session.energy());
             // r at the new positions, once: the stopping rule's gradient and the report's

@@ -18,6 +18,7 @@
 #include "core/energies/soft_vertex_term.h"
 #include "core/energies/volume_constraint.h"
 #include "core/recipe/recipe.h"
+#include "core/solver/conjugate_gradient.h"
 #include "core/solver/flip_guard.h"
 #include "core/solver/jacobi_system.h"
 #include "core/solver/sparse_cholesky.h"
@@ -72,6 +73,9 @@ struct StepInfo
     //! The direct method: |r(x)| over the free vertices where the step started, r = -1/2
     //! dE/dx (Session::Residual::gradient); -1 for the other methods, which do not compute it.
     Scalar gradient = -1;
+    //! Conjugate gradients: the iterations of the step's solve (summed over the coordinates
+    //! when they are solved apart); 0 for the other methods.
+    int inner_iterations = 0;
 };
 
 //! \brief All smoothing strategies of \cite taubin_2012 combined in one solver, shaped
@@ -187,8 +191,12 @@ public:
         Scalar jacobi_displacement = 0;
     };
     Residual residual(std::span<const Scalar> x);
-    //! The direct method's factorization (nullptr for the other methods).
+    //! The direct method's factorization (nullptr for the other methods, and when conjugate
+    //! gradients solve in its place).
     const SparseCholesky* factorization() const { return cholesky_.get(); }
+    //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
+    //! direct method over its factor budget: notes() says why).
+    bool conjugate_gradients() const { return cg_.has_value(); }
 
     std::span<const Index> free_vertices() const { return free_; }
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.
@@ -329,6 +337,15 @@ private:
     //! The direct method's factor of A_ff (nullptr for the other methods), and whether A_ff
     //! has 3x3 blocks (the normal term): 3 #free unknowns, else #free for 3 right-hand sides
     std::unique_ptr<SparseCholesky> cholesky_;
+    //! Conjugate gradients' matrix (A_ff by rows) and its inverted diagonal blocks, in place
+    //! of the factor
+    struct ConjugateGradientSystem
+    {
+        SymmetricRows a;
+        std::vector<Scalar> inverse;
+        int block = 1;
+    };
+    std::optional<ConjugateGradientSystem> cg_;
     bool direct_blocks_ = false;
     std::vector<Scalar> direct_rhs_; //!< 3 #free: r_f, then dx_f, in the solver's order
     std::vector<Scalar> dx_;         //!< 3 #V, zero on non-free vertices
@@ -416,6 +433,8 @@ struct SmoothResult
     //! The direct method: |r(x)| / |r(x_0)| after each step (x_0 the input, r = -1/2 dE/dx
     //! over the free vertices); empty for the other methods.
     std::vector<Scalar> gradients;
+    //! Conjugate gradients: each step's iterations (StepInfo::inner_iterations); else empty.
+    std::vector<int> inner_iterations;
     //! The direct method: the largest free vertex's Jacobi displacement at the result
     //! (Session::Residual), how far one more Jacobi step would move it; -1
     //! for the other methods.

@@ -141,14 +141,16 @@ void solver_panel(const PanelContext& ui)
         }
     }
     // The methods the editor runs, in the combo's order.
-    constexpr Method methods[] = {Method::Jacobi, Method::Taubin, Method::Direct};
-    const char* method_items[] = {"Jacobi steps", "Taubin lambda|mu", "direct: the minimizer"};
+    constexpr Method methods[] = {Method::Jacobi, Method::Taubin, Method::Direct,
+                                  Method::ConjugateGradient};
+    const char* method_items[] = {"Jacobi steps", "Taubin lambda|mu", "direct: the minimizer",
+                                  "CG: the minimizer"};
     int method = static_cast<int>(std::find(std::begin(methods), std::end(methods), s.method) -
                                   std::begin(methods));
     ImGui::SetNextItemWidth(170);
     if (ImGui::Combo("method", &method, method_items, static_cast<int>(std::size(method_items))))
     {
-        s.method = methods[std::clamp(method, 0, 2)];
+        s.method = methods[std::clamp(method, 0, static_cast<int>(std::size(methods)) - 1)];
         toggled = true;
     }
     ui.track("method");

@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe.h"
 #include "tests/helpers.h"
@@ -195,6 +197,30 @@ TEST_SUITE("Cli")
         CHECK(j["direct"]["jacobi_displacement"].get<double>() <= 1e-9);
         CHECK(j["direct"]["unknowns"].get<long long>() == 34835 - 2);
         CHECK(j["direct"]["factor_nonzeros"].get<double>() > 34835);
+    }
+
+    TEST_CASE("--method cg: the same minimizer by conjugate gradients, their iterations reported")
+    {
+        const fs::path dir = test::temp_dir();
+        const std::string recipe = pins_recipe(dir);
+        const auto solve = [&](const std::string& method) {
+            const std::string out = (dir / (method + ".obj")).string();
+            const Run r = cli("smooth " + bunny() + " -o " + test::shell_quote(out) + " --recipe " +
+                              test::shell_quote(recipe) + " --method " + method + " --report -");
+            REQUIRE(r.code == 0);
+            return std::pair{nlohmann::json::parse(r.out), io::read_mesh(out).positions};
+        };
+        const auto [cg, cg_positions] = solve("cg");
+        const auto [direct, direct_positions] = solve("direct");
+        REQUIRE(cg.contains("cg"));
+        CHECK_FALSE(cg.contains("direct"));
+        CHECK(cg["cg"]["iterations"].front().get<int>() > 0);
+        CHECK(cg["cg"]["relative_gradient"].back().get<double>() <= 1e-12);
+        CHECK(cg["cg"]["jacobi_displacement"].get<double>() <= 1e-9);
+        Scalar worst = 0;
+        for (size_t k = 0; k < cg_positions.size(); ++k)
+            worst = std::max(worst, std::abs(cg_positions[k] - direct_positions[k]));
+        CHECK(worst <= 1e-9 * bounding_box(direct_positions).diagonal());
     }
 
     TEST_CASE("CHOLMOD and its BLAS are loaded by the direct method only")

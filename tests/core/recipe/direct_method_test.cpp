@@ -282,16 +282,105 @@ TEST_SUITE("direct method")
         CHECK(session.residual(d.start).jacobi_displacement > 1e-3 * diagonal);
     }
 
+    TEST_CASE("conjugate gradients reach the same minimizer on every kind of mesh")
+    {
+        for (const auto& named : small_meshes())
+        {
+            const char* name = named.first;
+            const Mesh& m = named.second;
+            const Topology t = build_topology(m);
+            const Scalar diagonal = bounding_box(m.positions).diagonal();
+            for (const RecipeCase& c : direct_cases(m))
+            {
+                CAPTURE(name);
+                CAPTURE(c.name);
+                Session direct(m, t, c.recipe);
+                const DirectRun d = run_direct(direct, m);
+                Recipe r = c.recipe;
+                r.method = Method::ConjugateGradient;
+                Session cg(m, t, r);
+                CHECK(cg.conjugate_gradients());
+                CHECK(cg.factorization() == nullptr);
+                const DirectRun g = run_direct(cg, m);
+                check_near(g.result, d.result, diagonal);
+                CHECK(g.run.iterations <= 3);
+                CHECK(g.run.stopped_by_tolerance);
+                REQUIRE(!g.run.inner_iterations.empty());
+                CHECK(g.run.inner_iterations.front() > 0);
+                CHECK(cg.residual(g.result).jacobi_displacement <= 1e-9 * diagonal);
+            }
+        }
+    }
+
+    TEST_CASE("over its factor budget the direct method solves by conjugate gradients, noted")
+    {
+        const Mesh m = noisy(test::icosphere(4), 0.01);
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        Recipe r;
+        r.method = Method::Direct;
+        r.bending = Bending{1.0, 0.5};
+        r.hard = HardVertices{{0, 100, 2000}, {}};
+        for (const Index v : r.hard->vertices)
+            r.hard->targets.push_back(
+                {m.positions[3 * v] * 1.2, m.positions[3 * v + 1], m.positions[3 * v + 2]});
+        Session factored(m, t, r);
+        REQUIRE(factored.factorization() != nullptr);
+        const double factor_mb = factored.factorization()->stats().factor_bytes() / 1e6;
+        const DirectRun d = run_direct(factored, m);
+        r.factor_budget_mb = 0.5 * factor_mb; // the factor does not fit
+        Session over(m, t, r);
+        CHECK(over.factorization() == nullptr);
+        CHECK(over.conjugate_gradients());
+        REQUIRE(over.notes().size() == 1);
+        CHECK(over.notes()[0].find("over the factor budget") != std::string::npos);
+        check_near(run_direct(over, m).result, d.result, diagonal);
+        r.factor_budget_mb = 2 * factor_mb; // it fits
+        Session within(m, t, r);
+        CHECK(within.factorization() != nullptr);
+        CHECK(within.notes().empty());
+    }
+
+    TEST_CASE("conjugate gradients give the same bits for 1, 2 and 3 threads")
+    {
+        const Mesh m = noisy(test::icosphere(5), 0.01); // 10,242 vertices: parallel loops
+        const Topology t = build_topology(m);
+        for (RecipeCase c : direct_cases(m))
+        {
+            CAPTURE(c.name);
+            c.recipe.method = Method::ConjugateGradient;
+            std::vector<std::vector<Scalar>> results;
+            for (const int threads : {1, 2, 3})
+            {
+                set_thread_count(threads);
+                Session session(m, t, c.recipe);
+                results.push_back(run_direct(session, m).result);
+            }
+            set_thread_count(0);
+            for (size_t k = 1; k < results.size(); ++k)
+                CHECK(std::memcmp(results[0].data(), results[k].data(),
+                                  results[0].size() * sizeof(Scalar)) == 0);
+        }
+    }
+
     TEST_CASE("\"method\": \"direct\" in a recipe file, and what it does not take")
     {
         const Recipe r = parse_recipe(R"({"method": "direct", "iterations": 4})", "direct.json");
         CHECK(r.method == Method::Direct);
         CHECK(parse_recipe(recipe_to_json(r).dump(), "again.json").method == Method::Direct);
+        const Recipe cg = parse_recipe(R"({"method": "cg", "factor_budget_mb": 12.5})", "cg.json");
+        CHECK(cg.method == Method::ConjugateGradient);
+        CHECK(cg.factor_budget_mb == 12.5);
+        const Recipe again = parse_recipe(recipe_to_json(cg).dump(), "again.json");
+        CHECK(again.method == Method::ConjugateGradient);
+        CHECK(again.factor_budget_mb == 12.5);
+        CHECK_THROWS_AS(parse_recipe(R"({"factor_budget_mb": -1})", "r.json"), RecipeError);
         const Mesh m = test::tetrahedron();
         for (const char* text :
              {R"({"method": "direct", "lambda": "optimal"})",
               R"({"method": "direct", "volume": {}})",
-              R"({"method": "direct", "normal": {"faces": "all"}, "joint": {"gamma": 1}})"})
+              R"({"method": "direct", "normal": {"faces": "all"}, "joint": {"gamma": 1}})",
+              R"({"method": "cg", "volume": {}})"})
         {
             CAPTURE(text);
             CHECK_THROWS_AS(check_recipe(parse_recipe(text, "r.json"), m), RecipeError);

@@ -94,7 +94,7 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
-              "bending, volume, falloff, prevent_flips)");
+              "bending, volume, falloff, prevent_flips, factor_budget_mb)");
         CHECK(error_of(R"({"bending": {"stiffness": 1}})") ==
               "'r.json': bending.stiffness: unknown key (allowed here: mu, membrane)");
         CHECK(error_of(R"({"bending": {"mu": -1}})") ==
@@ -136,9 +136,9 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"lambda": 0})") == "'r.json': lambda: must be > 0 (got 0)");
         CHECK(error_of(R"({"iterations": -2})") ==
               "'r.json': iterations: must be an integer in [0, 2147483647] (got -2)");
-        CHECK(
-            error_of(R"({"method": "newton"})") ==
-            "'r.json': method: must be \"jacobi\", \"gradient_descent\", \"taubin\" or \"direct\"");
+        CHECK(error_of(R"({"method": "newton"})") ==
+              "'r.json': method: must be \"jacobi\", \"gradient_descent\", \"taubin\", \"direct\" "
+              "or \"cg\"");
         CHECK(error_of(R"({"centroid": {"faces": "all", "denominator": "printed"}})") ==
               "'r.json': centroid.denominator: must be \"paper\" or \"exact\"");
         CHECK(error_of(R"({"normal": {"faces": [0], "normals": [[0, 0, 0]]}})") ==
