@@ -109,23 +109,52 @@ std::vector<std::pair<const char*, Mesh>> small_meshes()
             {"mixed polygons", noisy(test::mixed_polygons(), 0.1)}};
 }
 
+// Calls check(m, t, diagonal, c) for every recipe case on every small mesh, named in the
+// messages.
+template <class Check>
+void for_each_small_case(Check&& check)
+{
+    for (const auto& named : small_meshes())
+    {
+        // Not a structured binding: CAPTURE's lambda cannot name one (clang 14).
+        const char* name = named.first;
+        const Mesh& m = named.second;
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        for (const RecipeCase& c : direct_cases(m))
+        {
+            CAPTURE(name);
+            CAPTURE(c.name);
+            check(m, t, diagonal, c);
+        }
+    }
+}
+
+// The run's result with 1, 2 and 3 threads, compared bit for bit.
+void check_same_bits_for_threads(const Mesh& m, const Topology& t, const Recipe& recipe)
+{
+    std::vector<std::vector<Scalar>> results;
+    for (const int threads : {1, 2, 3})
+    {
+        set_thread_count(threads);
+        Session session(m, t, recipe);
+        results.push_back(run_direct(session, m).result);
+    }
+    set_thread_count(0);
+    for (size_t k = 1; k < results.size(); ++k)
+        CHECK(std::memcmp(results[0].data(), results[k].data(),
+                          results[0].size() * sizeof(Scalar)) == 0);
+    CHECK(results[0] != m.positions);
+}
+
 } // namespace
 
 TEST_SUITE("direct method")
 {
     TEST_CASE("the minimizer of every term on every kind of mesh, as the reference solves it")
     {
-        for (const auto& named : small_meshes())
-        {
-            // Not a structured binding: CAPTURE's lambda cannot name one (clang 14).
-            const char* name = named.first;
-            const Mesh& m = named.second;
-            const Topology t = build_topology(m);
-            const Scalar diagonal = bounding_box(m.positions).diagonal();
-            for (const RecipeCase& c : direct_cases(m))
-            {
-                CAPTURE(name);
-                CAPTURE(c.name);
+        for_each_small_case(
+            [](const Mesh& m, const Topology& t, Scalar diagonal, const RecipeCase& c) {
                 Session session(m, t, c.recipe);
                 const DirectRun d = run_direct(session, m);
                 const std::vector<Index> free(session.free_vertices().begin(),
@@ -139,10 +168,9 @@ TEST_SUITE("direct method")
                 CHECK(d.run.stopped_by_tolerance);
                 REQUIRE(!d.run.gradients.empty());
                 CHECK(d.run.gradients.front() <= 1e-9);
-                // What the issue measures: no free vertex's Jacobi displacement is left.
+                // No free vertex's Jacobi displacement is left.
                 CHECK(session.residual(d.result).jacobi_displacement <= 1e-9 * diagonal);
-            }
-        }
+            });
     }
 
     TEST_CASE("one Jacobi step from the direct result moves nothing")
@@ -220,18 +248,7 @@ TEST_SUITE("direct method")
         for (const RecipeCase& c : direct_cases(m))
         {
             CAPTURE(c.name);
-            std::vector<std::vector<Scalar>> results;
-            for (const int threads : {1, 2, 3})
-            {
-                set_thread_count(threads);
-                Session session(m, t, c.recipe);
-                results.push_back(run_direct(session, m).result);
-            }
-            set_thread_count(0);
-            for (size_t k = 1; k < results.size(); ++k)
-                CHECK(std::memcmp(results[0].data(), results[k].data(),
-                                  results[0].size() * sizeof(Scalar)) == 0);
-            CHECK(results[0] != m.positions);
+            check_same_bits_for_threads(m, t, c.recipe);
         }
     }
 
@@ -284,16 +301,8 @@ TEST_SUITE("direct method")
 
     TEST_CASE("conjugate gradients reach the same minimizer on every kind of mesh")
     {
-        for (const auto& named : small_meshes())
-        {
-            const char* name = named.first;
-            const Mesh& m = named.second;
-            const Topology t = build_topology(m);
-            const Scalar diagonal = bounding_box(m.positions).diagonal();
-            for (const RecipeCase& c : direct_cases(m))
-            {
-                CAPTURE(name);
-                CAPTURE(c.name);
+        for_each_small_case(
+            [](const Mesh& m, const Topology& t, Scalar diagonal, const RecipeCase& c) {
                 Session direct(m, t, c.recipe);
                 const DirectRun d = run_direct(direct, m);
                 Recipe r = c.recipe;
@@ -308,8 +317,7 @@ TEST_SUITE("direct method")
                 REQUIRE(!g.run.inner_iterations.empty());
                 CHECK(g.run.inner_iterations.front() > 0);
                 CHECK(cg.residual(g.result).jacobi_displacement <= 1e-9 * diagonal);
-            }
-        }
+            });
     }
 
     TEST_CASE("over its factor budget the direct method solves by conjugate gradients, noted")
@@ -349,17 +357,7 @@ TEST_SUITE("direct method")
         {
             CAPTURE(c.name);
             c.recipe.method = Method::ConjugateGradient;
-            std::vector<std::vector<Scalar>> results;
-            for (const int threads : {1, 2, 3})
-            {
-                set_thread_count(threads);
-                Session session(m, t, c.recipe);
-                results.push_back(run_direct(session, m).result);
-            }
-            set_thread_count(0);
-            for (size_t k = 1; k < results.size(); ++k)
-                CHECK(std::memcmp(results[0].data(), results[k].data(),
-                                  results[0].size() * sizeof(Scalar)) == 0);
+            check_same_bits_for_threads(m, t, c.recipe);
         }
     }
 
