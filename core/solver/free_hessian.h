@@ -5,6 +5,7 @@
 #include <array>
 #include <functional>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "core/solver/sparse_cholesky.h"
@@ -32,6 +33,7 @@ public:
     {
         column_ = i;
         entries_.clear();
+        index_.clear();
     }
     Index column() const { return column_; }
     //! A_ji += a I.
@@ -48,14 +50,29 @@ public:
 private:
     Entry& entry(Index j)
     {
-        // A column holds a vertex's neighbours (about 7, tens at most): a search beats a map.
-        for (Entry& e : entries_)
-            if (e.vertex == j)
-                return e;
-        return entries_.emplace_back(Entry{j, 0, {}});
+        // A column holds a vertex's neighbours (about 7, a 2-ring's 19 with the thin plate):
+        // a search beats a map. A constrained face of thousands of corners couples them all
+        // (the centroid term's n_f x n_f block): past kSearched entries a map finds them, or
+        // such a column would take n_f^2 steps, and the face n_f^3.
+        if (entries_.size() <= kSearched)
+        {
+            for (Entry& e : entries_)
+                if (e.vertex == j)
+                    return e;
+            if (entries_.size() < kSearched)
+                return entries_.emplace_back(Entry{j, 0, {}});
+            for (size_t k = 0; k < entries_.size(); ++k)
+                index_.emplace(entries_[k].vertex, k);
+        }
+        const auto [at, added] = index_.emplace(j, entries_.size());
+        if (added)
+            entries_.push_back(Entry{j, 0, {}});
+        return entries_[at->second];
     }
+    static constexpr size_t kSearched = 32;
     Index column_ = kInvalidIndex;
     std::vector<Entry> entries_;
+    std::unordered_map<Index, size_t> index_; //!< vertex -> entry, past kSearched entries
 };
 
 //! \brief The half Hessian restricted to the free vertices, A_ff, as CHOLMOD reads it (the
