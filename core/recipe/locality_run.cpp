@@ -43,7 +43,7 @@ LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe
     : order_(without_inverses(std::move(order))),
       mesh_(std::move(renumbered_mesh)),
       topology_(build_topology(mesh_, required_topology(renumbered_recipe))),
-      session_(mesh_, topology_, renumbered_recipe)
+      session_(mesh_, topology_, renumbered_recipe, order_.vertex_order)
 {
     session_.apply_hard_targets(mesh_.positions);
     // The session holds the only copy of the positions while it runs.
@@ -68,7 +68,7 @@ LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe
     : order_(without_inverses(std::move(order))),
       mesh_(std::move(renumbered_mesh)),
       topology_(checked(std::move(topology), mesh_, renumbered_recipe)),
-      session_(mesh_, topology_, renumbered_recipe)
+      session_(mesh_, topology_, renumbered_recipe, order_.vertex_order)
 {
     session_.apply_hard_targets(mesh_.positions);
     session_.adopt_positions(std::move(mesh_.positions));

@@ -75,8 +75,13 @@ double factor_budget_bytes(Scalar budget_mb)
 
 } // namespace
 
-Session::Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe)
-    : mesh_(&mesh), topology_(&topology), recipe_(recipe), edge_(topology)
+Session::Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe,
+                 std::span<const Index> file_vertex)
+    : mesh_(&mesh),
+      topology_(&topology),
+      file_vertex_(file_vertex),
+      recipe_(recipe),
+      edge_(topology)
 {
     precompute();
 }
@@ -530,6 +535,10 @@ std::optional<std::string> Session::unheld_part() const
             continue;
         bool held = false;
         Index count = 0;
+        const auto file_number = [&](Index v) {
+            return file_vertex_.empty() ? v : file_vertex_[static_cast<size_t>(v)];
+        };
+        Index lowest = file_number(seed);
         part[seed] = parts;
         stack.assign(1, seed);
         while (!stack.empty())
@@ -537,6 +546,7 @@ std::optional<std::string> Session::unheld_part() const
             const Index v = stack.back();
             stack.pop_back();
             ++count;
+            lowest = std::min(lowest, file_number(v));
             if (soft_ && soft_->weight(v) > 0)
                 held = true;
             if (centroid_)
@@ -555,7 +565,7 @@ std::optional<std::string> Session::unheld_part() const
         }
         if (!held)
             return "\"direct\": the free part of " + std::to_string(count) +
-                   " vertices that holds vertex " + std::to_string(seed) +
+                   " vertices that holds vertex " + std::to_string(lowest) +
                    " is held by nothing (no pin, anchor, centroid constraint or fixed "
                    "vertex next to it), so the energy has no unique minimizer; pin a "
                    "vertex of it, anchor it (\"soft\"), or smooth it as part of a region";

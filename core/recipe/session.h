@@ -99,7 +99,10 @@ public:
     //! \pre check_recipe(recipe, mesh) holds; topology is build_topology(mesh, parts) with
     //! at least required_topology(recipe) (else SolverError).
     //! \throw RecipeError if the recipe does not fit the mesh.
-    Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe);
+    //! `file_vertex`: the file's number of each vertex, for the messages that name one (a
+    //! LocalityRun's order; empty: the mesh's own numbers); it must outlive the session.
+    Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe,
+            std::span<const Index> file_vertex = {});
     // The terms point at one another (joint mode, bilateral weights): not copied, not moved.
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
@@ -292,12 +295,14 @@ private:
     //! One step of the direct method: dx_f = A_ff^-1 r_f(x), then the flip guard if any.
     StepInfo direct_step(std::span<Scalar> x);
     //! \brief Why A_ff would be singular: the first free part (connected through edges) that
-    //! nothing holds, named by its size and one vertex; nullopt when every part is held.
+    //! nothing holds, named by its size and its lowest vertex in the file's numbering;
+    //! nullopt when every part is held.
     std::optional<std::string> unheld_part() const;
     void check_size(std::span<const Scalar> x, const char* what) const;
 
     const Mesh* mesh_;
     const Topology* topology_;
+    std::span<const Index> file_vertex_; //!< the file's vertex numbers (messages); or empty
     //! #V, from the topology: the mesh's positions may be handed to adopt_positions.
     Index vertex_count_ = 0;
     Recipe recipe_;

@@ -281,6 +281,18 @@ TEST_SUITE("direct method")
             CHECK(what.find("vertex 3") != std::string::npos);
             CHECK(what.find("held by nothing") != std::string::npos);
         }
+        // Named in the file's numbering when the session runs in another (LocalityRun's):
+        // here the file numbers the vertices backwards, so the part is 2, 1, 0.
+        const std::vector<Index> file_vertex{5, 4, 3, 2, 1, 0};
+        try
+        {
+            Session session(m, t, r, file_vertex);
+            FAIL("an unheld part was accepted");
+        }
+        catch (const RecipeError& e)
+        {
+            CHECK(std::string(e.what()).find("that holds vertex 0 ") != std::string::npos);
+        }
         // Held by an anchor on that triangle, it is accepted.
         r.soft = SoftVertices{{false, {4}}, 0.1, {}};
         CHECK_NOTHROW(Session(m, t, r));
