@@ -61,7 +61,7 @@ void SymmetricRows::multiply(std::span<const Scalar> x, std::span<Scalar> y) con
 std::vector<Scalar> block_jacobi_inverse(const SymmetricRows& a, int block)
 {
     const std::int64_t blocks = a.size / block;
-    const auto bb = static_cast<size_t>(block * block);
+    const auto bb = static_cast<size_t>(block) * static_cast<size_t>(block);
     std::vector<Scalar> inverse(static_cast<size_t>(blocks) * bb, 0);
     bool singular = false;
     for (std::int64_t v = 0; v < blocks; ++v)
@@ -117,7 +117,7 @@ ConjugateGradientResult conjugate_gradient(const SymmetricRows& a,
             ni, [&](Index i) { return u[static_cast<size_t>(i)] * v[static_cast<size_t>(i)]; });
     };
     const auto precondition = [&](std::span<const Scalar> r, std::span<Scalar> z) {
-        const auto bb = static_cast<size_t>(block * block);
+        const auto bb = static_cast<size_t>(block) * static_cast<size_t>(block);
         parallel_for(ni / block, [&](Index v) {
             const Scalar* m = &inverse_blocks[static_cast<size_t>(v) * bb];
             const size_t at = static_cast<size_t>(v) * static_cast<size_t>(block);
