@@ -140,18 +140,30 @@ void solver_panel(const PanelContext& ui)
             }
         }
     }
-    // The methods the editor runs, in the combo's order.
-    constexpr Method methods[] = {Method::Jacobi, Method::Taubin, Method::Direct,
-                                  Method::ConjugateGradient};
-    const char* method_items[] = {"Jacobi steps", "Taubin lambda|mu", "direct: the minimizer",
-                                  "CG: the minimizer"};
-    int method = static_cast<int>(std::find(std::begin(methods), std::end(methods), s.method) -
-                                  std::begin(methods));
+    // The methods the editor runs, each an item of the combo that a script can click
+    // ("method/Jacobi steps").
+    constexpr std::pair<Method, const char*> methods[] = {
+        {Method::Jacobi, "Jacobi steps"},
+        {Method::Taubin, "Taubin lambda|mu"},
+        {Method::Direct, "direct: the minimizer"},
+        {Method::ConjugateGradient, "CG: the minimizer"}};
+    const char* shown = methods[0].second;
+    for (const auto& [m, name] : methods)
+        if (m == s.method)
+            shown = name;
     ImGui::SetNextItemWidth(170);
-    if (ImGui::Combo("method", &method, method_items, static_cast<int>(std::size(method_items))))
+    if (ImGui::BeginCombo("method", shown))
     {
-        s.method = methods[std::clamp(method, 0, static_cast<int>(std::size(methods)) - 1)];
-        toggled = true;
+        for (const auto& [m, name] : methods)
+        {
+            if (ImGui::Selectable(name, m == s.method) && m != s.method)
+            {
+                s.method = m;
+                toggled = true;
+            }
+            ui.track(std::string("method/") + name);
+        }
+        ImGui::EndCombo();
     }
     ui.track("method");
     Bending& last_bending = ui.state.panels.bending; // turned off then on: as it was

@@ -99,7 +99,8 @@ total=$(grep -c '^v ' "$work/loaded.obj")
 settings=$(count_lines "command solver settings: ok")
 click_widget "keep volume"
 wait_line "command solver settings: ok" $((settings + 1))
-click_widget "Taubin lambda|mu"
+click_widget "method"
+click_widget "method/Taubin lambda|mu"
 wait_line "command solver settings: ok" $((settings + 2))
 click_widget "falloff from border and pins" # the region's border and the pins fade
 wait_line "command solver settings: ok" $((settings + 3))
