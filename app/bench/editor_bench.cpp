@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/median.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
@@ -43,12 +44,7 @@ struct Series
 {
     std::string name;
     std::vector<double> ms;
-    double median() const
-    {
-        std::vector<double> s = ms;
-        std::sort(s.begin(), s.end());
-        return s.empty() ? 0 : s[s.size() / 2];
-    }
+    double median() const { return bench::median(ms); }
     double max() const { return ms.empty() ? 0 : *std::max_element(ms.begin(), ms.end()); }
 };
 

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "app/bench/core_clock.h"
+#include "app/bench/median.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/bench/openmesh_peer.h"
@@ -58,13 +59,7 @@ struct Figure
     std::string unit;           //!< "s", "B/s", "B/vertex"
     std::vector<double> samples;
 
-    double median() const
-    {
-        std::vector<double> s = samples;
-        std::sort(s.begin(), s.end());
-        const size_t n = s.size();
-        return n % 2 ? s[n / 2] : (s[n / 2 - 1] + s[n / 2]) / 2;
-    }
+    double median() const { return bench::median(samples); }
     double min() const { return *std::min_element(samples.begin(), samples.end()); }
     double max() const { return *std::max_element(samples.begin(), samples.end()); }
 };
