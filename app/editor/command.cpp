@@ -48,7 +48,8 @@ CommandSpec spec_of(const Command& command)
             else if constexpr (std::is_same_v<T, cmd::SetNormalDirection>)
                 return {"normal direction", kSets, kSets, false, false};
             else if constexpr (std::is_same_v<T, cmd::MovePins>)
-                return {"move pins", kSets, kSets, false, false};
+                return {"move pins", kSets | kSettings, c.dome ? kSets | kSettings : kSets, false,
+                        false};
             else if constexpr (std::is_same_v<T, cmd::PaintDab>)
             {
                 // Relax steps the solver from the stroke's start: a run playing is paused

@@ -190,11 +190,14 @@ struct SetSetWeight
     std::string set;
     Scalar mu = 1;
 };
-//! Moves a pin set's targets by `offset`.
+//! \brief Moves a pin set's targets by `offset`; with `dome`, first takes those solver
+//! settings (the M tool's first move, when the settings raise no dome: dome_settings), in
+//! the same undo step.
 struct MovePins
 {
     std::string set;
     Vec3 offset{0, 0, 0};
+    std::optional<SolverSettings> dome{};
 };
 //! \brief One dab of the Paint tool, in the world, so that a script replays a stroke
 //! bit for bit: the vertices within `radius` of `center` (at the current positions) change

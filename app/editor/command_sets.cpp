@@ -222,6 +222,12 @@ bool CommandExecutor::operator()(const cmd::MovePins& c) const
     ConstraintSet& set = d.sets[set_index(c.set)];
     if (set.kind != ConstraintKind::Pin)
         return fail("set '" + c.set + "' is not a pin set");
+    if (c.dome && *c.dome != d.solver)
+    {
+        d.solver = *c.dome;
+        s.solver_.set_iterations_per_frame(d.solver.iterations_per_frame);
+        say("dome: thin plate, direct method");
+    }
     if (set.targets.empty())
         for (const Index v : set.vertices)
         {

@@ -194,6 +194,26 @@ SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace)
     return settings;
 }
 
+std::optional<SolverSettings> dome_settings(const std::vector<ConstraintSet>& sets,
+                                            const SolverSettings& settings)
+{
+    const bool region = std::ranges::any_of(
+        sets, [](const ConstraintSet& s) { return s.kind == ConstraintKind::Region && s.enabled; });
+    if (!region)
+        return std::nullopt;
+    SolverSettings dome = settings;
+    if (!solves_for_minimizer(dome.method))
+        dome.method = Method::Direct;
+    if (!dome.bending)
+        dome.bending = Bending{};
+    dome.joint = false;
+    dome.keep_volume = false;
+    dome.optimal_step = false;
+    if (dome == settings)
+        return std::nullopt;
+    return dome;
+}
+
 bool takes_weight_map(ConstraintKind kind)
 {
     return kind == ConstraintKind::Anchor || kind == ConstraintKind::Region;

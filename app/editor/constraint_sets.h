@@ -112,6 +112,17 @@ struct SolverSettings
 //! "until converged", which say how the editor runs a recipe and are not part of it.
 SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace);
 
+//! \brief The settings with which a pin drag raises a dome (the M tool): the minimizer of
+//! the sets with the thin plate, as Blender's proportional editing or a Move brush gives
+//! it. The direct method unless the settings solve for the minimizer already (conjugate
+//! gradients), the bending term (mu 1) when there is none, and none of what the direct
+//! method refuses (joint mode, the kept volume, the exact line search). nullopt when
+//! `settings` raise a dome already, or when no enabled region set fixes the rest: over a
+//! whole mesh, pins alone would hold the thin plate's minimizer only by collapsing it
+//! toward them, so the drag then runs as the settings say.
+std::optional<SolverSettings> dome_settings(const std::vector<ConstraintSet>& sets,
+                                            const SolverSettings& settings);
+
 //! Whether a kind's sets can carry a weight map (anchor and region sets).
 bool takes_weight_map(ConstraintKind kind);
 //! \brief The anchor weight that holds a region vertex of freedom w in (0, 1]: (1 - w) / w,

@@ -37,6 +37,8 @@ ToolContext EditorSession::tool_context()
     c.settings = state_.tools;
     c.pin_handles = [this] { return pin_handles(); };
     c.normal_handles = [this] { return normal_handles(); };
+    if (state_.tool == ToolKind::MovePins)
+        c.dome = dome_settings(document_.sets, document_.solver);
     return c;
 }
 
@@ -206,6 +208,23 @@ void EditorSession::update()
     {
         std::fprintf(trace_, "run stopped: %d steps from the base\n", document_.steps_from_base);
         std::fflush(trace_);
+    }
+    // A restart the recipe did not fit (a free part nothing holds, under the direct
+    // method): found on the solver's thread; said in the status line, where the artist
+    // looks after pressing Space, and in the trace.
+    if (const std::string error = solver_.status().error; error != error_shown_)
+    {
+        error_shown_ = error;
+        if (!error.empty())
+        {
+            state_.message = "cannot solve: " + error;
+            state_.message_is_error = true;
+            if (trace_ != nullptr)
+            {
+                std::fprintf(trace_, "solver failed: %s\n", error.c_str());
+                std::fflush(trace_);
+            }
+        }
     }
     if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)
     {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct ToolContext
     //! The grab handles of the visible pin sets and normal sets (asked for only by the
     //! tools that grab them).
     std::function<std::vector<GrabHandle>()> pin_handles, normal_handles;
+    //! The solver settings a pin drag takes first, when the current ones raise no dome
+    //! (dome_settings): the M tool's drag shows the minimizer with the thin plate.
+    std::optional<SolverSettings> dome;
 };
 
 //! \brief A tool of the left mouse button: a gesture (a press, moves, a release) that

@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/tools/move_pins_tool.h"
 
+#include <utility>
+
 namespace meshfair::app {
 
 bool MovePinsTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
@@ -20,6 +22,9 @@ bool MovePinsTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
     depth_ = grabbed.depth;
     from_ = camera_.unproject({at.x, at.y, depth_}, view_.width, view_.height);
     pressed_at_ = at;
+    // The drag shows the minimizer with the thin plate (a dome, not the membrane's horn):
+    // the first move takes the settings, in its undo step.
+    dome_ = context.dome;
     return true;
 }
 
@@ -29,7 +34,7 @@ void MovePinsTool::move(ScreenPoint to, std::vector<Command>& out)
     const glm::dvec3 d = p - from_;
     if (d == glm::dvec3(0.0))
         return;
-    out.push_back(cmd::MovePins{set_, {d.x, d.y, d.z}});
+    out.push_back(cmd::MovePins{set_, {d.x, d.y, d.z}, std::exchange(dome_, std::nullopt)});
     from_ = p;
 }
 

@@ -31,6 +31,7 @@ private:
     double depth_ = 0;     // the grabbed glyph's window depth
     glm::dvec3 from_{0.0}; // the grabbed point, in the world, as moved so far
     ScreenPoint pressed_at_;
+    std::optional<SolverSettings> dome_; //!< taken by the gesture's first move
 };
 
 } // namespace meshfair::app

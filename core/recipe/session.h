@@ -228,6 +228,10 @@ private:
     //! volumes: VolumeConstraint::project with `hold`), up to 3 rounds. Returns the count
     //! of shortened vertex steps.
     Index guard_step(std::span<const Scalar> start, std::span<Scalar> x);
+    //! \brief The flip guard on a step of the direct method: the whole step start -> x
+    //! shortened by the largest factor 2^-k (k <= 20, else 0) that turns no face over.
+    //! Returns how many vertex steps it shortened (every free vertex's, or none).
+    Index guard_direct_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)
     //! with a fixed lambda and fixed normals (no line search, no joint mode).
     bool fused() const;

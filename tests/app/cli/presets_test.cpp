@@ -4,9 +4,12 @@
 // Every preset of assets/recipes/ on every kind of mesh users bring, through meshfair-cli:
 // closed, open with one and with many boundary loops, several components, quads and mixed
 // polygons, non-manifold edges and vertices, isolated vertices; a point cloud refused.
-// Each run exits 0, turns no face over and keeps each component's volume (capped by its
-// boundary loops where it is open) within 0.5 %. The volumes and loops are measured here
-// by code of the test's own (maps, not the solver's arrays).
+// Each run exits 0 and turns no face over. The smoothing presets keep each component's
+// volume (capped by its boundary loops where it is open) within 0.5 %; fair-region, which
+// fairs a region (and changes its shape by design), is given one on every mesh, leaves
+// every vertex outside it where it was, and refuses a whole mesh with the reason. The
+// volumes and loops are measured here by code of the test's own (maps, not the solver's
+// arrays).
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -249,6 +252,44 @@ std::string preset(const char* name)
         (test::assets_dir() / "recipes" / (std::string(name) + ".json")).string());
 }
 
+//! Whether the preset fairs a region (and refuses a whole mesh): fair-region.
+bool fairs_a_region(const std::string& name)
+{
+    return name == "fair-region";
+}
+
+//! \brief The region a test gives fair-region on `m`: every vertex of a face but the first
+//! corners of every fourth face, which stay fixed (each component has some, so each free
+//! part is held), and the vertices of no face (which a selection of faces never takes).
+std::vector<Index> test_region(const Mesh& m)
+{
+    std::vector<char> in(m.vertex_count(), 0);
+    for (Index f = 0; f < m.face_count(); ++f)
+        for (const Index v : m.face(f))
+            in[v] = 1;
+    for (Index f = 0; f < m.face_count(); f += 4)
+        in[m.face(f)[0]] = 0;
+    std::vector<Index> region;
+    for (Index v = 0; v < m.vertex_count(); ++v)
+        if (in[v])
+            region.push_back(v);
+    return region;
+}
+
+//! \brief The recipe file a run of preset `name` on `m` takes, written in `dir`: the
+//! preset's own, with test_region(m) added for fair-region.
+std::string preset_on(const char* name, const Mesh& m, const fs::path& dir)
+{
+    if (!fairs_a_region(name))
+        return preset(name);
+    auto recipe = nlohmann::json::parse(
+        io::read_file((test::assets_dir() / "recipes" / (std::string(name) + ".json")).string()));
+    recipe["region"] = {{"vertices", test_region(m)}};
+    const fs::path file = dir / (std::string(name) + "-with-region.json");
+    test::write_bytes(file, recipe.dump());
+    return test::shell_quote(file.string());
+}
+
 //! Runs every preset on the case's mesh and checks what the issue asks of each run.
 void check_presets(const Case& c)
 {
@@ -264,12 +305,42 @@ void check_presets(const Case& c)
     {
         CAPTURE(name);
         const fs::path out = dir / (std::string(name) + ".off"), report = dir / "report.json";
-        const test::CommandRun r = cli(
-            "smooth " + test::shell_quote(in.string()) + " -o " + test::shell_quote(out.string()) +
-            " --recipe " + preset(name) + " --report " + test::shell_quote(report.string()));
+        const test::CommandRun r =
+            cli("smooth " + test::shell_quote(in.string()) + " -o " +
+                test::shell_quote(out.string()) + " --recipe " + preset_on(name, c.mesh, dir) +
+                " --report " + test::shell_quote(report.string()));
         REQUIRE_MESSAGE(r.code == 0, r.err);
         const Mesh after = io::read_mesh(out.string());
         CHECK(turned_over(c.mesh, after) == 0);
+        if (fairs_a_region(name))
+        {
+            // Outside the region nothing moves; inside, the thin plate moved the surface.
+            const std::vector<Index> region = test_region(c.mesh);
+            Scalar moved = 0;
+            for (Index v = 0; v < c.mesh.vertex_count(); ++v)
+            {
+                const bool free = std::binary_search(region.begin(), region.end(), v);
+                for (int a = 0; a < 3; ++a)
+                {
+                    const Scalar d =
+                        std::abs(after.positions[3 * v + a] - c.mesh.positions[3 * v + a]);
+                    if (free)
+                        moved = std::max(moved, d);
+                    else
+                        CHECK(d == 0);
+                }
+            }
+            CHECK(moved > 0);
+            // A whole mesh has no region to fair: refused with the reason, nothing written.
+            const fs::path whole = dir / "whole.off";
+            const test::CommandRun refused =
+                cli("smooth " + test::shell_quote(in.string()) + " -o " +
+                    test::shell_quote(whole.string()) + " --recipe " + preset(name));
+            CHECK(refused.code == 2);
+            CHECK(refused.err.find("is held by nothing") != std::string::npos);
+            CHECK_FALSE(fs::exists(whole));
+            continue;
+        }
         const Volumes v1 = capped_volumes(after);
         for (size_t k = 0; k < v0.volume.size(); ++k)
         {
@@ -338,6 +409,8 @@ TEST_SUITE("Presets")
             CAPTURE(name);
             auto recipe = nlohmann::json::parse(io::read_file(
                 (test::assets_dir() / "recipes" / (std::string(name) + ".json")).string()));
+            if (fairs_a_region(name))
+                recipe["region"] = {{"vertices", test_region(b)}};
             REQUIRE(recipe["prevent_flips"] == true);
             recipe.erase("prevent_flips");
             test::write_bytes(dir / "raw.json", recipe.dump());

@@ -528,6 +528,78 @@ TEST_SUITE("Live solving")
         CHECK(cli_reproduces(s, b.path, dir));
     }
 
+    TEST_CASE("a pin dragged with M in a region raises the thin plate's dome, undone in one step")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
+        b.rectangle(200, 140, 215, 155);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        REQUIRE(s.document().solver.method == Method::Jacobi);
+        REQUIRE_FALSE(s.document().solver.bending);
+        s.dispatch(cmd::SetTool{ToolKind::MovePins});
+        s.settle_solver();
+        const std::vector<Scalar> rest = s.document().mesh.positions;
+        const size_t undo_before = s.history().undo_count();
+
+        // Grab the first pin where it is drawn and drag it 40 pixels up.
+        const ConstraintSet& pins = s.document().sets[1];
+        const size_t p = 3 * static_cast<size_t>(pins.vertices[0]);
+        const glm::dvec3 at =
+            s.camera().project({rest[p], rest[p + 1], rest[p + 2]}, kSessionWidth, kSessionHeight);
+        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
+        s.mouse_move(at.x, at.y - 20);
+        s.mouse_move(at.x, at.y - 40);
+        s.mouse_release(MouseButton::Left, at.x, at.y - 40);
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+
+        // The drag took the direct method with the thin plate, and said so, in its one
+        // undo step.
+        CHECK(s.document().solver.method == Method::Direct);
+        REQUIRE(s.document().solver.bending);
+        CHECK(s.document().solver.bending->mu == 1);
+        CHECK(s.state().message.find("dome: thin plate, direct method") != std::string::npos);
+        CHECK(s.history().undo_count() == undo_before + 1);
+        CHECK(s.history().undo_label() == "move pins");
+        // The shape is the minimizer of the sets, as the command line solves it.
+        CHECK(cli_reproduces(s, b.path, dir));
+
+        // What the drag raised: the minimizer with the moved pins less the one with the
+        // pins where they were, for the thin plate and for the membrane (a horn, whose
+        // lift dies off faster around the pins: less of the region rises).
+        const Vec3 target = pins.targets[0];
+        const Vec3 offset{target[0] - rest[p], target[1] - rest[p + 1], target[2] - rest[p + 2]};
+        const auto lift = [&](bool plate) {
+            SolverSettings settings = s.document().solver;
+            settings.bending = plate ? std::optional<Bending>(Bending{}) : std::nullopt;
+            s.dispatch(cmd::SetSolverSettings{settings});
+            s.settle_solver();
+            const std::vector<Scalar> raised = s.document().mesh.positions;
+            REQUIRE(s.dispatch(cmd::MovePins{"pins", {-offset[0], -offset[1], -offset[2]}}));
+            s.settle_solver();
+            const std::vector<Scalar>& lowered = s.document().mesh.positions;
+            Scalar sum = 0;
+            for (size_t k = 0; k < raised.size(); k += 3)
+                sum += std::hypot(raised[k] - lowered[k], raised[k + 1] - lowered[k + 1],
+                                  raised[k + 2] - lowered[k + 2]);
+            REQUIRE(s.dispatch(cmd::Undo{})); // the pins up again
+            return sum;
+        };
+        const Scalar dome = lift(true), horn = lift(false);
+        CHECK(dome > 1.5 * horn);
+        REQUIRE(s.dispatch(cmd::Undo{})); // the membrane
+        CHECK(s.history().undo_label() == "move pins");
+
+        // One undo gives back the pins and the settings.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().solver.method == Method::Jacobi);
+        CHECK_FALSE(s.document().solver.bending);
+        CHECK(s.document().sets[1].targets.empty());
+    }
+
     TEST_CASE("what does not change the recipe restarts nothing, undoing a pin move puts pins back")
     {
         const fs::path dir = test::temp_dir();

@@ -228,7 +228,11 @@ def test_every_preset_takes_an_open_scan_and_says_how_its_volume_is_kept(tmp_pat
     F = F[height > height.min() + 0.25 * (height.max() - height.min())]
     scan = tmp_path / "scan.obj"
     meshfair.write(str(scan), V, F)
-    for name in ["denoise", "relax", "fair-region", "combined"]:
+    # fair-region fairs a region: on the whole scan, nothing holds it, and it says so.
+    fair = open(os.path.join(ASSETS, "recipes", "fair-region.json")).read()
+    with pytest.raises(ValueError, match="is held by nothing"):
+        meshfair.smooth(V, F, fair)
+    for name in ["denoise", "relax", "combined"]:
         text = open(os.path.join(ASSETS, "recipes", name + ".json")).read()
         with pytest.warns(meshfair.SolverNote) as caught:
             W = meshfair.smooth(V, F, text)

@@ -320,6 +320,63 @@ TEST_SUITE("direct method")
         CHECK(session.residual(d.start).jacobi_displacement > 1e-3 * diagonal);
     }
 
+    TEST_CASE(
+        "with the flip guard a direct step shrinks as a whole: the energy falls, nothing "
+        "turns over")
+    {
+        // A sphere free but for a cap: the membrane's minimizer (each coordinate harmonic)
+        // flattens the rest into the cap's rim, a Tutte embedding in its plane, which turns
+        // the faces of one hemisphere over.
+        const Mesh m = test::icosphere(3);
+        const Topology t = build_topology(m);
+        Recipe r;
+        r.method = Method::Direct;
+        r.iterations = 3;
+        r.region = Region{{}, {}};
+        for (Index v = 0; v < m.vertex_count(); ++v)
+            if (m.positions[3 * v + 2] < 0.9)
+                r.region->vertices.push_back(v);
+        const auto turned = [&](const Mesh& after) {
+            int count = 0;
+            for (Index f = 0; f < m.face_count(); ++f)
+                count += test::dot(face_area_vector(m, m.positions, f),
+                                   face_area_vector(after, after.positions, f)) <= 0;
+            return count;
+        };
+        Mesh unguarded = m;
+        smooth(unguarded, t, r);
+        REQUIRE(turned(unguarded) > 0);
+
+        r.prevent_flips = true;
+        Mesh guarded = m;
+        const SmoothResult result = smooth(guarded, t, r);
+        CHECK(turned(guarded) == 0);
+        CHECK(guarded.positions != m.positions); // it went part of the way
+        for (size_t k = 1; k < result.energies.size(); ++k)
+            CHECK(result.energies[k].total() <= result.energies[k - 1].total());
+        // Each step shortened as one: every free vertex's step, or none; after one step the
+        // result lies on the segment from the input to the minimizer, at one t in (0, 1).
+        for (const Index shortened : result.shortened)
+            CHECK((shortened == 0 || shortened == static_cast<Index>(r.region->vertices.size())));
+        r.iterations = 1;
+        Mesh once = m;
+        smooth(once, t, r);
+        size_t far = 0;
+        for (size_t k = 0; k < m.positions.size(); ++k)
+            if (std::abs(unguarded.positions[k] - m.positions[k]) >
+                std::abs(unguarded.positions[far] - m.positions[far]))
+                far = k;
+        const Scalar along = (once.positions[far] - m.positions[far]) /
+                             (unguarded.positions[far] - m.positions[far]);
+        CHECK(along > 0);
+        CHECK(along < 1);
+        Scalar off = 0;
+        for (size_t k = 0; k < m.positions.size(); ++k)
+            off = std::max(off, std::abs(once.positions[k] - m.positions[k] -
+                                         along * (unguarded.positions[k] - m.positions[k])));
+        CHECK(off <= 1e-12);
+    }
+
     TEST_CASE("conjugate gradients reach the same minimizer on every kind of mesh")
     {
         for_each_small_case(

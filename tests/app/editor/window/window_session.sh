@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: MIT
 # A person's whole session in a real window under Xvfb, driven by synthetic input (xdotool):
-# open a noisy mesh; brush a patch and grow it; make it a region; pins dragged with M; a
-# normal set aimed with D; anchors with their own weight; Play until the energy settles, at
+# open a noisy mesh; brush a patch and grow it; make it a region; pins dragged with M (which
+# takes the thin plate and the direct method: Jacobi steps and no thin plate chosen again in
+# the solver panel, the shape reset to the base); a normal set aimed with D; anchors with their own weight; Play until the energy settles, at
 # 200 steps a frame; the lambda slider moved; Play again; undo back to the shape at the
 # slider's change; save; export the recipe through the File menu's dialog; reopen the mesh;
 # import the recipe. The files must agree: meshfair-cli smooth of the mesh with the
@@ -39,6 +40,16 @@ key shift+p
 key m
 drag 400 390 408 380 4
 wait_line "gesture move pins"
+# The drag took the thin plate and the direct method (a dome); this session runs Jacobi
+# steps: the method's menu and the thin plate's box in the solver panel take them back.
+settings=$(count_lines "command solver settings: ok")
+click_widget "method"
+click_widget "method/Jacobi steps"
+click_widget "thin plate (a dome under pins)"
+wait_line "command solver settings: ok" $((settings + 2))
+# The runs start from the base (Reset), so that the command line gives their shape.
+click_widget "Reset"
+wait_line "command reset: ok"
 # A normal set of a few faces, aimed with D.
 key v
 key r
