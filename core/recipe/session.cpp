@@ -1239,8 +1239,9 @@ Index Session::guard_direct_step(std::span<const Scalar> start, std::span<Scalar
 {
     // The whole step shortened by one factor, t = 1, 1/2, ..., 1/2^20, then 0: the energy is
     // a convex quadratic along the step to its minimizer, so it falls for every t in (0, 1]
-    // (the guard's per-vertex shortening, right for Jacobi steps, could raise it here).
-    guard_->begin_step(start);
+    // (the guard's per-vertex shortening, right for Jacobi steps, could raise it here). The
+    // shape is judged as it stands (FlipGuard::turned_between), not against the noisy
+    // surroundings the jump starts from.
     std::vector<Scalar> trial(x.begin(), x.end());
     Scalar t = 1;
     for (int halving = 0; halving <= 20; ++halving, t *= 0.5)
@@ -1251,7 +1252,7 @@ Index Session::guard_direct_step(std::span<const Scalar> start, std::span<Scalar
                 for (int a = 0; a < 3; ++a)
                     trial[i + a] = start[i + a] + t * (x[i + a] - start[i + a]);
             });
-        if (guard_->limit(start, trial) == 0)
+        if (guard_->turned_between(start, trial) == 0)
         {
             if (halving == 0)
                 return 0;

@@ -229,7 +229,8 @@ private:
     //! of shortened vertex steps.
     Index guard_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! \brief The flip guard on a step of the direct method: the whole step start -> x
-    //! shortened by the largest factor 2^-k (k <= 20, else 0) that turns no face over.
+    //! shortened by the largest factor 2^-k (k <= 20, else 0) at which no face is turned
+    //! over that was not at `start` (FlipGuard::turned_between).
     //! Returns how many vertex steps it shortened (every free vertex's, or none).
     Index guard_direct_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)

@@ -41,6 +41,12 @@ public:
     //! vertices only). Returns how many vertices' steps were shortened. The same bits for
     //! any thread count; allocates only while its lists grow past their largest so far.
     Index limit(std::span<const Scalar> x, std::span<Scalar> y);
+    //! \brief For a jump to a solve's result (the direct method), not a step: how many faces
+    //! with a free vertex are turned over at y but were not at x, each judged against its
+    //! own input normal (where it is held to it) and against the surface around it at the
+    //! same shape (folded over its neighbours there), not at the jump's start, which a noisy
+    //! scan's faces would break on their way to a smooth result.
+    Index turned_between(std::span<const Scalar> x, std::span<const Scalar> y);
     //! The vertices whose steps the last limit() shortened, in the order it shortened them.
     std::span<const Index> shortened() const { return shortened_; }
 
