@@ -92,6 +92,7 @@ struct SmoothOptions
     std::optional<std::string> lambda;
     std::optional<double> tolerance;
     std::optional<std::string> method;
+    std::optional<double> time;
     int threads = 0;
     bool quiet = false;
     bool keep_normals = false;
@@ -123,10 +124,13 @@ int run_smooth(const SmoothOptions& o)
     if (o.tolerance)
         recipe.tolerance = *o.tolerance;
     if (o.method)
-        recipe.method = *o.method == "jacobi"   ? Method::Jacobi
-                        : *o.method == "direct" ? Method::Direct
-                        : *o.method == "cg"     ? Method::ConjugateGradient
-                                                : Method::GradientDescent;
+        recipe.method = *o.method == "jacobi"     ? Method::Jacobi
+                        : *o.method == "direct"   ? Method::Direct
+                        : *o.method == "cg"       ? Method::ConjugateGradient
+                        : *o.method == "implicit" ? Method::Implicit
+                                                  : Method::GradientDescent;
+    if (o.time)
+        recipe.time = *o.time;
 
     const nlohmann::json report =
         cli::smooth_file(o.mesh, o.out, recipe, o.recipe, o.encoding, o.keep_normals);
@@ -356,8 +360,13 @@ int main(int argc, char** argv)
     smooth_cmd
         ->add_option("--method", smooth.method,
                      "jacobi (default: the paper's steps), direct (the minimizer, by sparse "
-                     "Cholesky), cg (the minimizer, by conjugate gradients) or gradient_descent")
-        ->check(CLI::IsMember({"jacobi", "direct", "cg", "gradient_descent"}));
+                     "Cholesky), cg (the minimizer, by conjugate gradients), implicit "
+                     "(backward-Euler steps of --time each) or gradient_descent")
+        ->check(CLI::IsMember({"jacobi", "direct", "cg", "implicit", "gradient_descent"}));
+    smooth_cmd
+        ->add_option("--time", smooth.time,
+                     "Time of each step of method implicit (overrides the recipe's \"time\")")
+        ->check(CLI::PositiveNumber);
     smooth_cmd->add_option("--report", smooth.report, "Write the JSON report here ('-' = stdout)");
     smooth_cmd->add_option("--encoding", smooth.encoding, encoding_help)
         ->check(CLI::IsMember({"ascii", "binary", "binary-be"}));

@@ -134,7 +134,7 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
             total += n;
         j["flip_guard"] = {{"shortened", result.shortened}, {"total", total}};
     }
-    if (session.conjugate_gradients())
+    if (session.conjugate_gradients() && recipe.method != Method::Implicit)
     {
         // Conjugate gradients in place of the factor: how close each solve came to the
         // minimizer and what it took.
@@ -145,7 +145,24 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
             {"unknowns", 3 * session.free_vertices().size()},
             {"iterations", result.inner_iterations}};
     }
-    if (const SparseCholesky* factor = session.factorization())
+    if (recipe.method == Method::Implicit)
+    {
+        // Backward-Euler steps: the time they smoothed for, and what the factor cost.
+        Json implicit = {{"time", recipe.time},
+                         {"steps", result.iterations},
+                         {"total_time", recipe.time * result.iterations},
+                         {"unknowns", 3 * session.free_vertices().size()}};
+        if (const SparseCholesky* factor = session.factorization())
+        {
+            implicit["factor_megabytes"] = factor->stats().factor_bytes() / 1e6;
+            implicit["analyse_seconds"] = factor->stats().analyse_seconds;
+            implicit["factor_seconds"] = factor->stats().factor_seconds;
+        }
+        else
+            implicit["cg_iterations"] = result.inner_iterations;
+        j["implicit"] = implicit;
+    }
+    else if (const SparseCholesky* factor = session.factorization())
     {
         // The direct method: how close each solve came to the minimizer (the gradient over
         // the free vertices relative to the input's), and what the factorization cost.
@@ -192,6 +209,18 @@ std::string smooth_summary(const Json& report, const std::string& output)
              " MB, analysed in " +
              format_number(report["direct"]["analyse_seconds"].get<double>()) + " s, factored in " +
              format_number(report["direct"]["factor_seconds"].get<double>()) + " s\n";
+    if (report.contains("implicit"))
+    {
+        const Json& i = report["implicit"];
+        s += "implicit: " + std::to_string(i["steps"].get<long long>()) +
+             " backward-Euler steps of time " + format_number(i["time"].get<double>()) +
+             " (in all " + format_number(i["total_time"].get<double>()) + ")";
+        if (i.contains("factor_megabytes"))
+            s += ", factor of " + format_number(i["unknowns"].get<double>()) + " unknowns, " +
+                 format_number(i["factor_megabytes"].get<double>()) + " MB, factored in " +
+                 format_number(i["factor_seconds"].get<double>()) + " s";
+        s += "\n";
+    }
     if (report.contains("cg") && !report["cg"]["relative_gradient"].empty())
     {
         long long iterations = 0;

@@ -331,6 +331,8 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
         problems.push_back("Taubin's method takes a fixed lambda and no joint mode");
     if (settings.method == Method::Taubin && !(settings.taubin_mu < -settings.lambda))
         problems.push_back("Taubin's mu must be below -lambda");
+    if (settings.method == Method::Implicit && (settings.optimal_step || settings.joint))
+        problems.push_back("implicit steps take their time, no optimal lambda, no joint mode");
     if (solves_for_minimizer(settings.method) && (settings.optimal_step || settings.joint))
         problems.push_back(
             "the direct method solves for the minimizer: no optimal lambda, no joint mode");
@@ -351,6 +353,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
     r.tolerance = settings.tolerance;
     r.method = settings.method;
     r.taubin_mu = settings.taubin_mu;
+    r.time = settings.time;
     if (settings.keep_volume)
         r.volume = settings.volume;
     r.prevent_flips = settings.prevent_flips;
@@ -704,6 +707,7 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
     s.method = r.method == Method::GradientDescent ? Method::Jacobi : r.method;
     s.bending = r.bending;
     s.taubin_mu = r.taubin_mu;
+    s.time = r.time;
     if (r.normal_smoothing)
         s.bilateral = r.normal_smoothing->bilateral;
     s.keep_volume = r.volume.has_value();

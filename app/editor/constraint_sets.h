@@ -94,6 +94,8 @@ struct SolverSettings
     //! gradient descent).
     Method method = Method::Jacobi;
     Scalar taubin_mu = -0.53;
+    //! The time of each backward-Euler step of Method::Implicit (Recipe::time).
+    Scalar time = 1;
     //! Feature-preserving normal smoothing (with smoothed normals or joint mode), when set.
     std::optional<BilateralWeights> bilateral;
     //! Keep the enclosed volume of each component (open ones as `volume` says).

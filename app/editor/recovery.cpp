@@ -227,6 +227,8 @@ Json settings_json(const SolverSettings& s)
             {"taubin", s.method == Method::Taubin},
             {"direct", s.method == Method::Direct},
             {"cg", s.method == Method::ConjugateGradient},
+            {"implicit", s.method == Method::Implicit},
+            {"time", s.time},
             {"taubin_mu", s.taubin_mu},
             {"bilateral", s.bilateral ? bilateral_json(*s.bilateral) : Json(nullptr)},
             {"keep_volume", s.keep_volume},
@@ -260,10 +262,17 @@ SolverSettings settings_of(const Json& j)
     s.joint = j.at("joint").get<bool>();
     s.gamma = non_negative_at(j, "gamma");
     // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
-    s.method = j.value("taubin", false)   ? Method::Taubin
-               : j.value("direct", false) ? Method::Direct
-               : j.value("cg", false)     ? Method::ConjugateGradient
-                                          : Method::Jacobi;
+    s.method = j.value("taubin", false)     ? Method::Taubin
+               : j.value("direct", false)   ? Method::Direct
+               : j.value("cg", false)       ? Method::ConjugateGradient
+               : j.value("implicit", false) ? Method::Implicit
+                                            : Method::Jacobi;
+    if (j.contains("time"))
+    {
+        s.time = j.at("time").get<Scalar>();
+        if (!(std::isfinite(s.time) && s.time > 0))
+            throw std::invalid_argument("time must be a finite number > 0");
+    }
     if (j.contains("taubin_mu"))
     {
         s.taubin_mu = j.at("taubin_mu").get<Scalar>();

@@ -495,13 +495,18 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else if (key == "method")
             {
                 const std::string m = r.text(value, k);
-                if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg")
-                    r.bad(k, "must be \"jacobi\", \"taubin\", \"direct\" or \"cg\"");
-                s.method = m == "taubin"   ? Method::Taubin
-                           : m == "direct" ? Method::Direct
-                           : m == "cg"     ? Method::ConjugateGradient
-                                           : Method::Jacobi;
+                if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg" && m != "implicit")
+                    r.bad(k,
+                          "must be \"jacobi\", \"taubin\", \"direct\", \"cg\" or "
+                          "\"implicit\"");
+                s.method = m == "taubin"     ? Method::Taubin
+                           : m == "direct"   ? Method::Direct
+                           : m == "cg"       ? Method::ConjugateGradient
+                           : m == "implicit" ? Method::Implicit
+                                             : Method::Jacobi;
             }
+            else if (key == "time")
+                s.time = r.number(value, k, 1e-6, 1e6);
             else if (key == "taubin_mu")
                 s.taubin_mu = r.number(value, k, -1e3, 0);
             else if (key == "keep_volume" || key == "prevent_flips")

@@ -318,6 +318,20 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
     }
     if (!std::isfinite(r.factor_budget_mb) || r.factor_budget_mb < 0)
         throw RecipeError("factor_budget_mb", "must be finite and >= 0");
+    if (r.method == Method::Implicit)
+    {
+        if (!(std::isfinite(r.time) && r.time > 0))
+            throw RecipeError("time", "must be finite and > 0 (the time of each implicit step)");
+        if (r.optimal_step)
+            throw RecipeError("lambda",
+                              "\"optimal\" is not a step length of method \"implicit\" "
+                              "(its steps are given by \"time\")");
+        if (r.joint)
+            throw RecipeError("joint",
+                              "is not available with method \"implicit\" yet (the "
+                              "normals of joint mode move with the positions; use "
+                              "\"jacobi\")");
+    }
     if (solves_for_minimizer(r.method))
     {
         const std::string name = r.method == Method::Direct ? "\"direct\"" : "\"cg\"";

@@ -33,13 +33,28 @@ enum class Method
     //! blocks (the paper's Jacobi blocks), from where the step starts: no factor, for systems
     //! whose factor would not fit in memory; the direct method falls back to it when the
     //! factor's estimate exceeds the recipe's factor budget or CHOLMOD runs out of memory.
-    ConjugateGradient
+    ConjugateGradient,
+    //! \brief Backward-Euler steps of the energy's flow dx/dt = r(x) = -1/2 dE/dx over the
+    //! free vertices, each of time Recipe::time (implicit fairing, Desbrun et al. 1999):
+    //! (I / t + A_ff) dx = r(x), with the sparse Cholesky factor of that matrix (once per
+    //! precomputation). Unconditionally stable: the amount of smoothing is a time (the
+    //! steps times t), not a count of small steps; as t grows a step tends to the direct
+    //! method's. The shift I / t makes the system positive definite, so it also smooths a
+    //! whole mesh that nothing holds.
+    Implicit
 };
 
 //! The methods whose step solves for the minimizer (Direct, ConjugateGradient).
 inline bool solves_for_minimizer(Method m)
 {
     return m == Method::Direct || m == Method::ConjugateGradient;
+}
+
+//! The methods whose step solves a sparse linear system of the free vertices (factored
+//! once per precomputation): the minimizer's (Direct, ConjugateGradient) and Implicit's.
+inline bool solves_linear_system(Method m)
+{
+    return solves_for_minimizer(m) || m == Method::Implicit;
 }
 
 //! A list of element indices, or every element of the mesh ("all").
@@ -187,6 +202,10 @@ struct Recipe
     Scalar tolerance = 0; //!< stop when the relative energy decrease falls below
     Method method = Method::Jacobi;
     Scalar taubin_mu = -0.53; //!< the second step's length, Method::Taubin only
+    //! \brief Method::Implicit only: the time of each backward-Euler step, > 0, in the
+    //! units of the flow dx/dt = -1/2 dE/dx (for plain smoothing of a mesh of valence 6, a
+    //! Jacobi step of lambda moves a vertex as far as a time of about lambda / 6 does).
+    Scalar time = 1;
     //! \brief The direct method's memory for its factor, in MB: a factor whose estimate
     //! (after the symbolic analysis) exceeds it is not computed, and conjugate gradients
     //! solve instead (noted). 0: half of the machine's physical memory.

@@ -438,7 +438,7 @@ Recipe parse_recipe_json(const Json& j)
     expect_object(j, "",
                   {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
                    "soft", "centroid", "normal", "normal_smoothing", "joint", "bending", "volume",
-                   "falloff", "prevent_flips", "factor_budget_mb"});
+                   "falloff", "prevent_flips", "factor_budget_mb", "time"});
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -447,11 +447,14 @@ Recipe parse_recipe_json(const Json& j)
         r.tolerance = weight(j["tolerance"], "tolerance");
     if (j.contains("method"))
     {
-        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent, Method::Taubin,
-                                      Method::Direct, Method::ConjugateGradient};
-        r.method = methods[choice(j["method"], "method",
-                                  {"jacobi", "gradient_descent", "taubin", "direct", "cg"})];
+        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent,   Method::Taubin,
+                                      Method::Direct, Method::ConjugateGradient, Method::Implicit};
+        r.method =
+            methods[choice(j["method"], "method",
+                           {"jacobi", "gradient_descent", "taubin", "direct", "cg", "implicit"})];
     }
+    if (j.contains("time"))
+        r.time = number(j["time"], "time");
     if (j.contains("factor_budget_mb"))
         r.factor_budget_mb = weight(j["factor_budget_mb"], "factor_budget_mb");
     if (j.contains("taubin_mu"))
@@ -634,7 +637,10 @@ nlohmann::json recipe_to_json(const Recipe& r)
                   : r.method == Method::GradientDescent   ? "gradient_descent"
                   : r.method == Method::Direct            ? "direct"
                   : r.method == Method::ConjugateGradient ? "cg"
+                  : r.method == Method::Implicit          ? "implicit"
                                                           : "taubin";
+    if (r.method == Method::Implicit)
+        j["time"] = r.time;
     if (r.factor_budget_mb > 0)
         j["factor_budget_mb"] = r.factor_budget_mb;
     if (r.method == Method::Taubin)

@@ -426,7 +426,7 @@ void Session::precompute()
     cholesky_.reset();
     cg_.reset();
     direct_rhs_ = {};
-    if (solves_for_minimizer(recipe_.method))
+    if (solves_linear_system(recipe_.method))
         factor_direct();
 }
 
@@ -436,11 +436,17 @@ void Session::factor_direct()
     // Without it the matrix is the same for x, y and z: #free unknowns, 3 right-hand sides.
     direct_blocks_ = normal_.has_value();
     // Checked before the factorization, which may well factor a singular matrix in
-    // doubles (a pivot of rounding size) and return garbage.
-    if (const std::optional<std::string> why = unheld_part())
-        throw RecipeError("method", *why);
+    // doubles (a pivot of rounding size) and return garbage. An implicit step's matrix,
+    // I / t + A_ff, is positive definite whatever holds the mesh.
+    const bool implicit = recipe_.method == Method::Implicit;
+    if (!implicit)
+        if (const std::optional<std::string> why = unheld_part())
+            throw RecipeError("method", *why);
+    const Scalar shift = implicit ? 1 / recipe_.time : 0;
     const SymmetricMatrix a = assemble_free_hessian(
         vertex_count_, free_, direct_blocks_, [&](Index i, HessianColumn& col) {
+            if (implicit)
+                col.add(i, shift);
             edge_.add_hessian_column(i, col);
             if (bending_)
                 bending_->add_hessian_column(i, col);
@@ -1125,7 +1131,7 @@ StepInfo Session::general_step(std::span<Scalar> x)
         system_.rhs.assign(3 * static_cast<size_t>(vertex_count_), 0);
         dx_.assign(3 * static_cast<size_t>(vertex_count_), 0);
     }
-    if (solves_for_minimizer(recipe_.method))
+    if (solves_linear_system(recipe_.method))
         return direct_step(x);
     const bool use_blocks = !system_.inverse.empty();
     if (joint_ && use_blocks)
@@ -1179,7 +1185,7 @@ StepInfo Session::general_step(std::span<Scalar> x)
     apply_displacements(free_, dx_, info.lambda, x);
     if (guard_)
         info.shortened = guard_direct_step(guard_start_, x);
-    else if (volume_)
+    if (volume_) // an implicit step's (the others take no volume)
         volume_->project(x);
     return info;
 }

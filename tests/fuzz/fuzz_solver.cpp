@@ -98,11 +98,17 @@ Recipe recipe_for(const Mesh& mesh, unsigned flags)
         largest_face = std::max(largest_face, mesh.face_size(f));
     if ((flags & 3) == 3 && largest_face <= kLargestDirectFace)
     {
-        // The direct method with every term it takes (not joint mode): one factorization.
-        r.method = Method::Direct;
+        // The direct method with every term it takes (not joint mode): one factorization;
+        // with the joint bit, implicit steps instead, with the volume kept.
+        r.method = (flags & 64) ? Method::Implicit : Method::Direct;
         r.optimal_step = false;
         r.joint.reset();
         r.bending = Bending{0.7, 0.5};
+        if (r.method == Method::Implicit)
+        {
+            r.time = 0.5;
+            r.volume = KeepVolume{};
+        }
     }
     return r;
 }

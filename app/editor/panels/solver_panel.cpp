@@ -146,7 +146,8 @@ void solver_panel(const PanelContext& ui)
         {Method::Jacobi, "Jacobi steps"},
         {Method::Taubin, "Taubin lambda|mu"},
         {Method::Direct, "direct: the minimizer"},
-        {Method::ConjugateGradient, "CG: the minimizer"}};
+        {Method::ConjugateGradient, "CG: the minimizer"},
+        {Method::Implicit, "implicit (backward Euler)"}};
     const char* shown = methods[0].second;
     for (const auto& [m, name] : methods)
         if (m == s.method)
@@ -166,6 +167,18 @@ void solver_panel(const PanelContext& ui)
         ImGui::EndCombo();
     }
     ui.track("method");
+    if (s.method == Method::Implicit)
+    {
+        // The time of each step, logarithmic: 0.01 (a few Jacobi steps) to 100 (near the
+        // minimizer where the sets hold the mesh).
+        float time = float(s.time);
+        if (ImGui::SliderFloat("time", &time, 0.01f, 100.0f, "%.3g", ImGuiSliderFlags_Logarithmic))
+        {
+            s.time = std::clamp(Scalar(time), Scalar(0.01), Scalar(100));
+            dragged = true;
+        }
+        ui.track("time");
+    }
     Bending& last_bending = ui.state.panels.bending; // turned off then on: as it was
     if (s.bending)
         last_bending = *s.bending;

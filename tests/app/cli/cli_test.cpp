@@ -223,6 +223,36 @@ TEST_SUITE("Cli")
         CHECK(worst <= 1e-9 * bounding_box(direct_positions).diagonal());
     }
 
+    TEST_CASE("--method implicit --time: backward-Euler steps of a whole mesh, their time reported")
+    {
+        // The bunny with no pin nor region: nothing holds it (the direct method refuses it),
+        // and implicit steps smooth it; the flags give what the recipe's keys give.
+        const fs::path dir = test::temp_dir();
+        const std::string flags = (dir / "flags.ply").string(), keys = (dir / "keys.ply").string();
+        const Run refused = cli("smooth " + bunny() + " -o " + test::shell_quote(flags) +
+                                " --method direct --iterations 1 -q");
+        CHECK(refused.code == 2);
+        CHECK(refused.err.find("is held by nothing") != std::string::npos);
+        const Run r = cli("smooth " + bunny() + " -o " + test::shell_quote(flags) +
+                          " --method implicit --time 2 --iterations 3 --report -");
+        REQUIRE(r.code == 0);
+        const auto j = nlohmann::json::parse(r.out);
+        REQUIRE(j.contains("implicit"));
+        CHECK_FALSE(j.contains("direct"));
+        CHECK(j["implicit"]["time"] == 2.0);
+        CHECK(j["implicit"]["steps"] == 3);
+        CHECK(j["implicit"]["total_time"] == 6.0);
+        CHECK(j["implicit"]["unknowns"].get<long long>() == 3 * 34835);
+        const auto& energy = j["energy"];
+        CHECK(energy.back().get<double>() < energy.front().get<double>());
+        const std::string recipe = (dir / "implicit.json").string();
+        test::write_bytes(recipe, R"({"method": "implicit", "time": 2, "iterations": 3})");
+        REQUIRE(cli("smooth " + bunny() + " -o " + test::shell_quote(keys) + " --recipe " +
+                    test::shell_quote(recipe) + " -q")
+                    .code == 0);
+        CHECK(io::read_file(flags) == io::read_file(keys));
+    }
+
     TEST_CASE("CHOLMOD and its BLAS are loaded by the direct method only")
     {
         // The dynamic loader names every library it opens (LD_DEBUG=files): a process that

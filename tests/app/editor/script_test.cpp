@@ -357,8 +357,8 @@ TEST_SUITE("Scripted sessions")
         CHECK(message(R"([{"solver": {"bilateral": {"sigma_r": 0}}}])") ==
               "'s.json': actions[0].solver.bilateral.sigma_r: must be > 0 (got 0)");
         CHECK(message(R"([{"solver": {"method": "newton"}}])") ==
-              "'s.json': actions[0].solver.method: must be \"jacobi\", \"taubin\", \"direct\" or "
-              "\"cg\"");
+              "'s.json': actions[0].solver.method: must be \"jacobi\", \"taubin\", \"direct\", "
+              "\"cg\" or \"implicit\"");
         CHECK(message(R"([{"solver": {"method": "taubin", "keep_volume": true, "bilateral": {},
                           "falloff": {"radius": 4, "curve": "sphere"}}}])") == "accepted");
         CHECK(message(R"([{"view": "front"}, {"projection": "orthographic"}, {"scroll": 1,

@@ -173,6 +173,118 @@ TEST_SUITE("direct method")
             });
     }
 
+    TEST_CASE(
+        "an implicit step is the minimizer of the energy plus |x - x0|^2 / t, on every "
+        "kind of mesh")
+    {
+        // Backward Euler, x1 - x0 = t r(x1), is the stationarity of E(x) + |x - x0|^2 / t:
+        // the reference solves that energy, with anchors of mu = 1 / t at the start on
+        // every free vertex, by its own assembly.
+        for_each_small_case(
+            [](const Mesh& m, const Topology& t, Scalar diagonal, const RecipeCase& c) {
+                if (c.recipe.soft)
+                    return; // the anchors' section is the reference's
+                for (const Scalar time : {0.05, 2.0})
+                {
+                    CAPTURE(time);
+                    Recipe implicit = c.recipe;
+                    implicit.method = Method::Implicit;
+                    implicit.time = time;
+                    implicit.iterations = 1;
+                    Session session(m, t, implicit);
+                    const DirectRun d = run_direct(session, m);
+                    CHECK(d.run.iterations == 1);
+                    Recipe anchored = c.recipe;
+                    std::vector<Index> anchors; // every vertex but the pins
+                    for (Index v = 0; v < m.vertex_count(); ++v)
+                        if (!c.recipe.hard || std::ranges::find(c.recipe.hard->vertices, v) ==
+                                                  c.recipe.hard->vertices.end())
+                            anchors.push_back(v);
+                    anchored.soft = SoftVertices{{false, anchors}, 1 / time, {}};
+                    const std::vector<Index> free(session.free_vertices().begin(),
+                                                  session.free_vertices().end());
+                    check_near(d.result, test::direct_minimizer(m, t, anchored, d.start, free),
+                               diagonal);
+                }
+            });
+    }
+
+    TEST_CASE("implicit steps smooth a whole mesh that nothing holds, stable at any time")
+    {
+        const Mesh m = noisy(test::icosphere(3), 0.05);
+        const Topology t = build_topology(m);
+        Recipe plain;
+        plain.method = Method::Direct;
+        CHECK_THROWS_AS(Session(m, t, plain), RecipeError); // no minimizer to solve for
+        std::vector<Scalar> energies;
+        for (const Scalar time : {0.01, 1.0, 1e6})
+        {
+            Recipe r;
+            r.method = Method::Implicit;
+            r.time = time;
+            r.iterations = 2;
+            Mesh x = m;
+            const SmoothResult result = smooth(x, t, r);
+            REQUIRE(result.iterations == 2);
+            CHECK(result.energies[1].total() < result.energies[0].total());
+            CHECK(result.energies[2].total() < result.energies[1].total());
+            for (const Scalar v : x.positions)
+                CHECK(std::isfinite(v));
+            energies.push_back(result.energies.back().total());
+        }
+        // The longer the time, the smoother (and at 1e6 the mesh has all but collapsed to
+        // its centroid, the edge energy's minimizer over a free mesh).
+        CHECK(energies[1] < energies[0]);
+        CHECK(energies[2] < energies[1]);
+        CHECK(energies[2] < 1e-6 * energies[0]);
+
+        // With the volume kept (the enclosed volume by the divergence theorem, summed here
+        // over the faces' fans): the smoothing no longer shrinks the sphere.
+        const auto enclosed = [&](const std::vector<Scalar>& x) {
+            Scalar v = 0;
+            for (Index f = 0; f < m.face_count(); ++f)
+            {
+                const auto c = m.face(f);
+                const Scalar* a = &x[3 * c[0]];
+                const Scalar* b = &x[3 * c[1]];
+                const Scalar* d = &x[3 * c[2]];
+                v += (a[0] * (b[1] * d[2] - b[2] * d[1]) - a[1] * (b[0] * d[2] - b[2] * d[0]) +
+                      a[2] * (b[0] * d[1] - b[1] * d[0])) /
+                     6;
+            }
+            return v;
+        };
+        Recipe kept;
+        kept.method = Method::Implicit;
+        kept.time = 10;
+        kept.iterations = 3;
+        Mesh shrunk = m, held = m;
+        smooth(shrunk, t, kept);
+        kept.volume = KeepVolume{};
+        smooth(held, t, kept);
+        const Scalar v0 = enclosed(m.positions);
+        CHECK(enclosed(shrunk.positions) < 0.5 * v0);
+        CHECK(enclosed(held.positions) == doctest::Approx(v0).epsilon(1e-9));
+    }
+
+    TEST_CASE("\"method\": \"implicit\" with its \"time\" in a recipe file")
+    {
+        const Recipe r =
+            parse_recipe(R"({"method": "implicit", "time": 0.5, "volume": {}})", "r.json");
+        CHECK(r.method == Method::Implicit);
+        CHECK(r.time == 0.5);
+        CHECK(parse_recipe(recipe_to_json(r).dump(), "again.json").time == 0.5);
+        const Mesh m = test::icosphere(2);
+        CHECK_NOTHROW(check_recipe(r, m));
+        CHECK_THROWS_WITH_AS(
+            check_recipe(parse_recipe(R"({"method": "implicit", "time": 0})", "t.json"), m),
+            doctest::Contains("time"), RecipeError);
+        CHECK_THROWS_WITH_AS(
+            check_recipe(parse_recipe(R"({"method": "implicit", "lambda": "optimal"})", "o.json"),
+                         m),
+            doctest::Contains("implicit"), RecipeError);
+    }
+
     TEST_CASE("one Jacobi step from the direct result moves nothing")
     {
         const Mesh m = noisy(test::icosphere(3), 0.05);

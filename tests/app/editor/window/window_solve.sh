@@ -6,7 +6,8 @@
 # dome from outside the editor), and one Ctrl+Z gives back the pins and the Jacobi steps.
 # Then the thin plate ticked in the solver panel; Enter (Solve) shows the minimizer of the
 # sets; the pins dragged up with M, the shape solved again at the moves; saved, the recipe
-# exported. Then:
+# exported; then implicit steps chosen in the method's menu, their time slider dragged and a
+# run played (its recipe exported: "implicit" with the time set). Then:
 #  - meshfair-cli smooth of the base with the exported recipe ("method": "direct", the
 #    bending section) gives the saved shape (to 1e-9 of the bounding box's diagonal: the
 #    editor solved from the shape before the drag, the command line from the base);
@@ -81,8 +82,28 @@ key ctrl+s
 wait_line "command save: ok"
 export_recipe "solve-recipe.json"
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
-key ctrl+q
-wait_exit "$pid" "$log" "$name" "quit after the save"
+# Implicit steps chosen in the method's menu, their time dragged, Space: a run of
+# backward-Euler steps (after the save: the run is discarded at the end).
+settings=$(count_lines "command solver settings: ok")
+click_widget "method"
+click_widget "method/implicit (backward Euler)"
+wait_line "command solver settings: ok" $((settings + 1))
+read -r tx ty < <(widget_at "time")
+drag "$tx" "$ty" $((tx + 40)) "$ty" 3
+wait_line "command solver settings: ok" $((settings + 2))
+key space
+wait_line "run stopped"
+export_recipe "implicit-recipe.json" 2
+[ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
+key ctrl+q # the run's shape is not saved: it asks
+click_widget "Discard and quit"
+wait_exit "$pid" "$log" "$name" "Discard and quit after the implicit run"
+python3 - "$work" <<'PY' || fail "the implicit run's recipe is not what the panel was set to"
+import json, sys
+r = json.load(open(f"{sys.argv[1]}/implicit-recipe.json"))
+assert r["method"] == "implicit", r["method"]
+assert r["time"] > 1, r["time"]  # dragged right from 1
+PY
 
 grep -q '"method": "direct"' "$work/solve-recipe.json" || fail "the exported recipe is not direct"
 grep -q '"bending"' "$work/solve-recipe.json" || fail "the exported recipe has no bending"
