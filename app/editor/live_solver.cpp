@@ -75,7 +75,8 @@ void LiveSolver::clear()
     fresh_ = false;
 }
 
-void LiveSolver::set_playing(bool playing, int frames, int steps, Scalar stop_tolerance)
+void LiveSolver::set_playing(bool playing, int frames, int steps, Scalar stop_tolerance,
+                             int settle_fallback)
 {
     {
         std::lock_guard lock(mutex_);
@@ -85,6 +86,7 @@ void LiveSolver::set_playing(bool playing, int frames, int steps, Scalar stop_to
         {
             frames_left_ = std::max(frames, 0);
             steps_left_ = std::max(steps, 0);
+            settle_fallback_ = frames > 0 ? 0 : std::max(settle_fallback, 0);
             stop_tolerance_ = std::max(stop_tolerance, Scalar(0));
             status_.played = 0;
             status_.goal = steps_left_;
@@ -243,6 +245,14 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
 {
     busy_ = true;
     const std::uint64_t generation = generation_;
+    // A run until it settles, of a recipe with no unique minimizer: the energy's decrease
+    // only slows as the unheld part shrinks toward a point, so it plays the steps of a run.
+    if (status_.playing && status_.played == 0 && steps_left_ == 0 && settle_fallback_ > 0 &&
+        !status_.no_minimizer.empty())
+    {
+        steps_left_ = settle_fallback_;
+        status_.goal = settle_fallback_;
+    }
     const Scalar tolerance =
         stop_tolerance_ > 0 ? stop_tolerance_ : run_->session().recipe().tolerance;
     if (status_.playing && steps_left_ > 0)
@@ -518,6 +528,9 @@ void LiveSolver::worker()
                 run.reset();
                 error = e.what();
             }
+            std::string no_minimizer;
+            if (run)
+                no_minimizer = run->session().unheld_part().value_or("");
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)
                     .count();
@@ -529,6 +542,7 @@ void LiveSolver::worker()
                 run_ = std::move(run);
                 status_.ready = run_ != nullptr;
                 status_.error = error;
+                status_.no_minimizer = std::move(no_minimizer);
                 notes_ = std::move(notes);
                 status_.precompute_ms = ms;
                 ++status_.restarts;

@@ -26,13 +26,16 @@ struct EnergySample
 //! What the solver has done, for the solver panel.
 struct SolverStatus
 {
-    bool ready = false;               //!< precomputed for the current recipe
-    bool playing = false;             //!< stepping on the worker thread
-    bool converged = false;           //!< stopped by the recipe's tolerance
-    int steps = 0;                    //!< steps of the current run
-    int played = 0;                   //!< steps since the last play began
-    int goal = 0;                     //!< steps that play runs (0: until it settles)
-    std::string error;                //!< why the last restart failed (the recipe did not fit)
+    bool ready = false;     //!< precomputed for the current recipe
+    bool playing = false;   //!< stepping on the worker thread
+    bool converged = false; //!< stopped by the recipe's tolerance
+    int steps = 0;          //!< steps of the current run
+    int played = 0;         //!< steps since the last play began
+    int goal = 0;           //!< steps that play runs (0: until it settles)
+    std::string error;      //!< why the last restart failed (the recipe did not fit)
+    //! Why the recipe has no unique minimizer (Session::unheld_part), or empty: a run
+    //! "until it settles" would only shrink the free part that nothing holds.
+    std::string no_minimizer;
     double step_ms = 0;               //!< the last frame's steps, on the worker
     double precompute_ms = 0;         //!< the last precomputation
     int restarts = 0;                 //!< precomputations so far
@@ -71,7 +74,10 @@ public:
     //! `steps` steps when > 0 (the last frame runs only the steps left), and when the
     //! relative decrease of the energy in a step falls below `stop_tolerance` (> 0) or the
     //! recipe's tolerance.
-    void set_playing(bool playing, int frames = 0, int steps = 0, Scalar stop_tolerance = 0);
+    //! With steps == 0 (until it settles), `settle_fallback` > 0 steps are played instead
+    //! where the recipe has no unique minimizer (SolverStatus::no_minimizer).
+    void set_playing(bool playing, int frames = 0, int steps = 0, Scalar stop_tolerance = 0,
+                     int settle_fallback = 0);
     //! Plays on after a restart during a run, with what was left of its steps and frames.
     void resume();
     //! \brief New targets for the recipe's hard vertices (3 per vertex, in the recipe's
@@ -137,6 +143,7 @@ private:
     int iterations_per_frame_ = 1;
     int frames_left_ = 0;          // > 0: frames to play before pausing
     int steps_left_ = 0;           // > 0: steps to play before pausing
+    int settle_fallback_ = 0;      // steps in place of "until it settles" without a minimizer
     Scalar stop_tolerance_ = 0;    // > 0: pause when a step decreases the energy less
     std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
     SolverStatus status_;

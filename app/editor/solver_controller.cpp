@@ -173,7 +173,8 @@ bool SolverController::play(int frames, std::string& why)
     // A run stops by itself: after its steps, or once the energy settles.
     const SolverSettings& s = document_.solver;
     solver_.set_playing(true, frames, frames > 0 || s.until_converged ? 0 : s.steps_per_run,
-                        s.until_converged && s.tolerance == 0 ? Scalar(1e-7) : Scalar(0));
+                        s.until_converged && s.tolerance == 0 ? Scalar(1e-7) : Scalar(0),
+                        s.steps_per_run);
     return true;
 }
 

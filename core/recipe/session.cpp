@@ -428,6 +428,11 @@ void Session::precompute()
     direct_rhs_ = {};
     if (solves_linear_system(recipe_.method))
         factor_direct();
+    else if (recipe_.tolerance > 0)
+        if (const std::optional<std::string> why = unheld_part())
+            notes_.push_back("tolerance: " + *why +
+                             ". Steps only shrink such a part toward a point: the tolerance "
+                             "stops them where the shrinking slows, not at a minimizer");
 }
 
 void Session::factor_direct()
@@ -441,7 +446,8 @@ void Session::factor_direct()
     const bool implicit = recipe_.method == Method::Implicit;
     if (!implicit)
         if (const std::optional<std::string> why = unheld_part())
-            throw RecipeError("method", *why);
+            throw RecipeError(
+                "method", (recipe_.method == Method::Direct ? "\"direct\": " : "\"cg\": ") + *why);
     const Scalar shift = implicit ? 1 / recipe_.time : 0;
     const SymmetricMatrix a = assemble_free_hessian(
         vertex_count_, free_, direct_blocks_, [&](Index i, HessianColumn& col) {
@@ -570,8 +576,8 @@ std::optional<std::string> Session::unheld_part() const
                 }
         }
         if (!held)
-            return "\"direct\": the free part of " + std::to_string(count) +
-                   " vertices that holds vertex " + std::to_string(lowest) +
+            return "the free part of " + std::to_string(count) + " vertices that holds vertex " +
+                   std::to_string(lowest) +
                    " is held by nothing (no pin, anchor, centroid constraint or fixed "
                    "vertex next to it), so the energy has no unique minimizer; pin a "
                    "vertex of it, anchor it (\"soft\"), or smooth it as part of a region";

@@ -196,6 +196,12 @@ public:
     Residual residual(std::span<const Scalar> x);
     //! The direct method's factorization (nullptr for the other methods, and when conjugate
     //! gradients solve in its place).
+    //! \brief Why the recipe's energy has no unique minimizer over the free vertices: the
+    //! first free part (connected through edges) that nothing holds (no fixed vertex next
+    //! to it, no anchor, no constrained face), named by its size and its lowest vertex in
+    //! the file's numbering; nullopt when every part is held. The direct method refuses
+    //! such a recipe; steps of it only shrink such a part, toward a point.
+    std::optional<std::string> unheld_part() const;
     const SparseCholesky* factorization() const { return cholesky_.get(); }
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
@@ -299,10 +305,6 @@ private:
     void factor_direct();
     //! One step of the direct method: dx_f = A_ff^-1 r_f(x), then the flip guard if any.
     StepInfo direct_step(std::span<Scalar> x);
-    //! \brief Why A_ff would be singular: the first free part (connected through edges) that
-    //! nothing holds, named by its size and its lowest vertex in the file's numbering;
-    //! nullopt when every part is held.
-    std::optional<std::string> unheld_part() const;
     void check_size(std::span<const Scalar> x, const char* what) const;
 
     const Mesh* mesh_;

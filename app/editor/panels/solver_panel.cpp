@@ -81,7 +81,26 @@ void solver_panel(const PanelContext& ui)
         }
         ui.track("steps per run");
     }
+    // Where nothing holds a free part, its energy has no unique minimizer: steps only shrink
+    // it toward a point, and "until converged" would melt it. Not offered; the reason shown.
+    const std::string& no_minimizer = state.solver.no_minimizer;
+    if (!no_minimizer.empty() && !s.until_converged)
+        ImGui::BeginDisabled();
     toggled |= ui.checkbox("until converged", &s.until_converged);
+    if (!no_minimizer.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("%s", no_minimizer.c_str());
+    if (!no_minimizer.empty() && !s.until_converged)
+        ImGui::EndDisabled();
+    if (!no_minimizer.empty())
+    {
+        ImGui::PushTextWrapPos(0);
+        ImGui::TextDisabled(
+            "until converged is off here: nothing holds the free part, so "
+            "its energy has no minimum to settle at (it would shrink to a "
+            "point); a run plays the steps per run. Pin, anchor or make a "
+            "region to hold it.");
+        ImGui::PopTextWrapPos();
+    }
     float tolerance = float(s.tolerance);
     if (ImGui::InputFloat("tolerance", &tolerance, 0, 0, "%.2e"))
     {

@@ -360,6 +360,31 @@ TEST_SUITE("Live solving")
         CHECK(cli_positions(b.path, longer) == file_order_mesh(s.document()).positions);
     }
 
+    TEST_CASE("until converged where nothing holds the mesh: the run plays its steps, and says why")
+    {
+        // Plain smoothing of a whole sphere has no minimizer but a point: a run "until the
+        // energy settles" would melt it. The run plays the steps per run instead.
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        SolverSettings settings = s.document().solver;
+        settings.until_converged = true;
+        settings.steps_per_run = 7;
+        settings.iterations_per_frame = 2;
+        s.dispatch(cmd::SetSolverSettings{settings});
+        s.dispatch(cmd::Play{});
+        while (s.playing())
+            s.take_frame();
+        CHECK(s.document().steps_from_base == 7);
+        CHECK_FALSE(s.solver_status().converged);
+        CHECK(s.solver_status().no_minimizer.find("is held by nothing") != std::string::npos);
+        // Anchors hold it: a minimizer, and "until converged" is offered again.
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+        s.settle_solver();
+        CHECK(s.solver_status().no_minimizer.empty());
+    }
+
     TEST_CASE("positions taken from a playing solver come with the step count they are at")
     {
         // An interface slower than the solver: after each take the worker finishes the next

@@ -94,7 +94,7 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iteratoins": 3})") ==
               "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
               "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
-              "bending, volume, falloff, prevent_flips, factor_budget_mb)");
+              "bending, volume, falloff, prevent_flips, factor_budget_mb, time)");
         CHECK(error_of(R"({"bending": {"stiffness": 1}})") ==
               "'r.json': bending.stiffness: unknown key (allowed here: mu, membrane)");
         CHECK(error_of(R"({"bending": {"mu": -1}})") ==
@@ -137,8 +137,8 @@ TEST_SUITE("Recipe")
         CHECK(error_of(R"({"iterations": -2})") ==
               "'r.json': iterations: must be an integer in [0, 2147483647] (got -2)");
         CHECK(error_of(R"({"method": "newton"})") ==
-              "'r.json': method: must be \"jacobi\", \"gradient_descent\", \"taubin\", \"direct\" "
-              "or \"cg\"");
+              "'r.json': method: must be \"jacobi\", \"gradient_descent\", \"taubin\", "
+              "\"direct\", \"cg\" or \"implicit\"");
         CHECK(error_of(R"({"centroid": {"faces": "all", "denominator": "printed"}})") ==
               "'r.json': centroid.denominator: must be \"paper\" or \"exact\"");
         CHECK(error_of(R"({"normal": {"faces": [0], "normals": [[0, 0, 0]]}})") ==
