@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "app/bench/median.h"
+#include "app/bench/bench_common.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"

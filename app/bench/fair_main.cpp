@@ -27,8 +27,8 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_common.h"
 #include "app/bench/fair_case.h"
-#include "app/bench/median.h"
 #include "app/bench/mesh_generator.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
@@ -49,11 +49,10 @@ namespace {
 
 using namespace meshfair;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using bench::default_cli;
+using bench::human_count;
+using bench::seconds_since;
+using bench::self_path;
 
 //! CPU seconds of every thread of this process so far (user + system).
 double cpu_seconds()
@@ -97,14 +96,6 @@ struct Options
     std::string peak_memory_of;
     std::string child_mesh, child_recipe, child_report;
 };
-
-std::string human_count(long n)
-{
-    std::string digits = std::to_string(n);
-    for (int k = static_cast<int>(digits.size()) - 3; k > 0; k -= 3)
-        digits.insert(static_cast<size_t>(k), ",");
-    return digits;
-}
 
 std::string format_value(double v, const std::string& unit)
 {
@@ -177,22 +168,6 @@ std::string loaded_blas()
                                         line.find("libopenblas") != std::string::npos))
             return std::filesystem::canonical(line.substr(at)).string();
     return "none loaded";
-}
-
-std::string self_path()
-{
-    std::error_code error;
-    const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
-    return error ? std::string() : self.string();
-}
-
-std::string default_cli()
-{
-    const std::filesystem::path self = self_path();
-    if (self.empty())
-        return {};
-    const auto cli = self.parent_path() / "meshfair-cli";
-    return std::filesystem::exists(cli) ? cli.string() : std::string();
 }
 
 //! A line of /proc/self/status in bytes ("VmHWM:" the peak resident set, "VmRSS:" the

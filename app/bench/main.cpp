@@ -25,8 +25,8 @@
 #include <string>
 #include <vector>
 
+#include "app/bench/bench_common.h"
 #include "app/bench/core_clock.h"
-#include "app/bench/median.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/bench/openmesh_peer.h"
@@ -43,11 +43,9 @@ namespace {
 
 using namespace meshfair;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start)
-{
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using bench::default_cli;
+using bench::human_count;
+using bench::seconds_since;
 
 //! One measured figure: its samples (one per repetition) and how to print them.
 struct Figure
@@ -77,14 +75,6 @@ struct Options
     bool skip_load = false;
     bool profile = false;
 };
-
-std::string human_count(long n)
-{
-    std::string digits = std::to_string(n);
-    for (int k = static_cast<int>(digits.size()) - 3; k > 0; k -= 3)
-        digits.insert(static_cast<size_t>(k), ",");
-    return digits;
-}
 
 std::string format_value(double v, const std::string& unit)
 {
@@ -607,16 +597,6 @@ private:
     std::vector<std::string> failures_;
     std::vector<Scalar> x_;
 };
-
-std::string default_cli()
-{
-    std::error_code error;
-    const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
-    if (error)
-        return {};
-    const auto cli = self.parent_path() / "meshfair-cli";
-    return std::filesystem::exists(cli) ? cli.string() : std::string();
-}
 
 } // namespace
 
