@@ -226,6 +226,17 @@ void EditorSession::update()
             }
         }
     }
+    // Known once the solver has restarted: the panel greys "until converged" then.
+    if (const std::string why = solver_.status().no_minimizer;
+        trace_ != nullptr && why != no_minimizer_traced_)
+    {
+        no_minimizer_traced_ = why;
+        if (!why.empty())
+        {
+            std::fprintf(trace_, "solver: no minimizer: %s\n", why.c_str());
+            std::fflush(trace_);
+        }
+    }
     if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)
     {
         // The direct method's minimizer is on screen (after a restart, or pins moved).

@@ -87,8 +87,6 @@ void solver_panel(const PanelContext& ui)
     if (!no_minimizer.empty() && !s.until_converged)
         ImGui::BeginDisabled();
     toggled |= ui.checkbox("until converged", &s.until_converged);
-    if (!no_minimizer.empty() && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-        ImGui::SetTooltip("%s", no_minimizer.c_str());
     if (!no_minimizer.empty() && !s.until_converged)
         ImGui::EndDisabled();
     if (!no_minimizer.empty())

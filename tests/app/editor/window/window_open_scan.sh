@@ -3,8 +3,9 @@
 # The preset menu on an open scan in a real window under Xvfb, driven by synthetic input
 # (xdotool) as a person drives it. The scan: the noisy bunny with its base cut away and five
 # holes punched (six boundary loops), as a scanner gives it.
-#  0. fair-region chosen in the solver panel's menu on the whole scan (no region holds it):
-#     Space refused with the reason, the preset undone;
+#  0. nothing holds the whole scan: "until converged" greyed with the reason (a click on it
+#     changes nothing; a screenshot); fair-region chosen in the solver panel's menu on the
+#     whole scan: Space refused with the reason, the preset undone;
 #  1. denoise chosen in the solver panel's menu runs (Space) to its end, the run's note
 #     saying how the open scan's volume is kept; saved (Ctrl+S) and its recipe exported:
 #     meshfair-cli smooth of the scan with that recipe gives the saved file byte for byte; a
@@ -81,11 +82,20 @@ run_preset() {
         fail "a command failed: $(grep 'failed' "$log" | head -3)"
 }
 
-# --- 0. fair-region fairs a region: chosen on the whole scan, which nothing holds, Space
-# says why and changes nothing; Ctrl+Z takes the preset back.
+# --- 0. Nothing holds the whole scan: "until converged" is greyed with the reason under it,
+# and a click on it changes nothing (the preset chosen next is the first settings' change).
+wait_line "solver: no minimizer: the free part of .* is held by nothing"
+settings=$(count_lines "command solver settings: ok")
+click_widget "until converged"
+next_frame
+xwd -root -silent | convert xwd:- "$work/no-minimizer.png"
+# fair-region fairs a region: chosen on the whole scan, which nothing holds, Space says why
+# and changes nothing; Ctrl+Z takes the preset back.
 click_widget "preset"
 click_widget "preset/fair-region"
 wait_line "command preset: ok"
+[ "$(count_lines "command solver settings: ok")" = "$settings" ] ||
+    fail "a click on the greyed 'until converged' changed the settings"
 key space
 wait_line "solver failed: .*is held by nothing"
 key ctrl+z
