@@ -352,8 +352,8 @@ private:
     }
 
     //! \brief The timed repetitions: in each, MeshFair's direct method (its first result,
-    //! then a re-solve for moved pins), its Jacobi steps toward the direct result, and
-    //! CGAL's fair, in this order.
+    //! then a re-solve for moved pins), its conjugate gradients, its Jacobi steps toward the
+    //! direct result, and CGAL's fair, in this order.
     void measure_times(const Mesh& mesh, const bench::FairCase& fair_case,
                        const Recipe& direct_file)
     {
@@ -459,11 +459,14 @@ private:
                                     std::to_string(result.gradients.back()));
             session.reset();
 
-            // 2. MeshFair Jacobi from the same start, toward the direct result.
+            // 2. MeshFair's conjugate gradients (no factor), to the same tolerance.
+            cg_run(work, topology, direct, minimizer, diagonal);
+
+            // 3. MeshFair Jacobi from the same start, toward the direct result.
             jacobi_run(work, topology, jacobi, minimizer, diagonal);
 
 #if MESHFAIR_HAVE_CGAL
-            // 3. CGAL's fair on the unknowns, the pins already at their targets.
+            // 4. CGAL's fair on the unknowns, the pins already at their targets.
             if (cgal)
             {
                 cgal_run(*peer, bench::CgalFairWeights::Uniform, "CGAL fair (uniform weights)",
@@ -478,6 +481,34 @@ private:
             std::printf("   repetition %d of %d done\n", rep + 1, o_.reps);
             std::fflush(stdout);
         }
+    }
+
+    //! \brief Conjugate gradients (preconditioned by the paper's Jacobi blocks) as a library
+    //! user runs them: the session (the matrix, no factor), run() to the tolerance.
+    void cg_run(const Mesh& work, const Topology& topology, const Recipe& direct,
+                const std::vector<Scalar>& minimizer, Scalar diagonal)
+    {
+        Recipe recipe = direct;
+        recipe.method = Method::ConjugateGradient;
+        recipe.iterations = 3;
+        recipe.tolerance = 1e-9;
+        const auto t = Clock::now();
+        Session session(work, topology, recipe);
+        std::vector<Scalar> x = work.positions;
+        session.apply_hard_targets(x);
+        session.adopt_positions(std::move(x));
+        const SmoothResult result = meshfair::run(session);
+        figure("MeshFair CG: first result", "s").values.push_back(seconds_since(t));
+        int iterations = 0;
+        for (const int n : result.inner_iterations)
+            iterations += n;
+        figure("MeshFair CG: iterations", "steps").values.push_back(iterations);
+        figure("MeshFair CG: relative gradient", "").values.push_back(result.gradients.back());
+        figure("MeshFair CG: distance to the direct result / diagonal", "")
+            .values.push_back(max_distance(session.positions(), minimizer) / diagonal);
+        if (!(result.gradients.back() <= 1e-9))
+            failures_.push_back("conjugate gradients stopped at a relative gradient of " +
+                                std::to_string(result.gradients.back()));
     }
 
     void jacobi_run(const Mesh& work, const Topology& topology, const Recipe& recipe,
