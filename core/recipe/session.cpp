@@ -1158,7 +1158,7 @@ StepInfo Session::general_step(std::span<Scalar> x)
         apply_displacements(free_, dx_, recipe_.taubin_mu, x);
         info.lambda = recipe_.lambda;
         if (guard_)
-            info.shortened = guard_direct_step(guard_start_, x);
+            info.shortened = guard_step(guard_start_, x);
         else if (volume_)
             volume_->project(x);
         return info;
@@ -1190,8 +1190,8 @@ StepInfo Session::general_step(std::span<Scalar> x)
     }
     apply_displacements(free_, dx_, info.lambda, x);
     if (guard_)
-        info.shortened = guard_direct_step(guard_start_, x);
-    if (volume_) // an implicit step's (the others take no volume)
+        info.shortened = guard_step(guard_start_, x);
+    else if (volume_)
         volume_->project(x);
     return info;
 }
@@ -1242,7 +1242,7 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     });
     if (guard_)
         info.shortened = guard_direct_step(guard_start_, x);
-    else if (volume_)
+    if (volume_) // an implicit step's (the minimizer's methods take no volume)
         volume_->project(x);
     return info;
 }
