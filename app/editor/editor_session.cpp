@@ -209,34 +209,6 @@ void EditorSession::update()
         std::fprintf(trace_, "run stopped: %d steps from the base\n", document_.steps_from_base);
         std::fflush(trace_);
     }
-    // A restart the recipe did not fit (a free part nothing holds, under the direct
-    // method): found on the solver's thread; said in the status line, where the artist
-    // looks after pressing Space, and in the trace.
-    if (const std::string error = solver_.status().error; error != error_shown_)
-    {
-        error_shown_ = error;
-        if (!error.empty())
-        {
-            state_.message = "cannot solve: " + error;
-            state_.message_is_error = true;
-            if (trace_ != nullptr)
-            {
-                std::fprintf(trace_, "solver failed: %s\n", error.c_str());
-                std::fflush(trace_);
-            }
-        }
-    }
-    // Known once the solver has restarted: the panel greys "until converged" then.
-    if (const std::string why = solver_.status().no_minimizer;
-        trace_ != nullptr && why != no_minimizer_traced_)
-    {
-        no_minimizer_traced_ = why;
-        if (!why.empty())
-        {
-            std::fprintf(trace_, "solver: no minimizer: %s\n", why.c_str());
-            std::fflush(trace_);
-        }
-    }
     if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)
     {
         // The direct method's minimizer is on screen (after a restart, or pins moved).
@@ -301,6 +273,20 @@ void EditorSession::prepare_ui()
         // by their capped boundary loops, ...): in the trace, and in the status bar unless
         // an error is there.
         synced_.restarts = state_.solver.restarts;
+        // A restart the recipe did not fit (a free part nothing holds, under the direct
+        // method): said in the status line, where the artist looks after pressing Space.
+        // And a recipe without a unique minimizer, for which the panel greys "until
+        // converged".
+        const SolverStatus& st = state_.solver;
+        if (!st.error.empty())
+        {
+            state_.message = "cannot solve: " + st.error;
+            state_.message_is_error = true;
+        }
+        if (trace_ != nullptr && !st.error.empty())
+            std::fprintf(trace_, "solver failed: %s\n", st.error.c_str());
+        if (trace_ != nullptr && !st.no_minimizer.empty())
+            std::fprintf(trace_, "solver: no minimizer: %s\n", st.no_minimizer.c_str());
         state_.run_notes = solver_.notes();
         std::string told;
         for (const std::string& note : state_.run_notes)

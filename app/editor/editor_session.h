@@ -158,8 +158,6 @@ private:
     bool cursor_in_view_ = true;
     std::FILE* trace_ = nullptr;
     int solves_traced_ = 0;             // the direct solves the trace has named ("solved: ...")
-    std::string error_shown_;           // the solver's last failure put in the status line
-    std::string no_minimizer_traced_;   // the last SolverStatus::no_minimizer traced
     std::vector<cmd::PaintDab> stroke_; // the dabs of the current or last mouse stroke
 
     // What the renderer and the panels last got, by the document's versions.

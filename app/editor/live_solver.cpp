@@ -528,8 +528,9 @@ void LiveSolver::worker()
                 run.reset();
                 error = e.what();
             }
+            // (A restart of the minimizer's methods has checked it: it failed, or all is held.)
             std::string no_minimizer;
-            if (run)
+            if (run && !solves_for_minimizer(r.recipe.method))
                 no_minimizer = run->session().unheld_part().value_or("");
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)

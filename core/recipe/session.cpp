@@ -1252,25 +1252,23 @@ Index Session::guard_direct_step(std::span<const Scalar> start, std::span<Scalar
     // The whole step shortened by one factor, t = 1, 1/2, ..., 1/2^20, then 0: the energy is
     // a convex quadratic along the step to its minimizer, so it falls for every t in (0, 1]
     // (the guard's per-vertex shortening, right for Jacobi steps, could raise it here). The
-    // shape is judged as it stands (FlipGuard::turned_between), not against the noisy
+    // shape is judged as it stands (FlipGuard::turned_after_jump), not against the noisy
     // surroundings the jump starts from.
-    std::vector<Scalar> trial(x.begin(), x.end());
+    guard_->begin_jump(start);
+    if (guard_->turned_after_jump(x) == 0)
+        return 0;
+    const std::vector<Scalar> full(x.begin(), x.end()); // the whole step, rarely needed
     Scalar t = 1;
-    for (int halving = 0; halving <= 20; ++halving, t *= 0.5)
+    for (int halving = 1; halving <= 20; ++halving)
     {
-        if (halving > 0)
-            parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
-                const size_t i = 3 * static_cast<size_t>(free_[k]);
-                for (int a = 0; a < 3; ++a)
-                    trial[i + a] = start[i + a] + t * (x[i + a] - start[i + a]);
-            });
-        if (guard_->turned_between(start, trial) == 0)
-        {
-            if (halving == 0)
-                return 0;
-            std::copy(trial.begin(), trial.end(), x.begin());
+        t *= 0.5;
+        parallel_for(static_cast<Index>(free_.size()), [&](Index k) {
+            const size_t i = 3 * static_cast<size_t>(free_[k]);
+            for (int a = 0; a < 3; ++a)
+                x[i + a] = start[i + a] + t * (full[i + a] - start[i + a]);
+        });
+        if (guard_->turned_after_jump(x) == 0)
             return static_cast<Index>(free_.size());
-        }
     }
     std::copy(start.begin(), start.end(), x.begin());
     return static_cast<Index>(free_.size());

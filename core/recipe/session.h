@@ -194,14 +194,14 @@ public:
         Scalar jacobi_displacement = 0;
     };
     Residual residual(std::span<const Scalar> x);
-    //! The direct method's factorization (nullptr for the other methods, and when conjugate
-    //! gradients solve in its place).
     //! \brief Why the recipe's energy has no unique minimizer over the free vertices: the
     //! first free part (connected through edges) that nothing holds (no fixed vertex next
     //! to it, no anchor, no constrained face), named by its size and its lowest vertex in
     //! the file's numbering; nullopt when every part is held. The direct method refuses
     //! such a recipe; steps of it only shrink such a part, toward a point.
     std::optional<std::string> unheld_part() const;
+    //! The direct method's factorization (nullptr for the other methods, and when conjugate
+    //! gradients solve in its place).
     const SparseCholesky* factorization() const { return cholesky_.get(); }
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
@@ -236,7 +236,7 @@ private:
     Index guard_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! \brief The flip guard on a step of the direct method: the whole step start -> x
     //! shortened by the largest factor 2^-k (k <= 20, else 0) at which no face is turned
-    //! over that was not at `start` (FlipGuard::turned_between).
+    //! over that was not at `start` (FlipGuard::turned_after_jump).
     //! Returns how many vertex steps it shortened (every free vertex's, or none).
     Index guard_direct_step(std::span<const Scalar> start, std::span<Scalar> x);
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)

@@ -102,23 +102,27 @@ bool FlipGuard::turned_by_step(std::span<const Scalar> y, Index f) const
     return after != 0 && (after & ~violations(&now_[3 * static_cast<size_t>(f)], f)) != 0;
 }
 
-Index FlipGuard::turned_between(std::span<const Scalar> x, std::span<const Scalar> y)
+void FlipGuard::begin_jump(std::span<const Scalar> x)
 {
-    const Index count = static_cast<Index>(faces_.size());
     face_vectors(x, now_, around_);
-    parallel_for(count, [&](Index k) {
+    jump_start_.resize(faces_.size());
+    parallel_for(static_cast<Index>(faces_.size()), [&](Index k) {
         const Index f = faces_[k];
-        flagged_[k] = static_cast<char>(violations(&now_[3 * static_cast<size_t>(f)], f) != 0);
+        jump_start_[k] = static_cast<char>(violations(&now_[3 * static_cast<size_t>(f)], f) != 0);
     });
+}
+
+Index FlipGuard::turned_after_jump(std::span<const Scalar> y)
+{
     face_vectors(y, now_, around_);
-    std::vector<char> turned(faces_.size(), 0);
+    const Index count = static_cast<Index>(faces_.size());
     parallel_for(count, [&](Index k) {
         const Index f = faces_[k];
-        turned[k] = static_cast<char>(!flagged_[k] &&
-                                      violations(&now_[3 * static_cast<size_t>(f)], f) != 0);
+        flagged_[k] = static_cast<char>(!jump_start_[k] &&
+                                        violations(&now_[3 * static_cast<size_t>(f)], f) != 0);
     });
-    std::fill(flagged_.begin(), flagged_.end(), 0);
-    return static_cast<Index>(std::count(turned.begin(), turned.end(), 1));
+    // (limit() writes every flag again before it reads one.)
+    return static_cast<Index>(std::count(flagged_.begin(), flagged_.end(), 1));
 }
 
 Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)

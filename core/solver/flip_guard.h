@@ -41,12 +41,15 @@ public:
     //! vertices only). Returns how many vertices' steps were shortened. The same bits for
     //! any thread count; allocates only while its lists grow past their largest so far.
     Index limit(std::span<const Scalar> x, std::span<Scalar> y);
-    //! \brief For a jump to a solve's result (the direct method), not a step: how many faces
-    //! with a free vertex are turned over at y but were not at x, each judged against its
-    //! own input normal (where it is held to it) and against the surface around it at the
-    //! same shape (folded over its neighbours there), not at the jump's start, which a noisy
-    //! scan's faces would break on their way to a smooth result.
-    Index turned_between(std::span<const Scalar> x, std::span<const Scalar> y);
+    //! \brief For a jump to a solve's result (the direct method), not a step: notes which
+    //! faces are turned over at x, where the jump starts (once, before turned_after_jump).
+    void begin_jump(std::span<const Scalar> x);
+    //! \brief How many faces with a free vertex are turned over at y but were not at the
+    //! jump's start, each judged against its own input normal (where it is held to it) and
+    //! against the surface around it at the same shape (folded over its neighbours there),
+    //! not at the jump's start, which a noisy scan's faces would break on their way to a
+    //! smooth result. Allocates nothing.
+    Index turned_after_jump(std::span<const Scalar> y);
     //! The vertices whose steps the last limit() shortened, in the order it shortened them.
     std::span<const Index> shortened() const { return shortened_; }
 
@@ -77,6 +80,7 @@ private:
     std::vector<Index> faces_;      //!< the faces with a free vertex, ascending
     std::vector<char> fixed_;       //!< #V
     std::vector<char> flagged_;     //!< per entry of faces_: turned over by this step
+    std::vector<char> jump_start_;  //!< per entry of faces_: turned over where a jump starts
     std::vector<Index> shortened_;  //!< the last limit()'s shortened vertices
     // limit()'s scratch, kept from call to call (it runs at every step): each vertex's place
     // in steps_ (#V, kInvalidIndex between calls), the faces turned over, the vertices
