@@ -253,6 +253,13 @@ Mesh joined(const Mesh& a, const Mesh& b, Vec3 shift)
     return m;
 }
 
+std::vector<std::pair<const char*, Mesh>> small_mesh_kinds()
+{
+    return {{"tetrahedron", tetrahedron()},       {"quad cube", quad_cube()},
+            {"open grid", open_grid(4, 3)},       {"non-manifold fan", nonmanifold_fan()},
+            {"mixed polygons", mixed_polygons()}, {"isolated vertex", with_isolated_vertex()}};
+}
+
 Mesh mixed_polygons()
 {
     // A 3x2 patch: quads, two triangles and a pentagon, slightly non-planar.

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/io/io.h"
@@ -63,6 +64,9 @@ Mesh with_isolated_vertex();    //!< a triangle plus an unused vertex
 Mesh quad_torus(int nu, int nv, double R, double r); //!< closed quad torus
 Mesh icosphere(int subdivisions);                    //!< subdivided icosahedron on the unit sphere
 Mesh mixed_polygons(); //!< open patch of triangles, quads and a pentagon
+//! One small mesh of each kind a term must take, named: closed triangles and quads, an open
+//! grid, a non-manifold fan, mixed polygons, an isolated vertex.
+std::vector<std::pair<const char*, Mesh>> small_mesh_kinds();
 //! b's vertices and faces after a's (two components when apart), b moved by `shift`.
 Mesh joined(const Mesh& a, const Mesh& b, Vec3 shift);
 

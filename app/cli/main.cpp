@@ -355,7 +355,8 @@ int main(int argc, char** argv)
                            "Step length > 0, or 'optimal' for the exact line search");
     smooth_cmd
         ->add_option("--tolerance", smooth.tolerance,
-                     "Stop when the relative energy decrease falls below this (0 = off)")
+                     "Stop at the first positions whose gradient, relative to the input's, is "
+                     "at most this (every method; 0 = off)")
         ->check(CLI::NonNegativeNumber);
     smooth_cmd
         ->add_option("--method", smooth.method,

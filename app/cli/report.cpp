@@ -126,6 +126,10 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
         }
     j["terms"] = per_term;
     j["lambda"] = result.lambdas;
+    // Steps with a tolerance: the gradient after each step, relative to the input's (the
+    // rule that stops them); the solving methods give theirs in their own objects.
+    if (!solves_for_minimizer(recipe.method) && !result.gradients.empty())
+        j["relative_gradient"] = result.gradients;
     if (recipe.prevent_flips)
     {
         // The vertices whose steps FlipGuard shortened, step by step, and in all.
@@ -198,6 +202,11 @@ std::string smooth_summary(const Json& report, const std::string& output)
          format_number(t["setup"].get<double>()) + ", solve " +
          format_number(t["solve"].get<double>()) + ", write " +
          format_number(t["write"].get<double>()) + "\n";
+    if (report.contains("relative_gradient"))
+        s += "gradient " + format_number(report["relative_gradient"].back().get<double>()) +
+             " of the input's after the last step (tolerance " +
+             std::string(report["stopped_by_tolerance"].get<bool>() ? "reached" : "not reached") +
+             ")\n";
     if (report.contains("direct") && !report["direct"]["relative_gradient"].empty())
         s += "direct: gradient " +
              format_number(report["direct"]["relative_gradient"].back().get<double>()) +

@@ -76,7 +76,8 @@ struct SolverSettings
     int iterations_per_frame = 1;
     //! Play runs this many steps, then pauses (the pace of a run, not part of the recipe).
     int steps_per_run = 20;
-    //! Play runs until the energy settles instead (the tolerance, or 1e-7 when it is 0).
+    //! Play runs until they converge instead: the gradient relative to the run's start at
+    //! most the tolerance (1e-6 when it is 0).
     bool until_converged = false;
     Scalar anchor_mu = 1;
     Scalar centroid_mu = 1;

@@ -48,6 +48,7 @@ void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vec
         status_.steps = 0;
         energies_.clear();
         known_energy_.reset();
+        ++rule_epoch_;
         energy_due_ = false;
         solve_due_ = false; // the restart decides
         ++status_.energy_version;
@@ -91,6 +92,7 @@ void LiveSolver::set_playing(bool playing, int frames, int steps, Scalar stop_to
             status_.played = 0;
             status_.goal = steps_left_;
             status_.converged = false;
+            ++rule_epoch_; // a run's gradients are relative to its first step's
         }
         if (!playing)
             frames_left_ = steps_left_ = 0;
@@ -264,45 +266,16 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         !status_.playing || (steps_left_ > 0 && steps_left_ <= n) || frames_left_ == 1;
     std::optional<EnergySample> known = known_energy_;
     const std::optional<EnergyTerm> heat = heat_term_;
+    const std::uint64_t rule_epoch = rule_epoch_;
     lock.unlock();
 
     // Outside the lock: the interface keeps drawing while the steps run.
     const auto t = std::chrono::steady_clock::now();
     int done = 0;
     bool converged_now = false;
+    Scalar relative_gradient = -1;
     Session& session = run_->session();
-    if (session.fuses_energy())
-    {
-        // Each step's sweep gives the energy of the positions it starts from: the plot's
-        // points and the tolerance's rule (as run() applies it: a step learns whether the
-        // one before it converged, and is then undone) cost no pass of their own.
-        for (; done < n; ++done)
-        {
-            TermEnergies start;
-            session.step(start);
-            const int at = first + done;
-            if (tolerance > 0 && known && known->step == at - 1 &&
-                converged(known->energy.total(), start.total(), tolerance))
-            {
-                session.revert_step();
-                converged_now = true;
-                known = EnergySample{at, start};
-                break;
-            }
-            known = EnergySample{at, start};
-        }
-        // The frame's last step is one behind the positions (the next frame's first step
-        // checks it); when the run stops here the plot ends on the shape shown, and its
-        // last step is checked as run() checks it.
-        if (!converged_now && done > 0 && last_frame)
-        {
-            const TermEnergies now = run_->energy();
-            converged_now =
-                tolerance > 0 && converged(known->energy.total(), now.total(), tolerance);
-            known = EnergySample{first + done, now};
-        }
-    }
-    else if (solves_for_minimizer(session.recipe().method))
+    if (solves_for_minimizer(session.recipe().method))
     {
         // Each step solves for the minimizer from where it starts: the run stops by run()'s
         // rule on the gradient, after one step (two when rounding leaves some to refine).
@@ -317,20 +290,39 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     }
     else
     {
-        TermEnergies before = known && known->step == first ? known->energy : run_->energy();
-        for (; done < n && !converged_now; ++done)
+        // As run() steps: each step gives the energy and, with a tolerance, the gradient of
+        // the positions it starts from (the fused sweep sums both); the run learns one step
+        // late that they had converged (StepConvergence, from the run's first step), and
+        // undoes that step.
+        const bool tracked = tolerance > 0;
+        if (!step_rule_ || step_rule_epoch_ != rule_epoch)
         {
-            run_->step();
-            if (tolerance > 0) // the command line's rule, step by step
+            step_rule_.emplace(tolerance);
+            step_rule_epoch_ = rule_epoch;
+        }
+        for (; done < n; ++done)
+        {
+            TermEnergies start;
+            const StepInfo info = session.step(start, tracked);
+            known = EnergySample{first + done, start};
+            if (tracked && step_rule_->converged_at(info.gradient))
             {
-                const TermEnergies after = run_->energy();
-                converged_now = converged(before.total(), after.total(), tolerance);
-                before = after;
-                known = EnergySample{first + done + 1, after};
+                session.revert_step();
+                converged_now = true;
+                break;
             }
         }
-        if (!known || known->step != first + done)
+        // The frame's last step is one behind the positions (the next frame's first step
+        // checks it); when the run stops here the plot ends on the shape shown, and its
+        // gradient is checked as run() checks it.
+        if (!converged_now && done > 0 && last_frame)
+        {
             known = EnergySample{first + done, run_->energy()};
+            converged_now =
+                tracked && step_rule_->converged_at(session.residual(session.positions()).gradient);
+        }
+        if (tracked)
+            relative_gradient = step_rule_->relative();
     }
     back_.assign(run_->session().positions().begin(), run_->session().positions().end());
     compute_display(back_, run_->mesh());
@@ -345,6 +337,8 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         status_.steps += done;
         status_.step_ms = ms;
         status_.converged = converged_now;
+        status_.relative_gradient = relative_gradient;
+        status_.stop_tolerance = relative_gradient >= 0 ? tolerance : 0;
         if (status_.playing)
         {
             status_.played += done;
@@ -530,7 +524,9 @@ void LiveSolver::worker()
             }
             // (A restart of the minimizer's methods has checked it: it failed, or all is held.)
             std::string no_minimizer;
-            if (run && !solves_for_minimizer(r.recipe.method))
+            if (run && r.recipe.method == Method::Taubin)
+                no_minimizer = kTaubinHasNoMinimizer;
+            else if (run && !solves_for_minimizer(r.recipe.method))
                 no_minimizer = run->session().unheld_part().value_or("");
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)

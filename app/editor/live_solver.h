@@ -32,7 +32,12 @@ struct SolverStatus
     int steps = 0;          //!< steps of the current run
     int played = 0;         //!< steps since the last play began
     int goal = 0;           //!< steps that play runs (0: until it settles)
-    std::string error;      //!< why the last restart failed (the recipe did not fit)
+    //! A run of steps with a tolerance: the gradient where the last frame's steps ended,
+    //! relative to the run's first step's (StepConvergence), and the tolerance it stops
+    //! at; -1 and 0 otherwise.
+    Scalar relative_gradient = -1;
+    Scalar stop_tolerance = 0;
+    std::string error; //!< why the last restart failed (the recipe did not fit)
     //! Why the recipe has no unique minimizer (Session::unheld_part), or empty: a run
     //! "until it settles" would only shrink the free part that nothing holds.
     std::string no_minimizer;
@@ -72,8 +77,8 @@ public:
 
     //! \brief Plays (on the worker) or pauses. It pauses by itself after `frames` frames or
     //! `steps` steps when > 0 (the last frame runs only the steps left), and when the
-    //! relative decrease of the energy in a step falls below `stop_tolerance` (> 0) or the
-    //! recipe's tolerance.
+    //! gradient relative to the run's first step's falls to `stop_tolerance` (> 0) or the
+    //! recipe's tolerance (run()'s rule, StepConvergence; the direct method's own).
     //! With steps == 0 (until it settles), `settle_fallback` > 0 steps are played instead
     //! where the recipe has no unique minimizer (SolverStatus::no_minimizer).
     void set_playing(bool playing, int frames = 0, int steps = 0, Scalar stop_tolerance = 0,
@@ -144,7 +149,12 @@ private:
     int frames_left_ = 0;          // > 0: frames to play before pausing
     int steps_left_ = 0;           // > 0: steps to play before pausing
     int settle_fallback_ = 0;      // steps in place of "until it settles" without a minimizer
-    Scalar stop_tolerance_ = 0;    // > 0: pause when a step decreases the energy less
+    Scalar stop_tolerance_ = 0;    // > 0: pause when the relative gradient falls to it
+    std::uint64_t rule_epoch_ = 0; // a new run (played from its start) or a restart
+    // The worker's stopping rule of step methods and the rule_epoch_ it began in; only
+    // the thread that steps (busy_) touches them.
+    std::optional<StepConvergence> step_rule_;
+    std::uint64_t step_rule_epoch_ = 0;
     std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest

@@ -170,10 +170,11 @@ bool SolverController::play(int frames, std::string& why)
     }
     run_before_ = capture(document_, kPositions);
     run_open_ = true;
-    // A run stops by itself: after its steps, or once the energy settles.
+    // A run stops by itself: after its steps, or once the gradient relative to the
+    // run's start falls to the tolerance (1e-6 "until converged" when the recipe has none).
     const SolverSettings& s = document_.solver;
     solver_.set_playing(true, frames, frames > 0 || s.until_converged ? 0 : s.steps_per_run,
-                        s.until_converged && s.tolerance == 0 ? Scalar(1e-7) : Scalar(0),
+                        s.until_converged && s.tolerance == 0 ? Scalar(1e-6) : Scalar(0),
                         s.steps_per_run);
     return true;
 }

@@ -146,8 +146,11 @@ void BendingTerm::add_hessian_column(Index i, HessianColumn& column) const
             add_row(k, Scalar(1) / static_cast<Scalar>(row_size_[k]));
 }
 
-void BendingTerm::add_rhs(std::span<const Scalar> x, std::span<Scalar> rhs)
+void BendingTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                          std::span<Scalar> rhs) const
 {
+    if (vertices.size() != free_.size())
+        throw SolverError("BendingTerm::add_rhs: the vertices are not those given to set_free");
     if (u_.size() != 3 * static_cast<size_t>(topology_->vertex_count))
         u_.assign(3 * static_cast<size_t>(topology_->vertex_count), 0);
     parallel_for(static_cast<Index>(needed_.size()), [&](Index n) {

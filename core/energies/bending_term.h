@@ -5,7 +5,7 @@
 #include <span>
 #include <vector>
 
-#include "core/solver/free_hessian.h"
+#include "core/energies/position_term.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -31,7 +31,7 @@ namespace meshfair {
 //! mu (1 [i has a row] + sum_{k: i in U(k)} 1 / m_k^2). A Jacobi step is stable for
 //! lambda <= 0.5 on any mesh (the spectral radius of D^-1 A_B is below 4); the direct
 //! method solves the term exactly.
-class BendingTerm
+class BendingTerm final : public PositionTerm
 {
 public:
     //! \pre mu finite and >= 0.
@@ -43,17 +43,19 @@ public:
     void set_free(std::span<const Index> free);
 
     Scalar mu() const { return mu_; }
-    Scalar energy(std::span<const Scalar> x) const;
+    EnergyTerm kind() const override { return EnergyTerm::Bending; }
+    Scalar energy(std::span<const Scalar> x) const override;
     //! Adds mu |u_k|^2 to per_vertex[k] (#V): the shares sum to the energy.
-    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
     //! E_B(dx): E_B(x + dx) = E_B(x) - 2 r^T dx + quadratic(dx).
-    Scalar quadratic(std::span<const Scalar> dx) const { return energy(dx); }
-    void add_diagonal(std::span<Scalar> diagonal) const;
+    Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx); }
+    void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of A_B = mu L^T L: its 2-ring, isotropic.
-    void add_hessian_column(Index i, HessianColumn& column) const;
-    //! rhs_i += r_i for each vertex given to set_free. Not reentrant: it keeps
-    //! the u_k it reads between calls (no allocation per step).
-    void add_rhs(std::span<const Scalar> x, std::span<Scalar> rhs);
+    void add_hessian_column(Index i, HessianColumn& column) const override;
+    //! rhs_i += r_i for each vertex given to set_free (`vertices` must be those). Not
+    //! reentrant: it keeps the u_k it reads between calls (no allocation per step).
+    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                 std::span<Scalar> rhs) const override;
 
 private:
     //! True when vertex k has a row u_k.
@@ -77,7 +79,7 @@ private:
     std::vector<Index> free_;
     //! The vertices whose u_k add_rhs reads: the free ones and their neighbours, with rows
     std::vector<Index> needed_;
-    std::vector<Scalar> u_; //!< 3 #V, u_k at needed_ after add_rhs
+    mutable std::vector<Scalar> u_; //!< 3 #V, u_k at needed_ after add_rhs
 };
 
 } // namespace meshfair

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <span>
 
-#include "core/solver/free_hessian.h"
+#include "core/energies/position_term.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -22,7 +22,7 @@ namespace meshfair {
 //! right-hand side sum_{j in V(i)} (x_j - x_i), so dx_i is the paper's Laplacian
 //! smoothing displacement (1/n_i) sum_j (x_j - x_i). Vertices with n_i = 0 get no
 //! contribution (and do not move unless another term moves them).
-class EdgeTerm
+class EdgeTerm final : public PositionTerm
 {
 public:
     explicit EdgeTerm(const Topology& topology) : topology_(&topology) {}
@@ -33,17 +33,18 @@ public:
     void set_weight(Scalar w) { weight_ = w; }
     Scalar weight() const { return weight_; }
 
-    Scalar energy(std::span<const Scalar> x) const;
+    EnergyTerm kind() const override { return EnergyTerm::Edge; }
+    Scalar energy(std::span<const Scalar> x) const override;
     //! \brief Adds each vertex's share of energy(x) to per_vertex (#V): half of each
     //! edge's |x_j - x_i|^2 to each end, so the shares sum to the energy.
-    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
     //! E_L(dx): the quadratic part, so E_L(x + dx) = E_L(x) - 2 r^T dx + quadratic(dx).
-    Scalar quadratic(std::span<const Scalar> dx) const { return energy(dx); }
+    Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx); }
     //! diagonal[i] += n_i for every vertex.
-    void add_diagonal(std::span<Scalar> diagonal) const;
+    void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of the half Hessian (the graph Laplacian L, E_L = sum_a x_a^T L x_a over
     //! the coordinates a): n_i at i, -1 at each neighbour. The direct method's matrix.
-    void add_hessian_column(Index i, HessianColumn& column) const
+    void add_hessian_column(Index i, HessianColumn& column) const override
     {
         const std::span<const Index> neighbors = topology_->neighbors(i);
         column.add(i, weight_ * static_cast<Scalar>(neighbors.size()));
@@ -52,7 +53,7 @@ public:
     }
     //! rhs_i += w sum_{j in V(i)} (x_j - x_i) for each i in `vertices` (gathered, no scatter).
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
-                 std::span<Scalar> rhs) const;
+                 std::span<Scalar> rhs) const override;
     //! The same for one vertex: r[0..2] += sum_{j in V(i)} (x_j - x_i). Inline, for the
     //! fused step, which adds every term's part of r_i in one sweep.
     void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const

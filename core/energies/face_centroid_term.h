@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "core/energies/index_list.h"
+#include "core/energies/position_term.h"
 #include "core/geometry/face_geometry.h"
 #include "core/mesh/mesh.h"
-#include "core/solver/free_hessian.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -35,7 +35,7 @@ enum class CentroidDenominator
 //! mu_f c c^T is bounded by diag(mu_f/n_f) (docs/math.md); with the exact one that holds
 //! only for lambda < 2 / max(2, max n_f): always for triangles at 0.5, never guaranteed
 //! beyond quads. Both are offered; Paper is the default.
-class FaceCentroidTerm
+class FaceCentroidTerm final : public PositionTerm
 {
 public:
     //! \pre faces distinct and < #F; targets hold 3 values per listed face; weights empty
@@ -63,16 +63,17 @@ public:
     //! mu_f of a constrained face.
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
 
-    Scalar energy(std::span<const Scalar> x) const;
+    EnergyTerm kind() const override { return EnergyTerm::Centroid; }
+    Scalar energy(std::span<const Scalar> x) const override;
     //! Adds each constrained face's mu_f |x_f - x0_f|^2 to per_vertex (#V), 1/n_f to each corner.
-    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
-    Scalar quadratic(std::span<const Scalar> dx) const;
-    void add_diagonal(std::span<Scalar> diagonal) const;
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    Scalar quadratic(std::span<const Scalar> dx) const override;
+    void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of the exact half Hessian: mu_f / n_f^2 between i and every vertex of each
     //! constrained face of i (each corner counted: a vertex twice in a face, twice). Not
     //! the Jacobi diagonal of the Paper denominator, which majorizes it: the direct method
     //! solves for the minimizer itself.
-    void add_hessian_column(Index i, HessianColumn& column) const
+    void add_hessian_column(Index i, HessianColumn& column) const override
     {
         for (const Index c : topology_->corners_of_vertex(i))
         {
@@ -87,7 +88,7 @@ public:
     }
     //! rhs_i += the residuals of the constrained faces of i, for each i in `vertices`.
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
-                 std::span<Scalar> rhs) const;
+                 std::span<Scalar> rhs) const override;
     //! The same for one vertex (the general step).
     void add_vertex_rhs(Index i, const Scalar* x, Scalar* r) const
     {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "core/energies/index_list.h"
+#include "core/energies/position_term.h"
 #include "core/mesh/mesh.h"
-#include "core/solver/free_hessian.h"
 #include "core/topology/topology.h"
 
 namespace meshfair {
@@ -27,7 +27,7 @@ namespace meshfair {
 //! sum_f mu_f sum_{j in V(f,i)} u_f u_f^T = 2 sum_f mu_f u_f u_f^T is added to n_i I, and
 //! sum_f mu_f u_f u_f^T sum_{j in V(f,i)} (x_j - x_i) to the right-hand side: the paper's
 //! equation with its n_f n_f^t read as u_f u_f^t. n_i I + block is SPD whenever n_i > 0.
-class FaceNormalTerm
+class FaceNormalTerm final : public PositionTerm
 {
 public:
     //! \pre faces distinct and < #F; weights empty or one per listed face, each finite and
@@ -44,6 +44,30 @@ public:
     Scalar face_weight(Index f) const { return face_weight_.empty() ? mu_ : face_weight_[f]; }
     const IndexList& faces() const { return faces_; }
     bool constrains(Index f) const { return constrained_[f] != 0; }
+
+    //! \brief The normals u (3 #F) the PositionTerm interface reads, viewed, not copied:
+    //! a session's current normals, which joint mode and normal smoothing update in place.
+    //! \pre they outlive the term's use through PositionTerm, or the next view_normals.
+    void view_normals(std::span<const Scalar> normals) { normals_ = normals; }
+    // PositionTerm, with the normals of view_normals. The term has no scalar diagonal:
+    // its Jacobi part is the 3x3 block of add_block.
+    EnergyTerm kind() const override { return EnergyTerm::Normal; }
+    Scalar energy(std::span<const Scalar> x) const override { return energy(x, normals_); }
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override
+    {
+        add_vertex_energy(x, normals_, per_vertex);
+    }
+    Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx, normals_); }
+    void add_diagonal(std::span<Scalar>) const override {}
+    void add_hessian_column(Index i, HessianColumn& column) const override
+    {
+        add_hessian_column(i, normals_, column);
+    }
+    void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
+                 std::span<Scalar> rhs) const override
+    {
+        add_rhs(x, normals_, vertices, rhs);
+    }
 
     Scalar energy(std::span<const Scalar> x, std::span<const Scalar> normals) const;
     //! Adds each face-edge pair's mu_f (u_f^T (x_j - x_i))^2 to per_vertex (#V), half to each
@@ -237,8 +261,9 @@ private:
     std::vector<char> constrained_;   //!< #F
     std::vector<Scalar> face_weight_; //!< #F: mu_f = mu w_f; empty without weights
     CornerWalk walk_;
-    Vec3 centre_;    //!< face_share's c
-    bool all_faces_; //!< every face constrained: the sweep tests no flag
+    Vec3 centre_;                     //!< face_share's c
+    std::span<const Scalar> normals_; //!< view_normals's
+    bool all_faces_;                  //!< every face constrained: the sweep tests no flag
 };
 
 } // namespace meshfair

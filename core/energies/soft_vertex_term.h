@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "core/energies/index_list.h"
-#include "core/solver/free_hessian.h"
+#include "core/energies/position_term.h"
 #include "core/types.h"
 
 namespace meshfair {
@@ -22,7 +22,7 @@ namespace meshfair {
 //! update dx_i = (sum_j (x_j - x_i) + mu_i (x0_i - x_i)) / (n_i + mu_i). The energy scales
 //! linearly in each mu_i; A_S = D_S. Moving targets (set_targets) changes the right-hand
 //! side only. Without weights the arithmetic is that of one mu (mu sum |x_i - x0_i|^2).
-class SoftVertexTerm
+class SoftVertexTerm final : public PositionTerm
 {
 public:
     //! \pre vertices distinct and < vertex_count; targets empty (every target at the origin
@@ -53,19 +53,20 @@ public:
     //! The listed vertices (no list stored when every vertex, in order).
     const IndexList& vertices() const { return vertices_; }
 
-    Scalar energy(std::span<const Scalar> x) const;
+    EnergyTerm kind() const override { return EnergyTerm::Soft; }
+    Scalar energy(std::span<const Scalar> x) const override;
     //! Adds mu_i |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
-    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const;
-    Scalar quadratic(std::span<const Scalar> dx) const;
-    void add_diagonal(std::span<Scalar> diagonal) const;
+    void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    Scalar quadratic(std::span<const Scalar> dx) const override;
+    void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of the half Hessian: mu_i at i (A_S = D_S, diagonal).
-    void add_hessian_column(Index i, HessianColumn& column) const
+    void add_hessian_column(Index i, HessianColumn& column) const override
     {
         if (const Scalar w = weight(i); w != 0)
             column.add(i, w);
     }
     void add_rhs(std::span<const Scalar> x, std::span<const Index> vertices,
-                 std::span<Scalar> rhs) const;
+                 std::span<Scalar> rhs) const override;
     //! One vertex's part: r[a] += mu_i (t_i - x_i)[a] (mu_i = 0 off the constrained set);
     //! with Energy, also *energy += mu_i |x_i - t_i|^2, the vertex's part of energy(x).
     template <bool Energy = false>

@@ -213,4 +213,63 @@ Index FlipGuard::limit(std::span<const Scalar> x, std::span<Scalar> y)
     return static_cast<Index>(shortened.size());
 }
 
+Index guard_step(FlipGuard* guard_or_none, VolumeConstraint* volume, std::span<const Scalar> start,
+                 std::span<Scalar> x)
+{
+    if (guard_or_none == nullptr)
+    {
+        if (volume != nullptr)
+            volume->project(x);
+        return 0;
+    }
+    // The guard on the step first, then the volume's correction (usually too small to turn
+    // a face), checked in turn; when the guard shortens that too, the vertices it shortened
+    // stay where it left them and the others restore the volume, a few rounds at most.
+    FlipGuard& guard = *guard_or_none;
+    guard.begin_step(start);
+    Index shortened = guard.limit(start, x);
+    if (volume == nullptr)
+        return shortened;
+    volume->project(x);
+    std::vector<Index> held;
+    for (int round = 0;; ++round)
+    {
+        const Index again = guard.limit(start, x);
+        shortened += again;
+        if (again == 0 || round == 3)
+            break; // (the last check's shortening leaves the volume to the next step)
+        held.insert(held.end(), guard.shortened().begin(), guard.shortened().end());
+        volume->project(x, held);
+    }
+    return shortened;
+}
+
+Index guard_jump(FlipGuard& guard, std::span<const Index> free, std::span<const Scalar> start,
+                 std::span<Scalar> x)
+{
+    // The whole step shortened by one factor, t = 1, 1/2, ..., 1/2^20, then 0: the energy is
+    // a convex quadratic along the step to its minimizer, so it falls for every t in (0, 1]
+    // (the per-vertex shortening, right for Jacobi steps, could raise it here). The shape
+    // is judged as it stands (FlipGuard::turned_after_jump), not against the noisy
+    // surroundings the jump starts from.
+    guard.begin_jump(start);
+    if (guard.turned_after_jump(x) == 0)
+        return 0;
+    const std::vector<Scalar> full(x.begin(), x.end()); // the whole step, rarely needed
+    Scalar t = 1;
+    for (int halving = 1; halving <= 20; ++halving)
+    {
+        t *= 0.5;
+        parallel_for(static_cast<Index>(free.size()), [&](Index k) {
+            const size_t i = 3 * static_cast<size_t>(free[k]);
+            for (int a = 0; a < 3; ++a)
+                x[i + a] = start[i + a] + t * (full[i + a] - start[i + a]);
+        });
+        if (guard.turned_after_jump(x) == 0)
+            return static_cast<Index>(free.size());
+    }
+    std::copy(start.begin(), start.end(), x.begin());
+    return static_cast<Index>(free.size());
+}
+
 } // namespace meshfair

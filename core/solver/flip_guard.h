@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "core/energies/volume_constraint.h"
 #include "core/mesh/mesh.h"
 #include "core/topology/topology.h"
 
@@ -88,5 +89,20 @@ private:
     std::vector<Index> slot_, bad_, moved_, rechecked_;
     std::vector<Shortened> steps_;
 };
+
+//! \brief The guard on a Jacobi step start -> x with the volume's correction after it:
+//! shortens the steps that turn faces over, restores the volumes, and checks that
+//! correction in turn (the vertices shortened then stay, the others restore the volumes:
+//! VolumeConstraint::project with `hold`), up to 3 rounds. Returns the count of shortened
+//! vertex steps. Without a guard (nullptr), the volume's correction alone (volume may be
+//! nullptr too: nothing).
+Index guard_step(FlipGuard* guard, VolumeConstraint* volume, std::span<const Scalar> start,
+                 std::span<Scalar> x);
+//! \brief The guard on a jump start -> x to a solve's result (the direct and implicit
+//! methods): the whole jump shortened by the largest factor 2^-k (k <= 20, else 0) at
+//! which no face is turned over that was not at `start` (FlipGuard::turned_after_jump).
+//! Returns how many vertex steps it shortened (every free vertex's, or none).
+Index guard_jump(FlipGuard& guard, std::span<const Index> free, std::span<const Scalar> start,
+                 std::span<Scalar> x);
 
 } // namespace meshfair

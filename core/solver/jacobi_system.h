@@ -101,6 +101,22 @@ inline void symmetric3_apply(const Scalar* M, const Scalar* r, Scalar* x)
     x[2] = M[2] * r[0] + M[4] * r[1] + M[5] * r[2];
 }
 
+//! The inverse of a symmetric positive definite 3x3 matrix M (xx xy xz yy yz zz), by its
+//! adjugate: the fused step's way back from A_i^-1 to A_i (for |A_i dx_i|, the gradient).
+inline void symmetric3_inverse(const Scalar* M, Scalar* inverse)
+{
+    const Scalar c00 = M[3] * M[5] - M[4] * M[4], c01 = M[2] * M[4] - M[1] * M[5],
+                 c02 = M[1] * M[4] - M[2] * M[3], c11 = M[0] * M[5] - M[2] * M[2],
+                 c12 = M[1] * M[2] - M[0] * M[4], c22 = M[0] * M[3] - M[1] * M[1];
+    const Scalar inv_det = Scalar(1) / (M[0] * c00 + M[1] * c01 + M[2] * c02);
+    inverse[0] = c00 * inv_det;
+    inverse[1] = c01 * inv_det;
+    inverse[2] = c02 * inv_det;
+    inverse[3] = c11 * inv_det;
+    inverse[4] = c12 * inv_det;
+    inverse[5] = c22 * inv_det;
+}
+
 //! \brief Solves (d I + B) dx = r - (3/2) B e with the inverse of d I + B
 //! (spd_inverse3), without B: B e = (d I + B) e - d e, so dx = (d I + B)^-1 (r + (3/2) d e) -
 //! (3/2) e. The fused step's normal term on triangles leaves its -(3/2) B e to this

@@ -2,6 +2,10 @@
 // Copyright 2026 the MeshFair authors.
 #include "core/solver/solver.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "core/parallel/parallel.h"
 
 namespace meshfair {
@@ -48,6 +52,36 @@ Scalar rhs_dot(const JacobiSystem& system, std::span<const Index> free_vertices,
         return system.rhs[3 * i] * dx[3 * i] + system.rhs[3 * i + 1] * dx[3 * i + 1] +
                system.rhs[3 * i + 2] * dx[3 * i + 2];
     });
+}
+
+Scalar rhs_norm(const JacobiSystem& system, std::span<const Index> free_vertices)
+{
+    return std::sqrt(deterministic_sum(static_cast<Index>(free_vertices.size()), [&](Index k) {
+        const Scalar* r = &system.rhs[3 * static_cast<size_t>(free_vertices[k])];
+        return r[0] * r[0] + r[1] * r[1] + r[2] * r[2];
+    }));
+}
+
+Scalar largest_displacement(std::span<const Index> free_vertices, std::span<const Scalar> dx)
+{
+    Scalar largest = 0;
+    for (const Index i : free_vertices)
+    {
+        const Scalar* d = &dx[3 * static_cast<size_t>(i)];
+        largest = std::max(largest, std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    }
+    return largest;
+}
+
+bool invert_blocks(JacobiSystem& system, std::span<const Index> free_vertices, bool keep_blocks)
+{
+    Scalar* inverse = keep_blocks ? system.inverse.data() : system.block.data();
+    for (const Index i : free_vertices)
+        if (!spd_inverse3(system.diagonal[i], &system.block[6 * i], &inverse[6 * i]))
+            return false;
+    if (!keep_blocks)
+        system.inverse = std::move(system.block);
+    return true;
 }
 
 void apply_displacements(std::span<const Index> free_vertices, std::span<const Scalar> dx,

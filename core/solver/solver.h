@@ -29,6 +29,18 @@ Scalar optimal_step(Scalar rhs_dot_dx, Scalar quadratic);
 Scalar rhs_dot(const JacobiSystem& system, std::span<const Index> free_vertices,
                std::span<const Scalar> dx);
 
+//! |r| over the free vertices (system.rhs), the same for any thread count.
+Scalar rhs_norm(const JacobiSystem& system, std::span<const Index> free_vertices);
+
+//! The largest |dx_i| over the free vertices.
+Scalar largest_displacement(std::span<const Index> free_vertices, std::span<const Scalar> dx);
+
+//! \brief Inverts each free vertex's A_i = diagonal[i] I + block_i into system.inverse:
+//! beside the blocks when keep_blocks (they are rebuilt and inverted again, in joint
+//! mode), else in place, the blocks then becoming the inverses (no second 6 #V array).
+//! False when some A_i is not positive definite in double precision.
+bool invert_blocks(JacobiSystem& system, std::span<const Index> free_vertices, bool keep_blocks);
+
 //! x_i += lambda dx_i for every free vertex.
 void apply_displacements(std::span<const Index> free_vertices, std::span<const Scalar> dx,
                          Scalar lambda, std::span<Scalar> x);

@@ -82,14 +82,25 @@ void solver_panel(const PanelContext& ui)
         ui.track("steps per run");
     }
     // Where nothing holds a free part, its energy has no unique minimizer: steps only shrink
-    // it toward a point, and "until converged" would melt it. Not offered; the reason shown.
+    // it toward a point, and "until converged" would melt it; Taubin's steps converge to
+    // no minimizer. Not offered; the reason shown.
     const std::string& no_minimizer = state.solver.no_minimizer;
     if (!no_minimizer.empty() && !s.until_converged)
         ImGui::BeginDisabled();
     toggled |= ui.checkbox("until converged", &s.until_converged);
     if (!no_minimizer.empty() && !s.until_converged)
         ImGui::EndDisabled();
-    if (!no_minimizer.empty())
+    if (!no_minimizer.empty() && s.method == Method::Taubin)
+    {
+        // A tooltip: the line the reason would take would move the panel's widgets when
+        // the method's restart ends.
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip(
+                "until converged is off for Taubin's steps: they keep the "
+                "shape's low frequencies instead of converging to a minimum; "
+                "a run plays the steps per run");
+    }
+    else if (!no_minimizer.empty())
     {
         ImGui::PushTextWrapPos(0);
         ImGui::TextDisabled(
@@ -262,8 +273,13 @@ void solver_panel(const PanelContext& ui)
     const SolverStatus& st = state.solver;
     if (state.playing && st.goal > 0)
         ImGui::Text("running: step %d of %d", st.played, st.goal);
+    else if (state.playing && st.relative_gradient >= 0)
+        ImGui::TextWrapped(
+            "running: step %d, until the gradient falls to %.0e of the "
+            "start's (now %.1e)",
+            st.played, st.stop_tolerance, st.relative_gradient);
     else if (state.playing)
-        ImGui::Text("running: step %d, until the energy settles", st.played);
+        ImGui::Text("running: step %d, until it converges", st.played);
     ImGui::TextWrapped("%d steps from the base%s", document.steps_from_base,
                        document.reproducible ? "" : " (recipe changed during the run)");
     if (!state.offscreen) // a time would make offscreen frames differ from run to run

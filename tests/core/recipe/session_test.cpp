@@ -12,6 +12,7 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
+#include "core/recipe/recipe_json.h"
 #include "core/solver/solver.h"
 #include "tests/helpers.h"
 #include "tests/session_checks.h"
@@ -450,32 +451,82 @@ TEST_SUITE("Session")
         const SmoothResult all = smooth(a, t, r);
         CHECK(all.iterations == 500);
         CHECK_FALSE(all.stopped_by_tolerance);
+        CHECK(all.gradients.empty());
         r.tolerance = 1e-4;
         Mesh b = m;
         const SmoothResult early = smooth(b, t, r);
         CHECK(early.stopped_by_tolerance);
         CHECK(early.iterations < 500);
-        const Scalar before = early.energies[early.iterations - 1].total();
-        const Scalar after = early.energies[early.iterations].total();
-        CHECK((before - after) / before < 1e-4);
-        // run() learns the energies from its steps' sweeps, one step late, and undoes the
-        // step past the stop: the positions and the count of a loop that evaluates the
-        // energy after every step.
+        // run() learns each step's gradient from its sweep, one step late, and undoes the
+        // step past the stop: the positions and the count of a loop that assembles the
+        // gradient after every step.
         Mesh c = m;
         Session session(c, t, r);
         int steps = 0;
-        Scalar e = session.energy(c.positions).total();
-        for (bool stop = false; !stop && steps < r.iterations; ++steps)
+        const Scalar first = session.residual(c.positions).gradient;
+        Scalar relative = 1;
+        for (; relative > r.tolerance && steps < r.iterations; ++steps)
         {
             session.step(c.positions);
-            const Scalar next = session.energy(c.positions).total();
-            stop = converged(e, next, r.tolerance);
-            e = next;
+            relative = session.residual(c.positions).gradient / first;
         }
         CHECK(steps == early.iterations);
         CHECK(c.positions == b.positions);
         CHECK(early.energies.size() == static_cast<size_t>(early.iterations) + 1);
         CHECK(early.lambdas.size() == static_cast<size_t>(early.iterations));
+        REQUIRE(early.gradients.size() == static_cast<size_t>(early.iterations));
+        CHECK(early.gradients.back() == doctest::Approx(relative).epsilon(1e-9));
+    }
+
+    TEST_CASE(
+        "the tolerance is the gradient's for every step method: a run stops at the "
+        "first positions within it")
+    {
+        // The fused Jacobi step (and on triangles with normals, where its sweep takes r_i
+        // back from the displacement), the line search, gradient descent, the thin plate's
+        // general step, an implicit step. (Taubin's pairs keep the low frequencies: they
+        // have no minimizer to converge to, and a note says so.)
+        const Mesh m = noisy(test::icosphere(2));
+        const Topology t = build_topology(m);
+        const Scalar tolerance = 0.02;
+        const std::vector<std::pair<const char*, std::string>> recipes = {
+            {"jacobi", R"({"soft": {"vertices": "all", "mu": 0.5}})"},
+            {"normal shares",
+             R"({"soft": {"vertices": "all", "mu": 0.5}, "normal": {"faces": "all", "mu": 2, "normals": "initial"}})"},
+            {"optimal", R"({"lambda": "optimal", "centroid": {"faces": "all", "mu": 1}})"},
+            {"gradient descent",
+             R"({"method": "gradient_descent", "lambda": 0.05, "soft": {"vertices": "all", "mu": 0.5}})"},
+            {"bending", R"({"bending": {"mu": 0.2}, "soft": {"vertices": "all", "mu": 0.5}})"},
+            {"implicit",
+             R"({"method": "implicit", "time": 0.5, "soft": {"vertices": "all", "mu": 0.5}})"},
+        };
+        for (const auto& [label, json] : recipes)
+        {
+            const std::string name = label;
+            CAPTURE(name);
+            Recipe r = parse_recipe(json, "r.json");
+            r.iterations = 2000;
+            r.tolerance = tolerance;
+            const Topology topology = build_topology(m, required_topology(r));
+            Mesh x = m;
+            const SmoothResult result = smooth(x, topology, r);
+            REQUIRE(result.stopped_by_tolerance);
+            REQUIRE(result.iterations > 0);
+            // Within the tolerance where it stopped, measured afresh ...
+            Mesh start = m;
+            Session fresh(start, topology, r);
+            const Scalar first = fresh.residual(start.positions).gradient;
+            const Scalar reached = fresh.residual(x.positions).gradient / first;
+            CHECK(reached <= tolerance * (1 + 1e-9));
+            CHECK(result.gradients.back() == doctest::Approx(reached).epsilon(1e-6));
+            // ... and not one step before.
+            Recipe shorter = r;
+            shorter.tolerance = 0;
+            shorter.iterations = result.iterations - 1;
+            Mesh y = m;
+            smooth(y, topology, shorter);
+            CHECK(fresh.residual(y.positions).gradient / first > tolerance * (1 - 1e-9));
+        }
     }
 
     TEST_CASE("a recipe that does not fit the mesh is refused before any work")
