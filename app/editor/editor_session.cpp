@@ -206,7 +206,16 @@ void EditorSession::update()
     }
     if (trace_ != nullptr && was_playing && !solver_.playing())
     {
-        std::fprintf(trace_, "run stopped: %d steps from the base\n", document_.steps_from_base);
+        // With a tolerance, where the gradient stood (relative to the run's start) and
+        // whether the run stopped on it.
+        const SolverStatus st = solver_.status();
+        if (st.relative_gradient >= 0)
+            std::fprintf(
+                trace_, "run stopped: %d steps from the base, gradient %.3g of the start's%s\n",
+                document_.steps_from_base, st.relative_gradient, st.converged ? ", converged" : "");
+        else
+            std::fprintf(trace_, "run stopped: %d steps from the base\n",
+                         document_.steps_from_base);
         std::fflush(trace_);
     }
     if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)

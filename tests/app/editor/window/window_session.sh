@@ -91,6 +91,12 @@ wait_line "run stopped" 2
 wait_line "command play/pause: ok" 2
 stopped() { sed -n 's/^run stopped: \([0-9]*\) steps.*/\1/p' "$log" | sed -n "$1p"; }
 first=$(stopped 1) second=$(stopped 2)
+# "Until converged" stops on the gradient: at 1e-6 of the run's start (the rule of the
+# command line's tolerance), not where the energy's decrease slows.
+gradient=$(sed -n 's/^run stopped: .*gradient \([0-9.e+-]*\) of the start.s, converged$/\1/p' "$log" | head -1)
+[ -n "$gradient" ] || fail "the first run did not stop converged: $(grep 'run stopped' "$log" | head -1)"
+awk -v g="$gradient" 'BEGIN { exit !(g <= 1e-6) }' ||
+    fail "the run stopped at a relative gradient of $gradient, above 1e-6"
 [ "$second" -gt "$first" ] ||
     fail "the run after the slider's change made no step ($first, then $second steps from the base)"
 # Undo the run after the change and the change: the shape the slider moved on.
