@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,29 @@ inline std::string self_path()
     std::error_code error;
     const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
     return error ? std::string() : self.string();
+}
+
+//! A line of /proc/self/status in bytes ("VmHWM:" the peak resident set, "VmRSS:" the
+//! current one), or -1 where the system does not say.
+inline double status_bytes(const std::string& key)
+{
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.starts_with(key))
+            return std::stod(line.substr(key.size())) * 1024; // "VmHWM:    1234 kB"
+    return -1;
+}
+
+//! \brief Resets the peak resident set (VmHWM) to the current one (Linux's clear_refs "5"),
+//! so that the next reading is the peak of what runs after; false where it is refused (the
+//! peak is then the process's so far).
+inline bool reset_peak_memory()
+{
+    std::ofstream clear("/proc/self/clear_refs");
+    clear << "5";
+    clear.close();
+    return static_cast<bool>(clear);
 }
 
 //! meshfair-cli beside this program (the build's app/ folder), or empty.

@@ -170,18 +170,6 @@ std::string loaded_blas()
     return "none loaded";
 }
 
-//! A line of /proc/self/status in bytes ("VmHWM:" the peak resident set, "VmRSS:" the
-//! current one), or -1 where the system does not say.
-double status_bytes(const std::string& key)
-{
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line))
-        if (line.starts_with(key))
-            return std::stod(line.substr(key.size())) * 1024; // "VmHWM:    1234 kB"
-    return -1;
-}
-
 //! \brief A process's peak memory stage by stage: at the end of each stage its high-water
 //! mark is read, then reset to the current resident set (Linux's clear_refs "5"), so the
 //! next stage's peak is its own. ru_maxrss cannot be reset, and a forked child's would
@@ -192,21 +180,18 @@ public:
     //! Ends a stage: report[name] holds its peak and the resident set it started from.
     void end_stage(const std::string& name, nlohmann::json& report)
     {
-        const double peak = status_bytes("VmHWM:");
+        const double peak = bench::status_bytes("VmHWM:");
         process_peak_ = std::max(process_peak_, peak);
         report[name] = {{"peak_bytes", peak}, {"start_bytes", stage_start_}};
-        std::ofstream clear("/proc/self/clear_refs");
-        clear << "5";
-        clear.close();
         // Where the reset is refused, the next stage's peak is the process's so far.
-        report[name]["reset"] = static_cast<bool>(clear);
-        stage_start_ = status_bytes("VmRSS:");
+        report[name]["reset"] = bench::reset_peak_memory();
+        stage_start_ = bench::status_bytes("VmRSS:");
     }
     double process_peak() const { return process_peak_; }
 
 private:
     double process_peak_ = 0;
-    double stage_start_ = status_bytes("VmRSS:");
+    double stage_start_ = bench::status_bytes("VmRSS:");
 };
 
 //! \brief The child's side of the peak-memory figures: loads the mesh and the recipe (in
