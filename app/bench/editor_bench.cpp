@@ -5,8 +5,9 @@
 // mesh. It drives an EditorSession with GlRenderer on OSMesa, as the window does, over a
 // subdivided bunny, and times each part of a frame separately: the tool's work for one
 // mouse event, the upload of the selection to the renderer, the software rasterization
-// (llvmpipe here; a GPU draws the same buffers far faster), and the undo record. See
-// docs/performance.md ("Editor").
+// (llvmpipe here; a GPU draws the same buffers far faster), and the undo record; then a
+// pin dragged with the M tool, each move timed until the editor shows the minimizer
+// (editor_drag.h). See docs/performance.md ("Editor").
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "app/bench/bench_common.h"
+#include "app/bench/editor_drag.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
@@ -77,6 +79,24 @@ int main(int argc, char** argv)
         ->check(CLI::Range(1, 100000));
     app.add_option("--threads", threads, "threads (default: all cores)")
         ->check(CLI::Range(0, 1024));
+    bench::DragOptions drag;
+    bool drag_only = false;
+    app.add_option("--drag-moves", drag.moves,
+                   "pin drag: mouse moves timed after the first (0: no drag)")
+        ->check(CLI::Range(0, 10000));
+    app.add_option("--drag-px", drag.step_px, "pin drag: pixels each move lifts the pins")
+        ->check(CLI::Range(0.5, 100.0));
+    app.add_option(
+           "--drag-region", drag.region,
+           "pin drag: the region's rectangle through the surface, as a fraction of the view")
+        ->check(CLI::Range(0.05, 1.0));
+    app.add_option("--jacobi-moves", drag.jacobi_moves, "pin drag: moves of the Jacobi peer")
+        ->check(CLI::Range(0, 1000));
+    app.add_option("--jacobi-cap-ms", drag.jacobi_cap_ms,
+                   "pin drag: the Jacobi peer's time per move")
+        ->check(CLI::Range(100.0, 600000.0));
+    app.add_flag("--drag-only", drag_only,
+                 "only the pin drag (not the selection and live solving)");
     CLI11_PARSE(app, argc, argv);
     if (threads > 0)
         set_thread_count(threads);
@@ -109,6 +129,11 @@ int main(int argc, char** argv)
     session.set_view_rect(ViewRect::whole(width, height));
     session.camera().frame(session.document().box, session.aspect());
     session.draw();
+    if (drag_only)
+    {
+        bench::drag_case(session, width, height, drag);
+        return 0;
+    }
 
     const char* kinds[2] = {"vertices", "faces"};
     std::vector<Series> press_moved, press_same, rect_release;
@@ -413,5 +438,9 @@ int main(int argc, char** argv)
         "| smoothing brush, a dab (its restart and %d steps of the painted region) | "
         "%.2fx (%.2fx a step) | | |\n",
         dab_steps, dab_ms / plain.step, dab_ms / dab_steps / plain.step);
+
+    // --- Last, as it leaves its sets in the document (the smoothing brush runs them).
+    if (drag.moves > 0)
+        bench::drag_case(session, width, height, drag);
     return 0;
 }
