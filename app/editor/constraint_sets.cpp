@@ -343,6 +343,22 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
     return problems;
 }
 
+std::optional<HardVertices> pin_constraints(const std::vector<ConstraintSet>& sets,
+                                            std::span<const Scalar> positions)
+{
+    if (!any_of_kind(sets, ConstraintKind::Pin))
+        return std::nullopt;
+    std::vector<const ConstraintSet*> from;
+    std::vector<size_t> at;
+    HardVertices hard{merged(sets, ConstraintKind::Pin, true, &from, &at), {}};
+    if (std::any_of(from.begin(), from.end(),
+                    [](const ConstraintSet* s) { return !s->targets.empty(); }))
+        for (size_t k = 0; k < hard.vertices.size(); ++k)
+            hard.targets.push_back(from[k]->targets.empty() ? position(positions, hard.vertices[k])
+                                                            : from[k]->targets[at[k]]);
+    return hard;
+}
+
 Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
                     const Mesh& mesh, std::span<const Scalar> positions, int iterations)
 {
@@ -385,19 +401,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         r.region = Region{sorted(std::move(vertices)),
                           sorted(merged(sets, ConstraintKind::Region, false))};
     }
-    if (any_of_kind(sets, ConstraintKind::Pin))
-    {
-        std::vector<const ConstraintSet*> from;
-        std::vector<size_t> at;
-        HardVertices hard{merged(sets, ConstraintKind::Pin, true, &from, &at), {}};
-        if (std::any_of(from.begin(), from.end(),
-                        [](const ConstraintSet* s) { return !s->targets.empty(); }))
-            for (size_t k = 0; k < hard.vertices.size(); ++k)
-                hard.targets.push_back(from[k]->targets.empty()
-                                           ? position(positions, hard.vertices[k])
-                                           : from[k]->targets[at[k]]);
-        r.hard = std::move(hard);
-    }
+    r.hard = pin_constraints(sets, positions);
     if (any_of_kind(sets, ConstraintKind::Anchor) || !fading.empty())
     {
         std::vector<const ConstraintSet*> from;

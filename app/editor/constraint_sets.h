@@ -162,6 +162,12 @@ std::vector<std::string> constraint_notes(const std::vector<ConstraintSet>& sets
 Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings& settings,
                     const Mesh& mesh, std::span<const Scalar> positions, int iterations);
 
+//! \brief The recipe's hard vertices of the sets (build_recipe's `hard`), or nullopt without
+//! an enabled pin set: reading the pin sets alone, for a pin drag that moves only them
+//! (build_recipe walks every set, a region of a million vertices included).
+std::optional<HardVertices> pin_constraints(const std::vector<ConstraintSet>& sets,
+                                            std::span<const Scalar> positions);
+
 //! \brief Whether two lists of sets with their settings make the same solver run: the
 //! same kinds, elements, normals (and pin targets unless `ignoring_pin_targets`) in the
 //! same order and the same settings but the steps per frame. Names, colours and

@@ -283,8 +283,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         for (; done < n && !converged_now; ++done)
         {
             const StepInfo info = run_->step();
-            converged_now =
-                rule.stop_after(info.gradient, session.residual(session.positions()).gradient);
+            converged_now = rule.stop_after(info.gradient, session.gradient(session.positions()));
         }
         known = EnergySample{first + done, run_->energy()};
     }
@@ -319,7 +318,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         {
             known = EnergySample{first + done, run_->energy()};
             converged_now =
-                tracked && step_rule_->converged_at(session.residual(session.positions()).gradient);
+                tracked && step_rule_->converged_at(session.gradient(session.positions()));
         }
         if (tracked)
             relative_gradient = step_rule_->relative();

@@ -89,14 +89,14 @@ void SolverController::restart_if_needed()
         return; // names, colours, visibility or the pace changed: nothing for the solver
     if (!shape_edited && same_run(sets, settings, running_->sets, running_->solver, true))
     {
-        // Only the pins moved: new right-hand sides, the run goes on.
-        const Recipe recipe =
-            build_recipe(sets, settings, document_.mesh, document_.base_positions, 0);
+        // Only the pins moved: new right-hand sides, the run goes on. (The pin sets alone
+        // are read: the recipe's other sets did not change.)
+        const std::optional<HardVertices> hard = pin_constraints(sets, document_.base_positions);
         std::vector<Scalar> targets;
-        for (const Vec3& t : recipe.hard->targets)
+        for (const Vec3& t : hard->targets)
             targets.insert(targets.end(), t.begin(), t.end());
         if (targets.empty()) // no set has targets any more: the pins' base places
-            for (const Index vertex : recipe.hard->vertices)
+            for (const Index vertex : hard->vertices)
                 for (size_t a = 0; a < 3; ++a)
                     targets.push_back(
                         document_.base_positions[3 * static_cast<size_t>(vertex) + a]);

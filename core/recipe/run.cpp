@@ -87,8 +87,7 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
     record(session.energy());
     if (tracked && result.iterations > 0)
     {
-        result.stopped_by_tolerance =
-            rule.converged_at(session.residual(session.positions()).gradient);
+        result.stopped_by_tolerance = rule.converged_at(session.gradient(session.positions()));
         result.gradients.push_back(rule.relative());
     }
     return result;

@@ -351,6 +351,13 @@ void Session::assemble_rhs(std::span<const Scalar> x)
     terms_->add_rhs(x, free_, system_.rhs);
 }
 
+Scalar Session::gradient(std::span<const Scalar> x)
+{
+    check_size(x, "gradient");
+    assemble_rhs(x);
+    return rhs_norm(system_, free_);
+}
+
 Session::Residual Session::residual(std::span<const Scalar> x)
 {
     check_size(x, "residual");

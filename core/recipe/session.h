@@ -165,6 +165,8 @@ public:
         Scalar jacobi_displacement = 0;
     };
     Residual residual(std::span<const Scalar> x);
+    //! Residual::gradient alone: one assembly of r, no displacements.
+    Scalar gradient(std::span<const Scalar> x);
     //! \brief Why the recipe's energy has no unique minimizer over the free vertices: the
     //! first free part (connected through edges) that nothing holds (no fixed vertex next
     //! to it, no anchor, no constrained face), named by its size and its lowest vertex in
