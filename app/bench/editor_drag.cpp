@@ -391,7 +391,7 @@ void price_move(EditorSession& s, Minimizer& m)
          }},
         {"interface: constraint_problems (the enabled sets copied)",
          [&] { (void)constraint_problems(d.sets, d.solver); }},
-        {"interface: build_recipe (the whole recipe, for the pins' targets)",
+        {"interface: build_recipe (the whole recipe, which a move read before pin_constraints)",
          [&] { (void)build_recipe(d.sets, d.solver, d.mesh, d.base_positions, 0); }},
         {"interface: the sets and settings copied (the run's ShapeRecipe)", [&] { sets = d.sets; }},
         {"interface: the positions copied (once; move_hard_targets copies 3 times)",

@@ -140,11 +140,8 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     if (!run_)
         return;
     Session& session = run_->session();
-    session.set_hard_targets(targets);
-    std::vector<Scalar> x(session.positions().begin(), session.positions().end());
-    session.apply_hard_targets(x);
-    session.set_positions(x);
-    known_energy_.reset(); // new positions at the same step count
+    session.move_pins(targets); // (the free vertices stay: the minimizer on record)
+    known_energy_.reset();      // new positions at the same step count
     energy_due_ = false;
     display_run_ = new_display_run(); // pins may move outside the changing part
     back_.assign(session.positions().begin(), session.positions().end());
@@ -280,6 +277,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         // Each step solves for the minimizer from where it starts: the run stops by run()'s
         // rule on the gradient, after one step (two when rounding leaves some to refine).
         DirectConvergence rule(session.recipe().tolerance);
+        // A pin drag: the minimizer follows the pins without a solve where it can.
+        if (solving_ && session.follow_pins())
+        {
+            done = 1;
+            converged_now = true;
+        }
         for (; done < n && !converged_now; ++done)
         {
             const StepInfo info = run_->step();

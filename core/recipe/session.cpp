@@ -54,6 +54,8 @@ void Session::precompute()
     }
     fused_.reset();
     linear_.reset();
+    minimizer_pins_.clear();
+    pin_responses_.clear();
     terms_.reset(); // (its arrays go before the next one's are built)
     terms_ = std::make_unique<TermSet>(mesh, *topology_, recipe_, fixed, fixed_sets.hard, hard_,
                                        hard_targets_, centre);
@@ -158,6 +160,7 @@ void Session::set_hard_targets(std::span<const Scalar> targets)
     hard_targets_.assign(targets.begin(), targets.end());
     forget_fixed_energy();
     terms_->move_pins(hard_targets_);
+    minimizer_pins_.clear();
 }
 
 void Session::check_size(std::span<const Scalar> x, const char* what) const
@@ -191,6 +194,7 @@ void Session::adopt_positions(std::vector<Scalar>&& x)
 
 void Session::positions_given()
 {
+    minimizer_pins_.clear();
     has_positions_ = true;
     forget_fixed_energy();
     can_revert_ = false;
@@ -213,6 +217,7 @@ StepInfo Session::step()
     if (!has_positions_)
         throw SolverError("Session::step: no positions (call set_positions first)");
     can_revert_ = revert_to_previous_ = false;
+    minimizer_pins_.clear(); // (a direct step records it again)
     if (!fused())
         return general_step(x_);
     const bool taubin = recipe_.method == Method::Taubin;
@@ -337,6 +342,7 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     info.inner_iterations = linear_->add_solution(free_, system_.rhs, x);
     if (guard_)
         info.shortened = guard_jump(*guard_, free_, guard_start_, x);
+    note_minimizer(x, info.shortened);
     if (VolumeConstraint* volume = terms_->volume()) // an implicit step's (only it has one)
         volume->project(x);
     return info;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/energies/position_term.h"
+#include "core/recipe/pin_response.h"
 #include "core/recipe/recipe.h"
 #include "core/recipe/run.h"
 #include "core/recipe/term_set.h"
@@ -81,17 +82,31 @@ public:
     void apply_hard_targets(std::span<Scalar> x) const;
     //! New targets, 3 per vertex of the hard set (in recipe order); right-hand side only.
     void set_hard_targets(std::span<const Scalar> targets);
+    //! \brief A pin drag's move: set_hard_targets, and the kept positions' pins placed at
+    //! the targets. The free vertices stay where they are, and with them the record that
+    //! they are the direct method's minimizer for the pins before (follow_pins).
+    void move_pins(std::span<const Scalar> targets);
+    //! \brief The direct method's minimizer for the pins as they are, from the one a direct
+    //! step left for earlier pins, without a solve: the minimizer is affine in the pins
+    //! (PinResponses; the first move of a group of pins solves for its response, later
+    //! ones are a pass over the free vertices). False, and nothing changed, when the
+    //! session cannot: no minimizer on record (another method, conjugate gradients, a step
+    //! the flip guard shortened, positions set since), the normal term's coupled
+    //! coordinates, or a face the move would turn over; a step then solves.
+    bool follow_pins();
     //! New soft targets, 3 per soft vertex (in soft_vertices() order).
     void set_soft_targets(std::span<const Scalar> targets)
     {
         terms_->set_soft_targets(targets);
         forget_fixed_energy();
+        minimizer_pins_.clear();
     }
     //! New centroid targets, 3 per constrained face (in centroid_faces() order).
     void set_centroid_targets(std::span<const Scalar> targets)
     {
         terms_->set_centroid_targets(targets);
         forget_fixed_energy();
+        minimizer_pins_.clear();
     }
 
     //! One step: assemble r, solve each free vertex's system, choose lambda, move.
@@ -218,6 +233,9 @@ private:
     //! One step of the direct or implicit method: dx_f = A_ff^-1 r_f(x), then the flip
     //! guard (guard_jump; general_step keeps the start) and an implicit step's volume.
     StepInfo direct_step(std::span<Scalar> x);
+    //! After a direct step on x: the minimizer's pins on record when x is the kept
+    //! positions and follow_pins can follow it (pin_response.cpp).
+    void note_minimizer(std::span<const Scalar> x, Index shortened);
     //! The fused step's constant energy parts are stale (new positions or targets).
     void forget_fixed_energy()
     {
@@ -253,6 +271,11 @@ private:
     std::unique_ptr<FusedJacobi> fused_; //!< when fused()
     //! The direct and implicit methods' solver of A_ff
     std::unique_ptr<FreeSystemSolver> linear_;
+    //! The pins' targets (3 each) for which the kept positions are the direct method's
+    //! minimizer (a direct step on them, not shortened, by the factor, of an isotropic
+    //! recipe); empty: none on record
+    std::vector<Scalar> minimizer_pins_;
+    PinResponses pin_responses_;
     std::vector<Scalar> dx_;   //!< 3 #V, zero on non-free vertices
     std::vector<Scalar> x_;    //!< kept positions (set_positions)
     std::vector<Scalar> next_; //!< 3 #V: the fused step's output, when fused()

@@ -122,7 +122,8 @@ int FreeSystemSolver::solve(std::span<Scalar> r)
 {
     if (cholesky_)
     {
-        cholesky_->solve(r, block_ == 3 ? 1 : 3);
+        cholesky_->solve(r, static_cast<int>(static_cast<std::int64_t>(r.size()) /
+                                             std::max<std::int64_t>(cholesky_->size(), 1)));
         return 0;
     }
     // A d = r from d = 0 (a step starts at the current positions, the last solution): one

@@ -599,3 +599,129 @@ TEST_SUITE("direct method")
         }
     }
 }
+
+namespace {
+
+// A 24 x 24 grid of quads, noisy, with a round region of radius 9 free and two groups of
+// pins in it (three near the middle, two further out), under `recipe`'s terms.
+struct Drag
+{
+    Mesh mesh;
+    Recipe recipe;
+    std::vector<Scalar> targets; // 3 per pin, at the rest
+};
+
+Drag drag_case(const std::string& terms)
+{
+    Drag d;
+    d.mesh = test::open_grid(24, 24);
+    test::perturb(d.mesh, 0.05, 3);
+    d.recipe = parse_recipe(terms, "drag.json");
+    d.recipe.method = Method::Direct;
+    d.recipe.region = Region{};
+    const Index row = 25;
+    for (Index v = 0; v < d.mesh.vertex_count(); ++v)
+        if (std::hypot(static_cast<Scalar>(v % row) - 12, static_cast<Scalar>(v / row) - 12) <= 9)
+            d.recipe.region->vertices.push_back(v);
+    const std::vector<Index> pins = {12 * row + 12, 12 * row + 13, 13 * row + 12, 8 * row + 16,
+                                     9 * row + 16};
+    d.recipe.hard = HardVertices{pins, {}};
+    for (const Index v : pins)
+        for (int a = 0; a < 3; ++a)
+            d.targets.push_back(d.mesh.positions[3 * static_cast<size_t>(v) + a]);
+    return d;
+}
+
+// The direct method's minimizer for `targets`, from a session of its own.
+std::vector<Scalar> minimizer_for(const Drag& d, std::span<const Scalar> targets)
+{
+    Recipe r = d.recipe;
+    for (size_t k = 0; k < r.hard->vertices.size(); ++k)
+        r.hard->targets.push_back({targets[3 * k], targets[3 * k + 1], targets[3 * k + 2]});
+    Mesh m = d.mesh;
+    smooth(m, build_topology(m, required_topology(r)), r);
+    return m.positions;
+}
+
+// The three near pins moved by a, the two far ones by b.
+std::vector<Scalar> moved(const Drag& d, const Vec3& a, const Vec3& b)
+{
+    std::vector<Scalar> t = d.targets;
+    for (size_t k = 0; k < 5; ++k)
+        for (int c = 0; c < 3; ++c)
+            t[3 * k + c] += (k < 3 ? a : b)[c];
+    return t;
+}
+
+} // namespace
+
+TEST_SUITE("direct method")
+{
+    TEST_CASE("a pin drag follows the minimizer without a solve: the shape a solve gives, "
+              "group by group, move after move")
+    {
+        for (const char* terms :
+             {R"({"bending": {"mu": 1}})", R"({"soft": {"vertices": "all", "mu": 0.2}})",
+              R"({"falloff": {"radius": 4, "units": "edge_lengths", "around": ["pins"]}})",
+              R"({"bending": {"mu": 1}, "prevent_flips": true})"})
+        {
+            CAPTURE(terms);
+            const Drag d = drag_case(terms);
+            Mesh m = d.mesh;
+            const Topology t = build_topology(m, required_topology(d.recipe));
+            Session s(m, t, d.recipe);
+            s.set_positions(m.positions);
+            run(s);
+            CHECK_FALSE(s.follow_pins()); // nothing moved yet: nothing to follow from
+            for (const auto& [a, b] : std::vector<std::pair<Vec3, Vec3>>{
+                     {{0, 0, 1.5}, {0, 0, 0}}, {{0.2, 0, 2.5}, {0, 0, -1}}, {{0.2, 0, 3}, {0, 0, -1}}})
+            {
+                const std::vector<Scalar> targets = moved(d, a, b);
+                s.move_pins(targets);
+                REQUIRE(s.follow_pins());
+                const std::vector<Scalar> reference = minimizer_for(d, targets);
+                Scalar far = 0;
+                for (size_t k = 0; k < reference.size(); ++k)
+                    far = std::max(far, std::abs(s.positions()[k] - reference[k]));
+                CHECK(far <= 1e-9 * 24); // of the grid's size
+            }
+        }
+    }
+
+    TEST_CASE("a pin drag solves where the minimizer cannot follow the pins")
+    {
+        // The normal term couples the coordinates: no response per group.
+        Drag d = drag_case(R"({"normal": {"faces": "all", "mu": 1, "normals": "initial"}})");
+        Mesh m = d.mesh;
+        const Topology t = build_topology(m, required_topology(d.recipe));
+        Session s(m, t, d.recipe);
+        s.set_positions(m.positions);
+        run(s);
+        s.move_pins(moved(d, {0, 0, 1}, {0, 0, 0}));
+        CHECK_FALSE(s.follow_pins());
+        // New positions since the minimizer: nothing on record.
+        d = drag_case(R"({"bending": {"mu": 1}})");
+        Mesh n = d.mesh;
+        const Topology u = build_topology(n, required_topology(d.recipe));
+        Session plate(n, u, d.recipe);
+        plate.set_positions(n.positions);
+        run(plate);
+        plate.set_positions(n.positions);
+        plate.move_pins(moved(d, {0, 0, 1}, {0, 0, 0}));
+        const std::vector<Scalar> before(plate.positions().begin(), plate.positions().end());
+        CHECK_FALSE(plate.follow_pins());
+        CHECK(std::equal(before.begin(), before.end(), plate.positions().begin()));
+        // A move that would turn faces over, with the flip guard: refused, positions kept
+        // (a guarded step then solves).
+        d = drag_case(R"({"bending": {"mu": 1}, "prevent_flips": true})");
+        Mesh g = d.mesh;
+        const Topology w = build_topology(g, required_topology(d.recipe));
+        Session guarded(g, w, d.recipe);
+        guarded.set_positions(g.positions);
+        run(guarded);
+        guarded.move_pins(moved(d, {6, 0, 0}, {-6, 0, 0})); // across each other, in the plane
+        const std::vector<Scalar> kept(guarded.positions().begin(), guarded.positions().end());
+        CHECK_FALSE(guarded.follow_pins());
+        CHECK(std::equal(kept.begin(), kept.end(), guarded.positions().begin()));
+    }
+}
