@@ -247,6 +247,10 @@ void print_drag(const DragSeries& d, std::optional<double> first_ms, const Solve
         "solver steps per move %.1f; restarts during the drag: %d\n",
         o.tolerance, o.budget_ms, static_cast<long>(within), n, d.missed,
         n ? double(d.solves) / double(n) : 0.0, d.restarts);
+    std::printf("each move, in order, ms:");
+    for (const double ms : d.latency)
+        std::printf(" %.0f", ms);
+    std::printf("\n");
 }
 
 //! A move of the Jacobi peer: how far its shapes were from the move's minimizer, and when.

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
+#include <cmath>
 
 #include "core/parallel/parallel.h"
 #include "core/recipe/session.h"
@@ -42,14 +42,27 @@ void PinResponses::follow(std::span<const Scalar> from, std::span<const Scalar> 
                           std::span<const Index> free, const RightHandSide& rhs,
                           FreeSystemSolver& solver, std::span<Scalar> x)
 {
-    // The pins grouped by how far they moved (a drag moves a set by one vector).
-    std::map<std::array<Scalar, 3>, std::vector<Index>> groups;
+    // The pins grouped by how far they moved (a drag moves a set by one vector): the same
+    // vector to 1e-9 of its length, since a set's targets moved by one offset differ from
+    // their old ones by it only to rounding.
+    std::vector<std::pair<std::array<Scalar, 3>, std::vector<Index>>> groups;
     for (size_t k = 0; 3 * k < to.size(); ++k)
     {
         const std::array<Scalar, 3> d = {to[3 * k] - from[3 * k], to[3 * k + 1] - from[3 * k + 1],
                                          to[3 * k + 2] - from[3 * k + 2]};
-        if (d != std::array<Scalar, 3>{0, 0, 0})
-            groups[d].push_back(static_cast<Index>(k));
+        if (d == std::array<Scalar, 3>{0, 0, 0})
+            continue;
+        const auto same = [&](const auto& g) {
+            const std::array<Scalar, 3>& e = g.first;
+            const Scalar length = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+            return std::abs(d[0] - e[0]) + std::abs(d[1] - e[1]) + std::abs(d[2] - e[2]) <=
+                   1e-9 * length;
+        };
+        const auto g = std::find_if(groups.begin(), groups.end(), same);
+        if (g == groups.end())
+            groups.push_back({d, {static_cast<Index>(k)}});
+        else
+            g->second.push_back(static_cast<Index>(k));
     }
     for (const auto& [d, pins] : groups)
     {
