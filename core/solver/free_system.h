@@ -47,8 +47,9 @@ public:
     FreeSystemSolver& operator=(const FreeSystemSolver&) = delete;
 
     //! Replaces r (3 per free vertex: by vertex with blocks, else by coordinate, x then y
-    //! then z; or any count of A's columns one after the other) by d = A^-1 r. Conjugate gradients start from d = 0 and stop at a residual
-    //! of 1e-13 of r's: the minimizer to rounding. Returns their iterations (0: the factor).
+    //! then z; or any count of A's columns one after the other) by d = A^-1 r. Conjugate gradients
+    //! start from d = 0 and stop at a residual of 1e-13 of r's: the minimizer to rounding. Returns
+    //! their iterations (0: the factor).
     int solve(std::span<Scalar> r);
     //! x_f += A^-1 r_f, r and x of 3 #V values read and written at `free` (A's vertices, in
     //! A's order); the same as solve(). Allocates nothing after the first call.

@@ -657,8 +657,9 @@ std::vector<Scalar> moved(const Drag& d, const Vec3& a, const Vec3& b)
 
 TEST_SUITE("direct method")
 {
-    TEST_CASE("a pin drag follows the minimizer without a solve: the shape a solve gives, "
-              "group by group, move after move")
+    TEST_CASE(
+        "a pin drag follows the minimizer without a solve: the shape a solve gives, "
+        "group by group, move after move")
     {
         for (const char* terms :
              {R"({"bending": {"mu": 1}})", R"({"soft": {"vertices": "all", "mu": 0.2}})",
@@ -673,8 +674,10 @@ TEST_SUITE("direct method")
             s.set_positions(m.positions);
             run(s);
             CHECK_FALSE(s.follow_pins()); // nothing moved yet: nothing to follow from
-            for (const auto& [a, b] : std::vector<std::pair<Vec3, Vec3>>{
-                     {{0, 0, 1.5}, {0, 0, 0}}, {{0.2, 0, 2.5}, {0, 0, -1}}, {{0.2, 0, 3}, {0, 0, -1}}})
+            for (const auto& [a, b] :
+                 std::vector<std::pair<Vec3, Vec3>>{{{0, 0, 1.5}, {0, 0, 0}},
+                                                    {{0.2, 0, 2.5}, {0, 0, -1}},
+                                                    {{0.2, 0, 3}, {0, 0, -1}}})
             {
                 const std::vector<Scalar> targets = moved(d, a, b);
                 s.move_pins(targets);
