@@ -64,9 +64,10 @@ void PinResponses::follow(std::span<const Scalar> from, std::span<const Scalar> 
         else
             g->second.push_back(static_cast<Index>(k));
     }
-    for (const auto& [d, pins] : groups)
+    for (const auto& group : groups)
     {
-        const Response& r = response(pins, from, x, free.size(), rhs, solver);
+        const std::array<Scalar, 3>& d = group.first; // (a lambda cannot take a binding)
+        const Response& r = response(group.second, from, x, free.size(), rhs, solver);
         parallel_for(static_cast<Index>(free.size()), [&](Index k) {
             Scalar* xi = &x[3 * static_cast<size_t>(free[k])];
             for (int a = 0; a < 3; ++a)
