@@ -302,7 +302,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             step_rule_.emplace(tolerance);
             step_rule_epoch_ = rule_epoch;
         }
-        for (; done < n; ++done)
+        // Without the energy from the sweep nor a tolerance, the steps alone: the plot's
+        // point is the frame's last positions' (below), not a pass per step.
+        const bool per_step = session.fuses_energy() || tracked;
+        for (; done < n && !per_step; ++done)
+            session.step();
+        for (; done < n && per_step; ++done)
         {
             TermEnergies start;
             const StepInfo info = session.step(start, tracked);
@@ -323,6 +328,8 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             converged_now =
                 tracked && step_rule_->converged_at(session.gradient(session.positions()));
         }
+        if (!per_step && done > 0)
+            known = EnergySample{first + done, run_->energy()};
         if (tracked)
             relative_gradient = step_rule_->relative();
     }
