@@ -81,13 +81,15 @@ read -r px py < <(widget_at "steps/frame")
 drag "$px" "$py" $((px + 150)) "$py" 4
 wait_line "command solver settings: ok" $((settings + 2))
 key space
-wait_line "run stopped"
+# (Runs to the minimizer: thousands of Jacobi steps; a longer guard against a hang, on a
+# machine that runs other window tests beside this one.)
+wait_limit=$((3 * wait_limit)) wait_line "run stopped"
 read -r lx ly < <(widget_at "lambda")
 settings=$(count_lines "command solver settings: ok")
 drag "$lx" "$ly" $((lx - 40)) "$ly" 1
 wait_line "command solver settings: ok" $((settings + 1))
 key space
-wait_line "run stopped" 2
+wait_limit=$((3 * wait_limit)) wait_line "run stopped" 2
 wait_line "command play/pause: ok" 2
 stopped() { sed -n 's/^run stopped: \([0-9]*\) steps.*/\1/p' "$log" | sed -n "$1p"; }
 first=$(stopped 1) second=$(stopped 2)
