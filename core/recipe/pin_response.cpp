@@ -87,7 +87,10 @@ void Session::note_minimizer(std::span<const Scalar> x, Index shortened)
     {
         minimizer_pins_.clear(); // the pins where they are (at their targets, if any)
         for (const Index v : hard_)
-            minimizer_pins_.insert(minimizer_pins_.end(), &x_[3 * v], &x_[3 * v + 3]);
+            {
+            const Scalar* xv = x_.data() + 3 * static_cast<size_t>(v); // (v may be the last)
+            minimizer_pins_.insert(minimizer_pins_.end(), xv, xv + 3);
+        }
     }
 }
 
