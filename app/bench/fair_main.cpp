@@ -358,6 +358,7 @@ private:
         // decide the steps to the minimizer, twice as fast as the default 0.5.
         jacobi.lambda = 1;
         const std::vector<Scalar> second_targets = bench::FairCase::flat(fair_case.second_targets);
+        const std::vector<Scalar> first_targets = bench::FairCase::flat(fair_case.first_targets);
         std::vector<Scalar> start(work.positions);
         // The measure of every result: |r| and the Jacobi displacement at the free vertices,
         // with the pins at their first targets.
@@ -442,6 +443,48 @@ private:
             if (!(result.gradients.back() <= 1e-9))
                 failures_.push_back("the direct method stopped at a relative gradient of " +
                                     std::to_string(result.gradients.back()));
+
+            // A pin drag, as the editor's M tool and a script's Session move pins: each
+            // move's minimizer followed from the last one's (Session::follow_pins: the
+            // first move of this group of pins solves for its response, later ones reuse
+            // it). Two more moves by the step from the first targets to the second.
+            for (int move = 1; move <= 2; ++move)
+            {
+                std::vector<Scalar> targets = second_targets;
+                for (size_t k = 0; k < targets.size(); ++k)
+                    targets[k] += move * (second_targets[k] - first_targets[k]);
+                t = Clock::now();
+                session->move_pins(targets);
+                const bool followed = session->follow_pins();
+                const double seconds = seconds_since(t);
+                figure(move == 1 ? "MeshFair direct: pin drag, first move (its response solved)"
+                                 : "MeshFair direct: pin drag, next move (the response kept)",
+                       "s")
+                    .values.push_back(seconds);
+                const Session::Residual at = session->residual(session->positions());
+                figure("MeshFair direct: pin drag, relative gradient", "")
+                    .values.push_back(at.gradient / resolve.gradient);
+                if (!followed)
+                    failures_.push_back("the pin drag's minimizer was not followed");
+            }
+
+            // A weight changed (a slider): the same pattern, so the session factors again
+            // on the analysis it keeps, then solves.
+            t = Clock::now();
+            session->set_recipe(recipe);
+            x = session->release_positions(); // the pins back at the recipe's targets
+            session->apply_hard_targets(x);
+            session->adopt_positions(std::move(x));
+            const SmoothResult reweighted = meshfair::run(*session);
+            figure("MeshFair direct: a weight changed (analysis kept), to the result", "s")
+                .values.push_back(seconds_since(t));
+            if (session->factorization()->stats().factorizations != 2 ||
+                !(reweighted.gradients.back() <= 1e-9))
+                failures_.push_back(
+                    "a weight's change did not keep the analysis (" +
+                    std::to_string(session->factorization()->stats().factorizations) +
+                    " factorizations on it), or stopped at a relative gradient of " +
+                    std::to_string(reweighted.gradients.back()));
             session.reset();
 
             // 2. MeshFair's conjugate gradients (no factor), to the same tolerance.

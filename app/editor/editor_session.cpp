@@ -294,6 +294,9 @@ void EditorSession::prepare_ui()
         }
         if (trace_ != nullptr && !st.error.empty())
             std::fprintf(trace_, "solver failed: %s\n", st.error.c_str());
+        if (trace_ != nullptr && st.factor_ms > 0)
+            std::fprintf(trace_, "solver: factored%s\n",
+                         st.analysis_kept ? " on the analysis kept" : " after its analysis");
         if (trace_ != nullptr && !st.no_minimizer.empty())
             std::fprintf(trace_, "solver: no minimizer: %s\n", st.no_minimizer.c_str());
         state_.run_notes = solver_.notes();

@@ -43,6 +43,11 @@ struct SolverStatus
     std::string no_minimizer;
     double step_ms = 0;               //!< the last frame's steps, on the worker
     double precompute_ms = 0;         //!< the last precomputation
+    //! Its factorization's analysis and numeric factorization (0 without a factor), and
+    //! whether the analysis was the run before's, kept because only weights changed.
+    double analyse_ms = 0;
+    double factor_ms = 0;
+    bool analysis_kept = false;
     int restarts = 0;                 //!< precomputations so far
     std::uint64_t energy_version = 0; //!< changes of the energy curve so far
 };

@@ -64,11 +64,11 @@ Topology checked(Topology topology, const Mesh& mesh, const Recipe& recipe)
 } // namespace
 
 LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
-                         Topology topology)
+                         Topology topology, std::unique_ptr<SparseCholesky> analysed)
     : order_(without_inverses(std::move(order))),
       mesh_(std::move(renumbered_mesh)),
       topology_(checked(std::move(topology), mesh_, renumbered_recipe)),
-      session_(mesh_, topology_, renumbered_recipe, order_.vertex_order)
+      session_(mesh_, topology_, renumbered_recipe, order_.vertex_order, std::move(analysed))
 {
     session_.apply_hard_targets(mesh_.positions);
     session_.adopt_positions(std::move(mesh_.positions));

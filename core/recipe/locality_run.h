@@ -36,10 +36,12 @@ public:
     //! recipe of the same mesh (the editor's, at each dab of the smoothing brush) takes from
     //! the run before it (take_topology) instead of building it again. The same bits as the
     //! constructor above.
+    //! `analysed`: the run before's factorization (session().take_factorization()), whose
+    //! analysis the session keeps when only weights changed (a slider).
     //! \pre topology is build_topology(renumbered_mesh, required_topology(renumbered_recipe)).
     //! \throw SolverError when its counts or parts are not those (what can be checked cheaply).
     LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
-                Topology topology);
+                Topology topology, std::unique_ptr<SparseCholesky> analysed = nullptr);
 
     //! One step on the kept positions.
     StepInfo step() { return session_.step(); }

@@ -16,19 +16,19 @@
 namespace meshfair {
 
 Session::Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe,
-                 std::span<const Index> file_vertex)
+                 std::span<const Index> file_vertex, std::unique_ptr<SparseCholesky> analysed)
     : mesh_(&mesh), topology_(&topology), file_vertex_(file_vertex), recipe_(recipe)
 {
-    precompute();
+    precompute(std::move(analysed));
 }
 
 void Session::set_recipe(const Recipe& recipe)
 {
     recipe_ = recipe;
-    precompute();
+    precompute(take_factorization());
 }
 
-void Session::precompute()
+void Session::precompute(std::unique_ptr<SparseCholesky> analysed)
 {
     check_recipe(recipe_, *mesh_); // before the sets are read
     ++precompute_count_;
@@ -115,7 +115,7 @@ void Session::precompute()
         next_ = {};
     }
     if (solves_linear_system(recipe_.method))
-        linear_ = terms_->factor(free_, file_vertex_, notes_);
+        linear_ = terms_->factor(free_, file_vertex_, notes_, std::move(analysed));
     else if (recipe_.tolerance > 0 && recipe_.method == Method::Taubin)
         notes_.push_back(std::string("tolerance: ") + kTaubinHasNoMinimizer +
                          ", so the tolerance may never stop them");

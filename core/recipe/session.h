@@ -67,13 +67,18 @@ public:
     //! \throw RecipeError if the recipe does not fit the mesh.
     //! `file_vertex`: the file's number of each vertex, for the messages that name one (a
     //! LocalityRun's order; empty: the mesh's own numbers); it must outlive the session.
+    //! `analysed`: a factorization handed over by an earlier session of this mesh
+    //! (take_factorization): when this recipe's system has its pattern (only weights
+    //! differ), its analysis is kept and only the numeric factorization is done.
     Session(const Mesh& mesh, const Topology& topology, const Recipe& recipe,
-            std::span<const Index> file_vertex = {});
+            std::span<const Index> file_vertex = {},
+            std::unique_ptr<SparseCholesky> analysed = nullptr);
     // The terms point at one another (joint mode, bilateral weights): not copied, not moved.
     Session(const Session&) = delete;
     Session& operator=(const Session&) = delete;
 
-    //! Replaces the recipe and precomputes again.
+    //! Replaces the recipe and precomputes again. The direct method's analysis is kept
+    //! when the new system has the same pattern (a weight changed): factorization only.
     void set_recipe(const Recipe& recipe);
     const Recipe& recipe() const { return recipe_; }
 
@@ -197,6 +202,12 @@ public:
     {
         return linear_ ? linear_->factorization() : nullptr;
     }
+    //! Hands the factorization over to a session of another recipe of this mesh (its
+    //! constructor's `analysed`); this session cannot step afterwards. nullptr without one.
+    std::unique_ptr<SparseCholesky> take_factorization()
+    {
+        return linear_ ? linear_->take_factorization() : nullptr;
+    }
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
     bool conjugate_gradients() const { return linear_ && linear_->conjugate_gradients(); }
@@ -216,7 +227,7 @@ public:
     int precompute_count() const { return precompute_count_; }
 
 private:
-    void precompute();
+    void precompute(std::unique_ptr<SparseCholesky> analysed);
     //! The Jacobi blocks of the normal term at the current normals, inverted.
     void invert_blocks();
     //! True when step() can be fused: the Jacobi method (or Taubin's, two Jacobi steps)

@@ -432,7 +432,8 @@ SymmetricMatrix TermSet::free_hessian(std::span<const Index> free, bool blocks, 
 
 std::unique_ptr<FreeSystemSolver> TermSet::factor(std::span<const Index> free,
                                                   std::span<const Index> file_vertex,
-                                                  std::vector<std::string>& notes) const
+                                                  std::vector<std::string>& notes,
+                                                  std::unique_ptr<SparseCholesky> analysed) const
 {
     // With the normal term the coordinates couple (u u^T): one system of 3 #free unknowns.
     // Without it the matrix is the same for x, y and z: #free unknowns, 3 right-hand sides.
@@ -451,7 +452,8 @@ std::unique_ptr<FreeSystemSolver> TermSet::factor(std::span<const Index> free,
     {
         return std::make_unique<FreeSystemSolver>(a, blocks ? 3 : 1,
                                                   recipe.method == Method::ConjugateGradient,
-                                                  recipe.factor_budget_mb * 1e6, notes);
+                                                  recipe.factor_budget_mb * 1e6, notes,
+                                                  std::move(analysed));
     }
     catch (const NotPositiveDefiniteError& e)
     {

@@ -104,9 +104,12 @@ public:
     //! factor, when they do.
     //! \throw RecipeError when A_ff has no inverse: a free part that nothing holds (named as
     //! unheld_part names it) or weights too far apart for double precision.
+    //! `analysed`: an earlier system's factorization, whose analysis is kept when this
+    //! system has its pattern (FreeSystemSolver).
     std::unique_ptr<FreeSystemSolver> factor(std::span<const Index> free,
                                              std::span<const Index> file_vertex,
-                                             std::vector<std::string>& notes) const;
+                                             std::vector<std::string>& notes,
+                                             std::unique_ptr<SparseCholesky> analysed) const;
     //! dx^T A dx over the position terms (the exact line search).
     Scalar quadratic(std::span<const Scalar> dx) const;
     //! block_i += the normal term's 3x3 Jacobi block, for each i in `vertices`.

@@ -34,7 +34,8 @@ double budget_or_half_memory(double budget)
 } // namespace
 
 FreeSystemSolver::FreeSystemSolver(const SymmetricMatrix& a, int block, bool conjugate_gradients,
-                                   double budget_bytes, std::vector<std::string>& notes)
+                                   double budget_bytes, std::vector<std::string>& notes,
+                                   std::unique_ptr<SparseCholesky> analysed)
     : block_(block)
 {
     if (conjugate_gradients)
@@ -47,10 +48,13 @@ FreeSystemSolver::FreeSystemSolver(const SymmetricMatrix& a, int block, bool con
         notes.push_back(why + ": solved by conjugate gradients instead");
         use_conjugate_gradients(a);
     };
-    cholesky_ = std::make_unique<SparseCholesky>();
+    const bool reuse = analysed != nullptr && analysed->analysed_for(a);
+    cholesky_ = reuse ? std::move(analysed) : std::make_unique<SparseCholesky>();
+    analysed.reset(); // (a factor of another pattern goes before this one is made)
     try
     {
-        cholesky_->analyse(a);
+        if (!reuse)
+            cholesky_->analyse(a);
     }
     catch (const SolverError& e)
     {

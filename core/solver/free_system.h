@@ -40,9 +40,14 @@ public:
     //! `block`: 3 when the unknowns are 3 per vertex (A has 3x3 blocks), 1 when A is the
     //! same for the three coordinates (one unknown per vertex, three right-hand sides).
     //! `budget_bytes`: the largest factor taken (0: half the physical memory).
+    //! `analysed`: a factorization kept from an earlier system (take_factorization); when A
+    //! has its pattern (a weight changed, not the free set nor the terms), A is factored on
+    //! its analysis, which is not done again (libigl's min_quad_with_fixed's precompute
+    //! kept across a value change).
     //! \throw NotPositiveDefiniteError when A is not positive definite in doubles.
     FreeSystemSolver(const SymmetricMatrix& a, int block, bool conjugate_gradients,
-                     double budget_bytes, std::vector<std::string>& notes);
+                     double budget_bytes, std::vector<std::string>& notes,
+                     std::unique_ptr<SparseCholesky> analysed = nullptr);
     FreeSystemSolver(const FreeSystemSolver&) = delete;
     FreeSystemSolver& operator=(const FreeSystemSolver&) = delete;
 
@@ -56,6 +61,9 @@ public:
     int add_solution(std::span<const Index> free, std::span<const Scalar> r, std::span<Scalar> x);
     //! The factor, or nullptr when conjugate gradients solve.
     const SparseCholesky* factorization() const { return cholesky_.get(); }
+    //! Hands the factor over (for the next system: see the constructor); this solver
+    //! cannot solve afterwards. nullptr when conjugate gradients solve.
+    std::unique_ptr<SparseCholesky> take_factorization() { return std::move(cholesky_); }
     bool conjugate_gradients() const { return cg_.has_value(); }
 
 private:

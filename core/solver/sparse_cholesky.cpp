@@ -136,6 +136,29 @@ void check_matrix(const SymmetricMatrix& a, const char* what)
         throw SolverError(std::string("SparseCholesky::") + what + ": malformed matrix");
 }
 
+// A digest of the pattern (the column starts and the rows), so that a session keeps no
+// copy of it (40 bytes a vertex at the sizes where skipping the analysis matters) to tell
+// whether a new matrix has it. FNV-1a over 64-bit words, each mixed first (splitmix64's
+// finalizer) so that small index differences spread over every bit.
+std::uint64_t pattern_digest(const SymmetricMatrix& a)
+{
+    std::uint64_t h = 0xcbf29ce484222325ULL;
+    const auto add = [&h](std::uint64_t w) {
+        w ^= w >> 30;
+        w *= 0xbf58476d1ce4e5b9ULL;
+        w ^= w >> 27;
+        w *= 0x94d049bb133111ebULL;
+        w ^= w >> 31;
+        h = (h ^ w) * 0x100000001b3ULL;
+    };
+    add(static_cast<std::uint64_t>(a.size));
+    for (const std::int64_t c : a.column_start)
+        add(static_cast<std::uint64_t>(c));
+    for (const std::int64_t r : a.row)
+        add(static_cast<std::uint64_t>(r));
+    return h;
+}
+
 } // namespace
 
 SparseCholesky::SparseCholesky() : cholmod_(std::make_unique<Cholmod>())
@@ -176,6 +199,16 @@ void SparseCholesky::analyse(const SymmetricMatrix& a)
                                     std::to_string(c.status) + ")");
     stats_.analyse_seconds = seconds_since(start);
     stats_.factor_nonzeros = c.lnz;
+    pattern_digest_ = pattern_digest(a);
+    pattern_nonzeros_ = static_cast<std::int64_t>(a.row.size());
+}
+
+bool SparseCholesky::analysed_for(const SymmetricMatrix& a) const
+{
+    return cholmod_->factor != nullptr && a.size == size_ &&
+           static_cast<std::int64_t>(a.row.size()) == pattern_nonzeros_ &&
+           a.column_start.size() == static_cast<size_t>(a.size) + 1 &&
+           pattern_digest(a) == pattern_digest_;
 }
 
 bool SparseCholesky::factor(const SymmetricMatrix& a)
@@ -189,6 +222,8 @@ bool SparseCholesky::factor(const SymmetricMatrix& a)
     cholmod_sparse s = view(a);
     cholmod_->library.factorize(&s, cholmod_->factor, &c);
     stats_.factor_seconds = seconds_since(start);
+    if (stats_.factorizations++ > 0)
+        stats_.analyse_seconds = 0; // this matrix's analysis: none, the pattern's was kept
     if (c.status == CHOLMOD_NOT_POSDEF)
         return false;
     if (c.status < CHOLMOD_OK)

@@ -27,8 +27,12 @@ struct SymmetricMatrix
 //! What a factorization cost, for reports and the memory budget.
 struct FactorStats
 {
+    //! The analysis's time, 0 for a factorization on a kept analysis.
     double analyse_seconds = 0;
     double factor_seconds = 0;
+    //! How many factorizations the analysis has served (1 after the first factor(); more
+    //! when a new matrix of the same pattern, a weight changed, was factored on it).
+    int factorizations = 0;
     //! Nonzeros of the factor L (CHOLMOD's estimate after the analysis, then its count).
     double factor_nonzeros = 0;
     //! Bytes the factor takes: its values and its row indices (8 + 8 each).
@@ -61,6 +65,9 @@ public:
     bool factor(const SymmetricMatrix& a);
     //! True after a factor() that succeeded.
     bool factored() const { return factored_; }
+    //! True when `a` has the sparsity pattern given to analyse() (its size, and the rows of
+    //! each column, compared by a 64-bit digest): factor(a) may then skip the analysis.
+    bool analysed_for(const SymmetricMatrix& a) const;
     //! Solves A X = B in place for `columns` right-hand sides stored one after the other
     //! (column-major: b holds size * columns values).
     //! \throw SolverError without a factorization or on a size mismatch.
@@ -74,6 +81,8 @@ private:
     std::int64_t size_ = 0;
     bool factored_ = false;
     FactorStats stats_;
+    std::uint64_t pattern_digest_ = 0; //!< of the analysed pattern (analysed_for)
+    std::int64_t pattern_nonzeros_ = -1;
 };
 
 } // namespace meshfair

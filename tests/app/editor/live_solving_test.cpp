@@ -259,6 +259,27 @@ TEST_SUITE("Live solving")
         CHECK(distance(cli_positions(b.path, recipe), file_order_mesh(s.document()).positions) <=
               1e-9 * diagonal);
 
+        // A weight changed (the thin plate's slider): the run restarts on the analysis kept,
+        // factoring only, and the shape is still the command line's.
+        CHECK_FALSE(s.solver_status().analysis_kept);
+        SolverSettings stiffer = s.document().solver;
+        stiffer.bending->mu = 4.0;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{stiffer})); // (direct: solved at once)
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(s.solver_status().restarts == restarts + 1);
+        CHECK(s.solver_status().analysis_kept);
+        CHECK(s.solver_status().analyse_ms == 0);
+        CHECK(s.solver_status().factor_ms > 0);
+        const fs::path stiffer_recipe = dir / "stiffer.json";
+        REQUIRE(s.dispatch(cmd::ExportRecipe{stiffer_recipe.string()}));
+        // (The command line solves from the base, the editor from the moved pins' shape: the
+        // same minimizer, rounded apart.)
+        CHECK(distance(cli_positions(b.path, stiffer_recipe),
+                       file_order_mesh(s.document()).positions) <= 1e-9 * diagonal);
+        REQUIRE(s.dispatch(cmd::Undo{})); // the weight
+        s.settle_solver();
+
         // Undo of the move: the pins go back and the minimizer with them.
         REQUIRE(s.dispatch(cmd::Undo{}));
         s.settle_solver();

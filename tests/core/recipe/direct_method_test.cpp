@@ -7,6 +7,7 @@
 // factorization; the same bits for any thread count; a free part nothing holds refused.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <string>
 
@@ -351,6 +352,52 @@ TEST_SUITE("direct method")
         check_near(std::vector<Scalar>(kept.begin(), kept.end()),
                    test::direct_minimizer(m, t, moved, from, free), diagonal);
         CHECK(session.precompute_count() == 1);
+    }
+
+    TEST_CASE("a weight changed keeps the analysis: the factor of a fresh session, bit for bit")
+    {
+        for (const auto& entry : test::small_mesh_kinds())
+        {
+            const std::string kind = entry.first;
+            const Mesh& m = entry.second;
+            CAPTURE(kind);
+            const Topology t = build_topology(m);
+            Recipe r;
+            r.method = Method::Direct;
+            r.bending = Bending{1.0, 0.25};
+            r.hard = HardVertices{{0}, {}};
+            r.soft = SoftVertices{{false, test::stride_indices(m.vertex_count(), 3, 1)}, 0.5, {}};
+            Session session(m, t, r);
+            REQUIRE(session.factorization() != nullptr);
+            // The bending weight and the anchors' weight change: the same pattern.
+            Recipe heavier = r;
+            heavier.bending->mu = 3.0;
+            heavier.soft->mu = 2.0;
+            session.set_recipe(heavier);
+            REQUIRE(session.factorization() != nullptr);
+            CHECK(session.factorization()->stats().factorizations == 2);
+            CHECK(session.factorization()->stats().analyse_seconds == 0);
+            session.set_positions(m.positions);
+            run(session);
+            Session fresh(m, t, heavier);
+            CHECK(fresh.factorization()->stats().factorizations == 1);
+            fresh.set_positions(m.positions);
+            run(fresh);
+            CHECK(std::ranges::equal(session.positions(), fresh.positions()));
+            // Another free set is another pattern: analysed afresh.
+            Recipe fewer = heavier;
+            fewer.hard->vertices.push_back(2); // (not a soft one: those are 1, 4, 7, ...)
+            session.set_recipe(fewer);
+            CHECK(session.factorization()->stats().factorizations == 1);
+            // A session made with another's factorization keeps its analysis too.
+            Session handed(m, t, r, {}, session.take_factorization());
+            CHECK(handed.factorization()->stats().factorizations == 1); // another pattern
+            Session again(m, t, heavier, {}, handed.take_factorization());
+            CHECK(again.factorization()->stats().factorizations == 2);
+            again.set_positions(m.positions);
+            run(again);
+            CHECK(std::ranges::equal(again.positions(), fresh.positions()));
+        }
     }
 
     TEST_CASE("the same bits for 1, 2 and 3 threads")

@@ -104,6 +104,34 @@ TEST_SUITE("SparseCholesky")
         CHECK_THROWS_AS(cholesky.solve(b, 1), SolverError);
     }
 
+    TEST_CASE("a matrix of the analysed pattern is told from one of another")
+    {
+        SparseCholesky cholesky;
+        CHECK_FALSE(cholesky.analysed_for(shifted_path(10, 1))); // nothing analysed
+        cholesky.analyse(shifted_path(10, 1));
+        CHECK(cholesky.analysed_for(shifted_path(10, 1)));
+        CHECK(cholesky.analysed_for(shifted_path(10, 7))); // other values: the same pattern
+        CHECK_FALSE(cholesky.analysed_for(shifted_path(11, 1)));
+        // The same size and count of entries, one row moved: (0, 2) in place of (1, 2).
+        SymmetricMatrix moved = shifted_path(10, 1);
+        REQUIRE(moved.row[moved.column_start[2]] == 1);
+        moved.row[moved.column_start[2]] = 0;
+        CHECK_FALSE(cholesky.analysed_for(moved));
+        // One entry more: (0, 2) beside (1, 2).
+        SymmetricMatrix more = shifted_path(10, 1);
+        more.row.insert(more.row.begin() + more.column_start[2], 0);
+        more.value.insert(more.value.begin() + more.column_start[2], 0);
+        for (size_t c = 3; c < more.column_start.size(); ++c)
+            ++more.column_start[c];
+        CHECK_FALSE(cholesky.analysed_for(more));
+        // A factorization on the kept analysis counts as one more, with no analysis time.
+        REQUIRE(cholesky.factor(shifted_path(10, 1)));
+        CHECK(cholesky.stats().factorizations == 1);
+        REQUIRE(cholesky.factor(shifted_path(10, 7)));
+        CHECK(cholesky.stats().factorizations == 2);
+        CHECK(cholesky.stats().analyse_seconds == 0);
+    }
+
     TEST_CASE("misuse is refused: no analysis, a wrong size, a malformed matrix")
     {
         SparseCholesky cholesky;
