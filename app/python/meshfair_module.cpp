@@ -236,11 +236,9 @@ public:
         const std::span<const Scalar> t(targets.data(), static_cast<size_t>(targets.size()));
         if (!std::all_of(t.begin(), t.end(), [](Scalar v) { return std::isfinite(v); }))
             throw InvalidInputError("set_hard_targets: every target coordinate must be finite");
-        Session& session = run_->session();
-        session.set_hard_targets(t);
-        std::vector<Scalar> x(session.positions().begin(), session.positions().end());
-        session.apply_hard_targets(x);
-        session.set_positions(x);
+        // (The kept positions' pins move; the next solve follows the minimizer from the
+        // one it had, without a solve where the pins moved together: Session::follow_pins.)
+        run_->session().move_pins(t);
     }
 
 private:

@@ -36,7 +36,30 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
         // gradient's, relative to the input's.
         DirectConvergence rule(recipe.tolerance);
         record(session.energy());
-        for (int k = 0; k < recipe.iterations; ++k)
+        // After a pin drag's move (Session::move_pins) the minimizer is followed without a
+        // solve where it can be (follow_pins), and judged by the same rule as a step.
+        if (recipe.iterations > 0 && session.can_follow_pins())
+        {
+            const Scalar started = session.gradient(session.positions());
+            if (session.follow_pins())
+            {
+                result.lambdas.push_back(1);
+                result.shortened.push_back(0);
+                result.inner_iterations.push_back(0);
+                ++result.iterations;
+                record(session.energy());
+                const Session::Residual residual = session.residual(session.positions());
+                result.jacobi_displacement = residual.jacobi_displacement;
+                const bool stop = rule.stop_after(started, residual.gradient);
+                result.gradients.push_back(rule.relative());
+                if (stop)
+                {
+                    result.stopped_by_tolerance = true;
+                    return result;
+                }
+            }
+        }
+        for (int k = result.iterations; k < recipe.iterations; ++k)
         {
             const StepInfo info = session.step();
             result.lambdas.push_back(info.lambda);

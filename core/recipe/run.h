@@ -101,6 +101,8 @@ struct SmoothResult
 SmoothResult run(Session& session, std::span<Scalar> x,
                  const std::function<void(int, const TermEnergies&)>& on_step = {});
 //! The same on the session's kept positions (set_positions or adopt_positions first).
+//! After Session::move_pins its first step is the direct method's minimizer followed from
+//! the pins before (follow_pins) when it can be, judged by the same rule.
 //! \throw SolverError when the session keeps no positions.
 SmoothResult run(Session& session,
                  const std::function<void(int, const TermEnergies&)>& on_step = {});

@@ -99,6 +99,12 @@ public:
     //! the flip guard shortened, positions set since), the normal term's coupled
     //! coordinates, or a face the move would turn over; a step then solves.
     bool follow_pins();
+    //! True when follow_pins may follow: a minimizer on record for other pins than these.
+    bool can_follow_pins() const
+    {
+        return !minimizer_pins_.empty() && has_positions_ && !hard_targets_.empty() &&
+               minimizer_pins_ != hard_targets_;
+    }
     //! New soft targets, 3 per soft vertex (in soft_vertices() order).
     void set_soft_targets(std::span<const Scalar> targets)
     {

@@ -6,6 +6,7 @@
 #include <dlfcn.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <mutex>
 #include <string>
 #include <type_traits>
@@ -46,7 +47,21 @@ struct CholmodLibrary
     decltype(&cholmod_l_solve) solve = nullptr;
     decltype(&cholmod_l_free_factor) free_factor = nullptr;
     decltype(&cholmod_l_free_dense) free_dense = nullptr;
+    // OpenBLAS's thread count, when the BLAS CHOLMOD loaded is OpenBLAS (else null).
+    void (*set_blas_threads)(int) = nullptr;
+    int blas_threads = 1; //!< its count at load (all cores, or OPENBLAS_NUM_THREADS)
+    bool blas_threads_given = false; //!< OPENBLAS_NUM_THREADS (or OMP_NUM_THREADS) set
 };
+
+// Below this many floating-point operations a factorization runs its BLAS on one thread.
+// OpenBLAS's pthread build keeps a pool of its own beside OpenMP's, and both wait for work
+// by spinning: on small supernodes its threads mostly wait for a core the other pool
+// holds. On the 35k bunny's region (0.14 Gflop, 2 cores) one BLAS thread took the first
+// result from 159 to 90 ms and a re-solve from 32 to 5.5 ms (medians of 7,
+// docs/performance.md); at 1.25M vertices (22 Gflop) the BLAS threads are what makes the
+// factorization parallel. The same matrix always takes the same count, so the bits never
+// depend on which program factors it.
+constexpr double kOneBlasThreadBelowFlops = 2e9;
 
 template <class Function>
 void bind(void* handle, const char* name, Function& f)
@@ -81,6 +96,26 @@ const CholmodLibrary& cholmod_library()
             bind(handle, "cholmod_l_solve", library.solve);
             bind(handle, "cholmod_l_free_factor", library.free_factor);
             bind(handle, "cholmod_l_free_dense", library.free_dense);
+            // The BLAS CHOLMOD loaded with it (Debian's alternatives choose it), if it is
+            // OpenBLAS: its thread count is set per factorization (kOneBlasThreadBelowFlops),
+            // unless the environment sets it.
+            for (const char* blas : {"libblas.so.3", "libopenblas.so.0"})
+                if (void* b = dlopen(blas, RTLD_NOW | RTLD_NOLOAD))
+                {
+                    using Get = int (*)();
+                    const auto get = reinterpret_cast<Get>(dlsym(b, "openblas_get_num_threads"));
+                    library.set_blas_threads =
+                        reinterpret_cast<void (*)(int)>(dlsym(b, "openblas_set_num_threads"));
+                    if (get == nullptr)
+                        library.set_blas_threads = nullptr;
+                    if (library.set_blas_threads != nullptr)
+                    {
+                        library.blas_threads = get();
+                        library.blas_threads_given = std::getenv("OPENBLAS_NUM_THREADS") ||
+                                                     std::getenv("OMP_NUM_THREADS");
+                        break;
+                    }
+                }
         }
         catch (const SolverError& e)
         {
@@ -199,8 +234,18 @@ void SparseCholesky::analyse(const SymmetricMatrix& a)
                                     std::to_string(c.status) + ")");
     stats_.analyse_seconds = seconds_since(start);
     stats_.factor_nonzeros = c.lnz;
+    stats_.factor_flops = c.fl;
     pattern_digest_ = pattern_digest(a);
     pattern_nonzeros_ = static_cast<std::int64_t>(a.row.size());
+}
+
+void SparseCholesky::use_blas_threads() const
+{
+    const CholmodLibrary& library = cholmod_->library;
+    if (library.set_blas_threads != nullptr && !library.blas_threads_given)
+        library.set_blas_threads(stats_.factor_flops < kOneBlasThreadBelowFlops
+                                     ? 1
+                                     : library.blas_threads);
 }
 
 bool SparseCholesky::analysed_for(const SymmetricMatrix& a) const
@@ -220,6 +265,7 @@ bool SparseCholesky::factor(const SymmetricMatrix& a)
     factored_ = false;
     const auto start = std::chrono::steady_clock::now();
     cholmod_sparse s = view(a);
+    use_blas_threads();
     cholmod_->library.factorize(&s, cholmod_->factor, &c);
     stats_.factor_seconds = seconds_since(start);
     if (stats_.factorizations++ > 0)
@@ -256,6 +302,7 @@ void SparseCholesky::solve(std::span<Scalar> b, int columns) const
     rhs.x = b.data();
     rhs.xtype = CHOLMOD_REAL;
     rhs.dtype = CHOLMOD_DOUBLE;
+    use_blas_threads();
     cholmod_dense* x = cholmod_->library.solve(CHOLMOD_A, cholmod_->factor, &rhs, &c);
     if (x == nullptr)
         throw SolverError(c.status == CHOLMOD_OUT_OF_MEMORY

@@ -35,6 +35,8 @@ struct FactorStats
     int factorizations = 0;
     //! Nonzeros of the factor L (CHOLMOD's estimate after the analysis, then its count).
     double factor_nonzeros = 0;
+    //! Floating-point operations of the factorization (CHOLMOD's count from the analysis).
+    double factor_flops = 0;
     //! Bytes the factor takes: its values and its row indices (8 + 8 each).
     double factor_bytes() const { return factor_nonzeros * 16; }
 };
@@ -81,6 +83,8 @@ private:
     std::int64_t size_ = 0;
     bool factored_ = false;
     FactorStats stats_;
+    //! OpenBLAS's threads for this factor: one below kOneBlasThreadBelowFlops, else all.
+    void use_blas_threads() const;
     std::uint64_t pattern_digest_ = 0; //!< of the analysed pattern (analysed_for)
     std::int64_t pattern_nonzeros_ = -1;
 };

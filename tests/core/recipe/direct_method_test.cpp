@@ -738,6 +738,31 @@ TEST_SUITE("direct method")
         }
     }
 
+    TEST_CASE("run() after move_pins follows the minimizer in one step, judged by the rule")
+    {
+        const Drag d = drag_case(R"({"bending": {"mu": 1}})");
+        Mesh m = d.mesh;
+        const Topology t = build_topology(m, required_topology(d.recipe));
+        Session s(m, t, d.recipe);
+        s.set_positions(m.positions);
+        run(s);
+        CHECK_FALSE(s.can_follow_pins()); // the minimizer of these pins already
+        const std::vector<Scalar> targets = moved(d, {0.2, 0, 2}, {0, 0, -1});
+        s.move_pins(targets);
+        REQUIRE(s.can_follow_pins());
+        const SmoothResult result = run(s);
+        CHECK(result.iterations == 1);
+        CHECK(result.stopped_by_tolerance);
+        REQUIRE(result.gradients.size() == 1);
+        CHECK(result.gradients[0] <= 1e-12);
+        CHECK_FALSE(s.can_follow_pins());
+        const std::vector<Scalar> reference = minimizer_for(d, targets);
+        Scalar far = 0;
+        for (size_t k = 0; k < reference.size(); ++k)
+            far = std::max(far, std::abs(s.positions()[k] - reference[k]));
+        CHECK(far <= 1e-9 * 24);
+    }
+
     TEST_CASE("a pin drag solves where the minimizer cannot follow the pins")
     {
         // The normal term couples the coordinates: no response per group.
