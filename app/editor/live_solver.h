@@ -41,8 +41,8 @@ struct SolverStatus
     //! Why the recipe has no unique minimizer (Session::unheld_part), or empty: a run
     //! "until it settles" would only shrink the free part that nothing holds.
     std::string no_minimizer;
-    double step_ms = 0;               //!< the last frame's steps, on the worker
-    double precompute_ms = 0;         //!< the last precomputation
+    double step_ms = 0;       //!< the last frame's steps, on the worker
+    double precompute_ms = 0; //!< the last precomputation
     //! Its factorization's analysis and numeric factorization (0 without a factor), and
     //! whether the analysis was the run before's, kept because only weights changed.
     double analyse_ms = 0;

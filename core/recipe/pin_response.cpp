@@ -87,7 +87,7 @@ void Session::note_minimizer(std::span<const Scalar> x, Index shortened)
     {
         minimizer_pins_.clear(); // the pins where they are (at their targets, if any)
         for (const Index v : hard_)
-            {
+        {
             const Scalar* xv = x_.data() + 3 * static_cast<size_t>(v); // (v may be the last)
             minimizer_pins_.insert(minimizer_pins_.end(), xv, xv + 3);
         }

@@ -450,10 +450,9 @@ std::unique_ptr<FreeSystemSolver> TermSet::factor(std::span<const Index> free,
     const SymmetricMatrix a = free_hessian(free, blocks, implicit ? 1 / recipe.time : 0);
     try
     {
-        return std::make_unique<FreeSystemSolver>(a, blocks ? 3 : 1,
-                                                  recipe.method == Method::ConjugateGradient,
-                                                  recipe.factor_budget_mb * 1e6, notes,
-                                                  std::move(analysed));
+        return std::make_unique<FreeSystemSolver>(
+            a, blocks ? 3 : 1, recipe.method == Method::ConjugateGradient,
+            recipe.factor_budget_mb * 1e6, notes, std::move(analysed));
     }
     catch (const NotPositiveDefiniteError& e)
     {

@@ -49,7 +49,7 @@ struct CholmodLibrary
     decltype(&cholmod_l_free_dense) free_dense = nullptr;
     // OpenBLAS's thread count, when the BLAS CHOLMOD loaded is OpenBLAS (else null).
     void (*set_blas_threads)(int) = nullptr;
-    int blas_threads = 1; //!< its count at load (all cores, or OPENBLAS_NUM_THREADS)
+    int blas_threads = 1;            //!< its count at load (all cores, or OPENBLAS_NUM_THREADS)
     bool blas_threads_given = false; //!< OPENBLAS_NUM_THREADS (or OMP_NUM_THREADS) set
 };
 
@@ -111,8 +111,8 @@ const CholmodLibrary& cholmod_library()
                     if (library.set_blas_threads != nullptr)
                     {
                         library.blas_threads = get();
-                        library.blas_threads_given = std::getenv("OPENBLAS_NUM_THREADS") ||
-                                                     std::getenv("OMP_NUM_THREADS");
+                        library.blas_threads_given =
+                            std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("OMP_NUM_THREADS");
                         break;
                     }
                 }
@@ -243,9 +243,8 @@ void SparseCholesky::use_blas_threads() const
 {
     const CholmodLibrary& library = cholmod_->library;
     if (library.set_blas_threads != nullptr && !library.blas_threads_given)
-        library.set_blas_threads(stats_.factor_flops < kOneBlasThreadBelowFlops
-                                     ? 1
-                                     : library.blas_threads);
+        library.set_blas_threads(
+            stats_.factor_flops < kOneBlasThreadBelowFlops ? 1 : library.blas_threads);
 }
 
 bool SparseCholesky::analysed_for(const SymmetricMatrix& a) const

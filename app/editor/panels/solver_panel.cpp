@@ -286,11 +286,10 @@ void solver_panel(const PanelContext& ui)
     {
         ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
         if (st.factor_ms > 0)
-            ImGui::TextWrapped("prepared in %.0f ms: %s %.0f ms, factored %.0f ms",
-                               st.precompute_ms,
-                               st.analysis_kept ? "the analysis kept (a weight changed)"
-                                                : "analysed",
-                               st.analyse_ms, st.factor_ms);
+            ImGui::TextWrapped(
+                "prepared in %.0f ms: %s %.0f ms, factored %.0f ms", st.precompute_ms,
+                st.analysis_kept ? "the analysis kept (a weight changed)" : "analysed",
+                st.analyse_ms, st.factor_ms);
     }
     // "off", then the heat map's terms in their order.
     const std::span<const EnergyTerm> terms = heat_terms();
