@@ -36,49 +36,31 @@ SmoothResult run(Session& session, const std::function<void(int, const TermEnerg
         // gradient's, relative to the input's.
         DirectConvergence rule(recipe.tolerance);
         record(session.energy());
-        // After a pin drag's move (Session::move_pins) the minimizer is followed without a
-        // solve where it can be (follow_pins), and judged by the same rule as a step.
-        if (recipe.iterations > 0 && session.can_follow_pins())
-        {
-            const Scalar started = session.gradient(session.positions());
-            if (session.follow_pins())
-            {
-                result.lambdas.push_back(1);
-                result.shortened.push_back(0);
-                result.inner_iterations.push_back(0);
-                ++result.iterations;
-                record(session.energy());
-                const Session::Residual residual = session.residual(session.positions());
-                result.jacobi_displacement = residual.jacobi_displacement;
-                const bool stop = rule.stop_after(started, residual.gradient);
-                result.gradients.push_back(rule.relative());
-                if (stop)
-                {
-                    result.stopped_by_tolerance = true;
-                    return result;
-                }
-            }
-        }
-        for (int k = result.iterations; k < recipe.iterations; ++k)
-        {
-            const StepInfo info = session.step();
+        // A step done (info), then the rule on the gradient at the new positions, taken
+        // once: the stopping rule's and the report's Jacobi displacement. True: stop.
+        const auto judge = [&](const StepInfo& info) {
             result.lambdas.push_back(info.lambda);
             result.shortened.push_back(info.shortened);
             result.inner_iterations.push_back(info.inner_iterations);
             ++result.iterations;
             record(session.energy());
-            // r at the new positions, once: the stopping rule's gradient and the report's
-            // Jacobi displacement.
             const Session::Residual residual = session.residual(session.positions());
             result.jacobi_displacement = residual.jacobi_displacement;
-            const bool stop = rule.stop_after(info.gradient, residual.gradient);
+            result.stopped_by_tolerance = rule.stop_after(info.gradient, residual.gradient);
             result.gradients.push_back(rule.relative());
-            if (stop)
-            {
-                result.stopped_by_tolerance = true;
-                break;
-            }
+            return result.stopped_by_tolerance;
+        };
+        // After a pin drag's move (Session::move_pins) the first step follows the minimizer
+        // without a solve where it can (follow_pins): a step of length 1 from the gradient
+        // where the pins left the positions.
+        if (recipe.iterations > 0 && session.can_follow_pins())
+        {
+            const Scalar started = session.gradient(session.positions());
+            if (session.follow_pins() && judge(StepInfo{1, 0, started, 0}))
+                return result;
         }
+        for (bool stop = false; !stop && result.iterations < recipe.iterations;)
+            stop = judge(session.step());
         return result;
     }
     // Steps (Jacobi, Taubin's, gradient descent): each step gives the energy and, with a
