@@ -126,6 +126,17 @@ void Session::precompute(std::unique_ptr<SparseCholesky> analysed)
                              "stops them where the shrinking slows, not at a minimizer");
 }
 
+std::unique_ptr<SparseCholesky> Session::take_factorization()
+{
+    if (!linear_ || linear_->factorization() == nullptr)
+        return nullptr;
+    std::unique_ptr<SparseCholesky> factor = linear_->take_factorization();
+    linear_.reset(); // nothing left to solve with: nor a minimizer to follow
+    minimizer_pins_.clear();
+    pin_responses_.clear();
+    return factor;
+}
+
 void Session::invert_blocks()
 {
     for (const Index i : free_)
@@ -338,7 +349,7 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     if (!linear_)
         throw SolverError(
             "Session::step: the recipe's system was not factored (its "
-            "precomputation failed)");
+            "precomputation failed, or its factorization was handed over)");
     info.inner_iterations = linear_->add_solution(free_, system_.rhs, x);
     if (guard_)
         info.shortened = guard_jump(*guard_, free_, guard_start_, x);

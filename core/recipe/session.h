@@ -210,10 +210,8 @@ public:
     }
     //! Hands the factorization over to a session of another recipe of this mesh (its
     //! constructor's `analysed`); this session cannot step afterwards. nullptr without one.
-    std::unique_ptr<SparseCholesky> take_factorization()
-    {
-        return linear_ ? linear_->take_factorization() : nullptr;
-    }
+    //! (A step then throws SolverError.)
+    std::unique_ptr<SparseCholesky> take_factorization();
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
     bool conjugate_gradients() const { return linear_ && linear_->conjugate_gradients(); }

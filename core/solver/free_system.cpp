@@ -130,6 +130,8 @@ int FreeSystemSolver::solve(std::span<Scalar> r)
                                              std::max<std::int64_t>(cholesky_->size(), 1)));
         return 0;
     }
+    if (!cg_)
+        throw SolverError("FreeSystemSolver::solve: its factorization was handed over");
     // A d = r from d = 0 (a step starts at the current positions, the last solution): one
     // solve of 3 #free unknowns with blocks, else one per coordinate.
     const size_t m = static_cast<size_t>(cg_->a.size);

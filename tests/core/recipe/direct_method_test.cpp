@@ -391,6 +391,8 @@ TEST_SUITE("direct method")
             CHECK(session.factorization()->stats().factorizations == 1);
             // A session made with another's factorization keeps its analysis too.
             Session handed(m, t, r, {}, session.take_factorization());
+            CHECK(session.factorization() == nullptr);
+            CHECK_THROWS_AS(session.step(), SolverError); // nothing left to solve with
             CHECK(handed.factorization()->stats().factorizations == 1); // another pattern
             Session again(m, t, heavier, {}, handed.take_factorization());
             CHECK(again.factorization()->stats().factorizations == 2);
