@@ -64,6 +64,7 @@ void LiveSolver::clear()
     ++generation_;
     done_.wait(lock, [&] { return !busy_; });
     run_.reset();
+    superseded_.reset();
     const int restarts = status_.restarts;
     const std::uint64_t version = status_.energy_version;
     status_ = {};
@@ -460,7 +461,8 @@ void LiveSolver::worker()
             const std::uint64_t generation = generation_;
             // The run before is this thread's while it restarts: taken under the lock, as
             // the interface thread reads run_ (whether there is one) under it.
-            std::unique_ptr<LocalityRun> previous = std::move(run_);
+            std::unique_ptr<LocalityRun> previous = run_ ? std::move(run_) : std::move(superseded_);
+            superseded_.reset();
             lock.unlock();
 
             const auto t = std::chrono::steady_clock::now();
@@ -551,7 +553,9 @@ void LiveSolver::worker()
 
             lock.lock();
             busy_ = false;
-            if (generation == generation_)
+            if (generation != generation_)
+                superseded_ = std::move(run);
+            else
             {
                 run_ = std::move(run);
                 status_.ready = run_ != nullptr;

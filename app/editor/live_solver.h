@@ -148,7 +148,11 @@ private:
     };
     std::optional<Restart> restart_;   // pending, for the worker
     std::unique_ptr<LocalityRun> run_; // touched by whoever holds `busy_`
-    bool busy_ = false;                // the worker is precomputing or stepping
+    // A restart's run that a newer restart replaced before it was shown (a slider dragged
+    // through many values): never stepped nor shown, kept for the next restart's topology
+    // and factorization, as run_ is. The worker's, under the lock.
+    std::unique_ptr<LocalityRun> superseded_;
+    bool busy_ = false; // the worker is precomputing or stepping
     bool quit_ = false;
     int iterations_per_frame_ = 1;
     int frames_left_ = 0;          // > 0: frames to play before pausing

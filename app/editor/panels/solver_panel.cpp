@@ -285,11 +285,14 @@ void solver_panel(const PanelContext& ui)
     if (!state.offscreen) // a time would make offscreen frames differ from run to run
     {
         ImGui::Text("last frame %.1f ms on the solver's thread", st.step_ms);
-        if (st.factor_ms > 0)
+        if (st.factor_ms > 0 && st.analysis_kept)
             ImGui::TextWrapped(
-                "prepared in %.0f ms: %s %.0f ms, factored %.0f ms", st.precompute_ms,
-                st.analysis_kept ? "the analysis kept (a weight changed)" : "analysed",
-                st.analyse_ms, st.factor_ms);
+                "prepared in %.0f ms: the analysis kept (a weight changed), "
+                "factored %.0f ms",
+                st.precompute_ms, st.factor_ms);
+        else if (st.factor_ms > 0)
+            ImGui::TextWrapped("prepared in %.0f ms: analysed %.0f ms, factored %.0f ms",
+                               st.precompute_ms, st.analyse_ms, st.factor_ms);
     }
     // "off", then the heat map's terms in their order.
     const std::span<const EnergyTerm> terms = heat_terms();

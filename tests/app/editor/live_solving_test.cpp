@@ -277,6 +277,17 @@ TEST_SUITE("Live solving")
         // same minimizer, rounded apart.)
         CHECK(distance(cli_positions(b.path, stiffer_recipe),
                        file_order_mesh(s.document()).positions) <= 1e-9 * diagonal);
+        // Two values at once, as a slider dragged fast gives them: the restart of the first
+        // may be replaced before it is shown, and the second still keeps the analysis.
+        stiffer.bending->mu = 5.0;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{stiffer}));
+        stiffer.bending->mu = 6.0;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{stiffer}));
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(s.solver_status().analysis_kept);
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        REQUIRE(s.dispatch(cmd::Undo{}));
         REQUIRE(s.dispatch(cmd::Undo{})); // the weight
         s.settle_solver();
 

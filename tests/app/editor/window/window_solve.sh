@@ -5,7 +5,8 @@
 # the direct method with the thin plate (the exported recipe says so; a screenshot of the
 # dome from outside the editor), and one Ctrl+Z gives back the pins and the Jacobi steps.
 # Then the thin plate ticked in the solver panel; Enter (Solve) shows the minimizer of the
-# sets; the pins dragged up with M, the shape solved again at the moves; saved, the recipe
+# sets; the pins dragged up with M, the shape solved again at the moves; the thin plate's
+# weight slider dragged (factored on the analysis kept, which the trace says); saved, the recipe
 # exported; then implicit steps chosen in the method's menu, their time slider dragged and a
 # run played (its recipe exported: "implicit" with the time set). Then:
 #  - meshfair-cli smooth of the base with the exported recipe ("method": "direct", the
@@ -78,6 +79,18 @@ key m
 drag 400 390 400 360 6
 wait_line "gesture move pins" $((gestures + 1))
 wait_line "solved: the minimizer" $((solves + 1))
+# The thin plate's weight dragged in the panel: a new recipe of the same pattern at each
+# value, factored on the analysis kept from the run before (the trace and the panel say
+# so), and the minimizer shown again.
+kept=$(count_lines "solver: factored on the analysis kept")
+settings=$(count_lines "command solver settings: ok")
+read -r mx my < <(widget_at "bending mu")
+drag "$mx" "$my" $((mx + 30)) "$my" 3
+wait_line "command solver settings: ok" $((settings + 1))
+wait_line "solver: factored on the analysis kept" $((kept + 1))
+wait_line "solved: the minimizer" $((solves + 2))
+widget_at "noise sigma" >/dev/null # the panel scrolled to the line that says how it factored
+xwd -root -silent | convert xwd:- "$work/analysis-kept.png"
 key ctrl+s
 wait_line "command save: ok"
 export_recipe "solve-recipe.json"
@@ -182,4 +195,4 @@ if not plate_near >= 1.2 * membrane_near:
     sys.exit("a horn, not a dome: the vertices next to the pins do not follow them")
 
 PY
-echo "ok: M raised a dome at once (the direct method with the thin plate, undone with the pins by one Ctrl+Z; picture: $work/dome.png); Enter solved the region with the thin plate; pins dragged with M solved again; the saved shape is meshfair-cli's minimizer and a dome"
+echo "ok: M raised a dome at once (the direct method with the thin plate, undone with the pins by one Ctrl+Z; picture: $work/dome.png); Enter solved the region with the thin plate; pins dragged with M solved again; the thin plate's weight dragged, factored on the analysis kept (picture: $work/analysis-kept.png); the saved shape is meshfair-cli's minimizer and a dome"
