@@ -50,16 +50,16 @@ struct CholmodLibrary
     // OpenBLAS's thread count, when the BLAS CHOLMOD loaded is OpenBLAS (else null).
     void (*set_blas_threads)(int) = nullptr;
     int blas_threads = 1;            //!< its count at load (all cores, or OPENBLAS_NUM_THREADS)
-    bool blas_threads_given = false; //!< OPENBLAS_NUM_THREADS (or OMP_NUM_THREADS) set
+    bool blas_threads_given = false; //!< OPENBLAS_NUM_THREADS (or GOTO_NUM_THREADS) set
 };
 
 // Below this many floating-point operations a factorization runs its BLAS on one thread.
 // OpenBLAS's pthread build keeps a pool of its own beside OpenMP's, and both wait for work
 // by spinning: on small supernodes its threads mostly wait for a core the other pool
 // holds. On the 35k bunny's region (0.14 Gflop, 2 cores) one BLAS thread took the first
-// result from 159 to 90 ms and a re-solve from 32 to 5.5 ms (medians of 7,
-// docs/performance.md); at 1.25M vertices (22 Gflop) the BLAS threads are what makes the
-// factorization parallel. The same matrix always takes the same count, so the bits never
+// result from 170 to 86 ms and a re-solve from 44 to 5.2 ms (medians of 7,
+// docs/performance.md); at 1.25M vertices (22 Gflop) two threads factor faster (2.8 s
+// against 3.1 s). The same matrix always takes the same count, so the bits never
 // depend on which program factors it.
 constexpr double kOneBlasThreadBelowFlops = 2e9;
 
@@ -111,8 +111,10 @@ const CholmodLibrary& cholmod_library()
                     if (library.set_blas_threads != nullptr)
                     {
                         library.blas_threads = get();
+                        // (OMP_NUM_THREADS, which OpenBLAS also reads, sets MeshFair's
+                        // threads: it is the count of large factors, not a rule for all.)
                         library.blas_threads_given =
-                            std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("OMP_NUM_THREADS");
+                            std::getenv("OPENBLAS_NUM_THREADS") || std::getenv("GOTO_NUM_THREADS");
                         break;
                     }
                 }

@@ -5,7 +5,10 @@
 // each term's column against its own energy, by polarization.
 #include <doctest/doctest.h>
 
+#include <dlfcn.h>
+
 #include <cmath>
+#include <cstdlib>
 #include <random>
 
 #include "core/energies/bending_term.h"
@@ -130,6 +133,27 @@ TEST_SUITE("SparseCholesky")
         REQUIRE(cholesky.factor(shifted_path(10, 7)));
         CHECK(cholesky.stats().factorizations == 2);
         CHECK(cholesky.stats().analyse_seconds == 0);
+    }
+
+    TEST_CASE("a small factor runs OpenBLAS on one thread, unless the environment says")
+    {
+        // The BLAS CHOLMOD loads (Debian's alternatives: OpenBLAS, which the setup
+        // installs), loaded by the first factorization.
+        SparseCholesky cholesky;
+        cholesky.analyse(shifted_path(200, 1));
+        REQUIRE(cholesky.factor(shifted_path(200, 1)));
+        CHECK(cholesky.stats().factor_flops > 0);
+        CHECK(cholesky.stats().factor_flops < 2e9);
+        void* blas = dlopen("libblas.so.3", RTLD_NOW | RTLD_NOLOAD);
+        REQUIRE(blas != nullptr);
+        using Get = int (*)();
+        const auto threads = reinterpret_cast<Get>(dlsym(blas, "openblas_get_num_threads"));
+        REQUIRE(dlsym(blas, "openblas_get_num_threads") != nullptr);
+        if (const char* given = std::getenv("OPENBLAS_NUM_THREADS"))
+            CHECK(threads() == std::atoi(given));
+        else
+            CHECK(threads() == 1);
+        dlclose(blas);
     }
 
     TEST_CASE("misuse is refused: no analysis, a wrong size, a malformed matrix")
