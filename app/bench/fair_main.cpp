@@ -468,20 +468,22 @@ private:
                     failures_.push_back("the pin drag's minimizer was not followed");
             }
 
-            // A weight changed (a slider): the same pattern, so the session factors again
-            // on the analysis it keeps, then solves.
+            // What a weight's slider costs: the recipe set again (this case's only weight is
+            // the edge term's, 1; a factorization costs the same whatever the values), the
+            // same pattern, so the session factors again on the analysis it keeps, then
+            // solves.
             t = Clock::now();
             session->set_recipe(recipe);
             x = session->release_positions(); // the pins back at the recipe's targets
             session->apply_hard_targets(x);
             session->adopt_positions(std::move(x));
             const SmoothResult reweighted = meshfair::run(*session);
-            figure("MeshFair direct: a weight changed (analysis kept), to the result", "s")
+            figure("MeshFair direct: the recipe set again (analysis kept), to the result", "s")
                 .values.push_back(seconds_since(t));
             if (session->factorization()->stats().factorizations != 2 ||
                 !(reweighted.gradients.back() <= 1e-9))
                 failures_.push_back(
-                    "a weight's change did not keep the analysis (" +
+                    "the recipe set again did not keep the analysis (" +
                     std::to_string(session->factorization()->stats().factorizations) +
                     " factorizations on it), or stopped at a relative gradient of " +
                     std::to_string(reweighted.gradients.back()));
