@@ -92,6 +92,7 @@ CommandSpec spec_of(const Command& command)
                                std::is_same_v<T, cmd::ScaleBrushRadius> ||
                                std::is_same_v<T, cmd::SetBrushRadius> ||
                                std::is_same_v<T, cmd::SetPaintSettings> ||
+                               std::is_same_v<T, cmd::CancelPreparation> ||
                                std::is_same_v<T, cmd::Screenshot>)
                 return {"", 0, 0, false, false};
             else
@@ -143,6 +144,7 @@ std::string_view command_name(const Command& command)
                                             "play/pause",
                                             "step",
                                             "solve",
+                                            "cancel preparation",
                                             "reset",
                                             "apply",
                                             "noise",

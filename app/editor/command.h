@@ -251,6 +251,13 @@ struct Step
 struct Solve
 {
 };
+//! \brief Stops the solver's preparation pending or under way (the direct method's
+//! ordering and factorization, seconds on a large mesh): the shape stays as it is, and
+//! nothing is prepared again until Play, Step or Solve asks or the sets change. Not an
+//! undo step: it changes nothing of the document.
+struct CancelPreparation
+{
+};
 struct ResetShape
 {
 };
@@ -345,10 +352,10 @@ using Command = std::variant<
     cmd::DeleteSet, cmd::RenameSet, cmd::ShowSet, cmd::SetColor, cmd::SelectSet, cmd::AddToSet,
     cmd::RemoveFromSet, cmd::CloseHoles, cmd::EnableSet, cmd::SetSetWeight, cmd::SetNormalDirection,
     cmd::MovePins, cmd::PaintDab, cmd::SetPaintSettings, cmd::SetSolverSettings, cmd::Play,
-    cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::Solve, cmd::ResetShape, cmd::ApplyShape,
-    cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh, cmd::ExportRecipe,
-    cmd::ImportRecipe, cmd::ApplyPreset, cmd::ShowDialog, cmd::Screenshot, cmd::Quit,
-    cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
+    cmd::Pause, cmd::TogglePlay, cmd::Step, cmd::Solve, cmd::CancelPreparation, cmd::ResetShape,
+    cmd::ApplyShape, cmd::AddNoise, cmd::SetHeatMap, cmd::OpenMesh, cmd::SaveMesh,
+    cmd::ExportRecipe, cmd::ImportRecipe, cmd::ApplyPreset, cmd::ShowDialog, cmd::Screenshot,
+    cmd::Quit, cmd::QuitDiscarding, cmd::Recover, cmd::DiscardRecovery, cmd::Autosave>;
 
 //! \brief Where a command comes from, for the undo step it makes: commands of one
 //! interaction (a drag of a tool, a slider held) with the same key merge into one step,

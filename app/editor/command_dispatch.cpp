@@ -227,6 +227,11 @@ bool CommandExecutor::operator()(const cmd::Solve&) const
 {
     if (solves_for_minimizer(d.solver.method))
     {
+        if (s.solver_.prepare_again())
+        {
+            say("solving for the minimizer of the sets again (method: direct)");
+            return true;
+        }
         say("the shape is the minimizer of the sets (method: direct)");
         return false;
     }
@@ -238,6 +243,18 @@ bool CommandExecutor::operator()(const cmd::Solve&) const
     settings.keep_volume = false;
     d.solver = settings;
     say("solving for the minimizer of the sets (method: direct)");
+    return true;
+}
+
+bool CommandExecutor::operator()(const cmd::CancelPreparation&) const
+{
+    if (!s.solver_.cancel_preparation())
+    {
+        say("nothing to cancel: the solver is not preparing");
+        return false;
+    }
+    say("preparation cancelled: the shape is as it was; Solve (Enter), Play or Step "
+        "prepares again");
     return true;
 }
 

@@ -91,6 +91,7 @@ struct CommandExecutor
     bool operator()(const cmd::TogglePlay&) const;
     bool operator()(const cmd::Step& c) const;
     bool operator()(const cmd::Solve& c) const;
+    bool operator()(const cmd::CancelPreparation& c) const;
     bool operator()(const cmd::ResetShape&) const;
     bool operator()(const cmd::ApplyShape&) const;
     bool operator()(const cmd::AddNoise& c) const;

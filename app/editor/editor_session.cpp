@@ -191,6 +191,38 @@ void EditorSession::settle_solver()
     update();
 }
 
+void EditorSession::set_trace(std::FILE* out)
+{
+    trace_ = out;
+    listen_to_preparation();
+}
+
+void EditorSession::observe_preparation(
+    std::function<void(const PreparationProgress::Snapshot&)> observer)
+{
+    preparation_observer_ = std::move(observer);
+    listen_to_preparation();
+}
+
+void EditorSession::listen_to_preparation()
+{
+    if (trace_ == nullptr && !preparation_observer_)
+        return solver_.set_phase_listener(nullptr);
+    // Each phase as it begins, on the solver's thread (stdio locks the stream per call).
+    solver_.set_phase_listener(
+        [out = trace_, observer = preparation_observer_](const PreparationProgress::Snapshot& p) {
+            if (out != nullptr && p.phase == PreparationProgress::Phase::Ordering)
+                std::fprintf(out, "solver: preparing: ordering %lld unknowns\n",
+                             static_cast<long long>(p.unknowns));
+            if (out != nullptr && p.phase == PreparationProgress::Phase::Factoring)
+                std::fprintf(out, "solver: preparing: factoring %.3g Gflop\n", p.flops / 1e9);
+            if (out != nullptr)
+                std::fflush(out);
+            if (observer)
+                observer(p);
+        });
+}
+
 void EditorSession::update()
 {
     const bool was_playing = solver_.playing();
@@ -276,6 +308,13 @@ void EditorSession::prepare_ui()
         synced_.energy = state_.solver.energy_version;
     }
     state_.problems = solver_.problems();
+    if (trace_ != nullptr && synced_.preparing && !state_.solver.preparing &&
+        state_.solver.cancelled)
+    {
+        std::fprintf(trace_, "solver: preparation cancelled\n");
+        std::fflush(trace_);
+    }
+    synced_.preparing = state_.solver.preparing;
     if (synced_.restarts != state_.solver.restarts)
     {
         // What the new run does besides the recipe's letter (open components' volumes kept

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,7 +63,12 @@ public:
     void end_interaction();
     //! \brief Prints each command (but a gesture's own) and its outcome, and each gesture's
     //! end, on `out` (nullptr: nothing).
-    void set_trace(std::FILE* out) { trace_ = out; }
+    //! Where the trace goes (null: none), with the solver's preparation phases.
+    void set_trace(std::FILE* out);
+    //! \brief Called on the solver's thread as each phase of its preparation begins (after
+    //! the trace's line), as LiveSolver::set_phase_listener: a tool that shows it, a test
+    //! that holds a phase to cancel it.
+    void observe_preparation(std::function<void(const PreparationProgress::Snapshot&)> observer);
 
     // Raw input of the view, in its pixels ((0, 0) its top-left corner), from the
     // InputRouter: the active tool's gestures and the navigation.
@@ -157,6 +163,9 @@ private:
     ScreenPoint cursor_;
     bool cursor_in_view_ = true;
     std::FILE* trace_ = nullptr;
+    std::function<void(const PreparationProgress::Snapshot&)> preparation_observer_;
+    //! The solver's phase listener: the trace's lines, then the observer.
+    void listen_to_preparation();
     int solves_traced_ = 0;             // the direct solves the trace has named ("solved: ...")
     std::vector<cmd::PaintDab> stroke_; // the dabs of the current or last mouse stroke
 
@@ -166,7 +175,8 @@ private:
         std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
             border, counts;
         std::optional<std::uint64_t> energy;
-        int restarts = 0; //!< the solver's restarts whose notes the status bar has told
+        int restarts = 0;       //!< the solver's restarts whose notes the status bar has told
+        bool preparing = false; //!< the solver was preparing at the last frame
         //! The weight map shown (the sets' version and the set painted), if any.
         std::optional<std::pair<std::uint64_t, std::string>> weights;
         std::string glyphs_hidden; //!< the set left out of the glyphs (its map is shown)

@@ -200,6 +200,7 @@ UiOutput EditorUi::build(const Document& document, EditorState& state, const Cam
         side_panel(ui, rename_buffer_, renaming_);
     status_bar(ui);
     energy_window(ui);
+    preparation_toast(ui); // (over the energy window)
     tool_overlay(state);
     help_overlay(ui);
 

@@ -8,6 +8,7 @@
 #include "app/editor/heat_map.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/solver/solver.h"
+#include "core/topology/topology.h"
 
 namespace meshfair::app {
 
@@ -41,8 +42,10 @@ void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vec
                            std::move(recipe),       std::move(vertex_face_offsets),
                            std::move(vertex_faces), std::move(start)};
         ++generation_;
+        pending_pins_.reset(); // the recipe has the newest targets
         status_.playing = false;
         status_.ready = false;
+        status_.cancelled = false;
         status_.converged = false;
         status_.error.clear();
         status_.steps = 0;
@@ -57,11 +60,49 @@ void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vec
     wake_.notify_all();
 }
 
+bool LiveSolver::cancel_preparation()
+{
+    std::unique_lock lock(mutex_);
+    if (!restart_ && !preparing_)
+        return false;
+    restart_.reset();
+    pending_pins_.reset();
+    ++generation_; // what the preparation under way makes is dropped
+    if (preparing_)
+        progress_->cancel();
+    status_.playing = false;
+    status_.ready = false;
+    status_.cancelled = true;
+    status_.error.clear();
+    solve_due_ = false;
+    fresh_ = false;
+    if (!preparing_)
+    {
+        // The run before the dropped restart: not stepped nor shown again (a frame of its
+        // steps may be under way), kept for the next restart's topology and factor.
+        done_.wait(lock, [&] { return !busy_; });
+        if (run_)
+            superseded_ = std::move(run_);
+    }
+    done_.notify_all();
+    return true;
+}
+
+void LiveSolver::set_phase_listener(
+    std::function<void(const PreparationProgress::Snapshot&)> listener)
+{
+    std::lock_guard lock(mutex_);
+    phase_listener_ = std::move(listener);
+}
+
 void LiveSolver::clear()
 {
     std::unique_lock lock(mutex_);
     restart_.reset();
+    pending_pins_.reset();
     ++generation_;
+    if (preparing_)
+        progress_->cancel(); // (it is dropped: a long factorization need not end first)
     done_.wait(lock, [&] { return !busy_; });
     run_.reset();
     superseded_.reset();
@@ -129,17 +170,29 @@ bool LiveSolver::wait_published()
 {
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] {
-        return fresh_ || (!status_.playing && !busy_ && !restart_ && !(solve_due_ && run_));
+        return fresh_ || (!status_.playing && !busy_ && !restart_ && !(solve_due_ && run_) &&
+                          !(pending_pins_ && run_));
     });
     return fresh_;
 }
 
 void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
 {
-    std::unique_lock lock(mutex_);
-    done_.wait(lock, [&] { return !busy_ && !restart_; });
-    if (!run_)
-        return;
+    {
+        std::lock_guard lock(mutex_);
+        if (busy_ || restart_)
+        {
+            // Not waited for: a preparation may take seconds, a frame of steps a while.
+            pending_pins_.emplace(targets.begin(), targets.end());
+        }
+        else if (run_)
+            place_pins(targets);
+    }
+    wake_.notify_all();
+}
+
+void LiveSolver::place_pins(std::span<const Scalar> targets)
+{
     Session& session = run_->session();
     session.move_pins(targets); // (the free vertices stay: the minimizer on record)
     known_energy_.reset();      // new positions at the same step count
@@ -153,7 +206,6 @@ void LiveSolver::move_hard_targets(std::span<const Scalar> targets)
     fresh_ = true;
     solve_due_ = solves_for_minimizer(session.recipe().method);
     done_.notify_all();
-    wake_.notify_all();
 }
 
 void LiveSolver::wait_idle()
@@ -161,7 +213,8 @@ void LiveSolver::wait_idle()
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] {
         return !busy_ && !restart_ && !(heat_dirty_ && run_) &&
-               !(energy_due_ && run_ && !status_.playing) && !(solve_due_ && run_);
+               !(energy_due_ && run_ && !status_.playing) && !(solve_due_ && run_) &&
+               !(pending_pins_ && run_);
     });
 }
 
@@ -226,7 +279,11 @@ void LiveSolver::compute_heat(std::optional<EnergyTerm> term)
 SolverStatus LiveSolver::status() const
 {
     std::lock_guard lock(mutex_);
-    return status_;
+    SolverStatus status = status_;
+    status.preparing = preparing_ || restart_.has_value();
+    if (preparing_)
+        status.preparation = progress_->snapshot();
+    return status;
 }
 
 std::vector<EnergySample> LiveSolver::energies() const
@@ -390,6 +447,93 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     wake_.notify_all();
 }
 
+LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun> previous,
+                                         const std::shared_ptr<PreparationProgress>& progress)
+{
+    Prepared p;
+    try
+    {
+        progress->enter(PreparationProgress::Phase::Assembling);
+        check_recipe(r.recipe, r.base);
+        // The pins go where the recipe puts them: their targets, or without targets their
+        // place in the base shape, wherever a run before put them. Only if one of them
+        // moves are the start positions published: otherwise the interface already shows
+        // them, and taking them would change nothing.
+        const std::vector<Scalar>& shown = r.start.empty() ? r.base.positions : r.start;
+        if (r.recipe.hard)
+            for (size_t k = 0; k < r.recipe.hard->vertices.size(); ++k)
+                for (size_t a = 0; a < 3; ++a)
+                {
+                    const size_t i = 3 * static_cast<size_t>(r.recipe.hard->vertices[k]) + a;
+                    const Scalar place = r.recipe.hard->targets.empty()
+                                             ? r.base.positions[i]
+                                             : r.recipe.hard->targets[k][a];
+                    p.moved = p.moved || shown[i] != place;
+                    if (!r.start.empty())
+                        r.start[i] = place;
+                }
+        // The same mesh and the same parts: the topology of the run before is this run's
+        // (a dab of the smoothing brush changes weights, not connectivity), and its
+        // factorization, whose analysis is kept when only a weight changed (a slider; at
+        // 1.25M vertices 6 s of 15 are the analysis).
+        std::unique_ptr<SparseCholesky> analysed;
+        std::optional<Topology> topology;
+        if (previous && previous->topology().parts == required_topology(r.recipe) &&
+            previous->topology().vertex_count == r.base.vertex_count() &&
+            previous->mesh().face_offsets == r.base.face_offsets &&
+            previous->mesh().face_vertices == r.base.face_vertices)
+        {
+            analysed = previous->session().take_factorization();
+            topology = std::move(*previous).take_topology();
+        }
+        previous.reset(); // (its arrays go before the new run's are built)
+        if (!topology)
+            topology = build_topology(r.base, required_topology(r.recipe));
+        if (!analysed)
+            analysed = std::make_unique<SparseCholesky>();
+        analysed->report_to(progress);
+        p.run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe,
+                                              std::move(*topology), std::move(analysed));
+        if (!r.start.empty())
+            p.run->session().set_positions(r.start);
+        p.notes = p.run->session().notes();
+        if (const SparseCholesky* f = p.run->session().factorization())
+            p.factor_stats = f->stats();
+        p.energy = p.run->energy();
+        vertex_face_offsets_ = std::move(r.vertex_face_offsets);
+        vertex_faces_ = std::move(r.vertex_faces);
+        // Frames of this run recompute and upload only what its steps move.
+        display_run_ = new_display_run();
+        changing_ = std::make_shared<const ChangingPart>(changing_part(
+            p.run->mesh(), vertex_face_offsets_, vertex_faces_, p.run->session().free_vertices()));
+        // Published only when a pin moved: the interface shows the start otherwise, and
+        // the next steps publish their own (a brush dab steps at once).
+        if (p.moved)
+        {
+            p.published.assign(p.run->session().positions().begin(),
+                               p.run->session().positions().end());
+            compute_display(p.published, p.run->mesh());
+        }
+        // (A restart of the minimizer's methods has checked it: it failed, or all is held.)
+        if (r.recipe.method == Method::Taubin)
+            p.no_minimizer = kTaubinHasNoMinimizer;
+        else if (!solves_for_minimizer(r.recipe.method))
+            p.no_minimizer = p.run->session().unheld_part().value_or("");
+        progress->enter(PreparationProgress::Phase::Done);
+    }
+    catch (const PreparationCancelled&)
+    {
+        p = Prepared{};
+        p.cancelled = true;
+    }
+    catch (const std::exception& e)
+    {
+        p = Prepared{};
+        p.error = e.what();
+    }
+    return p;
+}
+
 void LiveSolver::worker()
 {
     std::unique_lock lock(mutex_);
@@ -397,6 +541,7 @@ void LiveSolver::worker()
     {
         wake_.wait(lock, [&] {
             return quit_ || (restart_ && !busy_) ||
+                   (pending_pins_ && run_ && !busy_ && !restart_) ||
                    (status_.playing && run_ && !fresh_ && !busy_ && !restart_) ||
                    (heat_dirty_ && run_ && !busy_ && !restart_) ||
                    (energy_due_ && run_ && !busy_ && !restart_ && !status_.playing) ||
@@ -404,6 +549,15 @@ void LiveSolver::worker()
         });
         if (quit_)
             return;
+        if (pending_pins_ && run_ && !busy_ && !restart_)
+        {
+            // Targets given while this thread prepared or stepped: the pins first, then
+            // the direct method's solve for them.
+            const std::vector<Scalar> targets = std::move(*pending_pins_);
+            pending_pins_.reset();
+            place_pins(targets);
+            continue;
+        }
         if (solve_due_ && run_ && !restart_ && !status_.playing && !busy_)
         {
             // The direct method's minimizer for the recipe as it is now (at most a few
@@ -458,7 +612,11 @@ void LiveSolver::worker()
             Restart r = std::move(*restart_);
             restart_.reset();
             busy_ = true;
+            preparing_ = true;
             const std::uint64_t generation = generation_;
+            progress_ = std::make_shared<PreparationProgress>();
+            progress_->set_listener(phase_listener_);
+            const std::shared_ptr<PreparationProgress> progress = progress_;
             // The run before is this thread's while it restarts: taken under the lock, as
             // the interface thread reads run_ (whether there is one) under it.
             std::unique_ptr<LocalityRun> previous = run_ ? std::move(run_) : std::move(superseded_);
@@ -466,124 +624,46 @@ void LiveSolver::worker()
             lock.unlock();
 
             const auto t = std::chrono::steady_clock::now();
-            std::unique_ptr<LocalityRun> run;
-            std::string error;
-            std::vector<std::string> notes;
-            TermEnergies energy;
-            std::vector<Scalar> published;
-            FactorStats factor_stats;
-            bool moved = false; // a pin moved: the start positions differ from those shown
-            try
-            {
-                check_recipe(r.recipe, r.base);
-                // The pins go where the recipe puts them: their targets, or without targets
-                // their place in the base shape, wherever a run before put them. Only if one
-                // of them moves are the start positions published: otherwise the interface
-                // already shows them, and taking them would change nothing.
-                const std::vector<Scalar>& shown = r.start.empty() ? r.base.positions : r.start;
-                if (r.recipe.hard)
-                    for (size_t k = 0; k < r.recipe.hard->vertices.size(); ++k)
-                        for (size_t a = 0; a < 3; ++a)
-                        {
-                            const size_t i =
-                                3 * static_cast<size_t>(r.recipe.hard->vertices[k]) + a;
-                            const Scalar place = r.recipe.hard->targets.empty()
-                                                     ? r.base.positions[i]
-                                                     : r.recipe.hard->targets[k][a];
-                            moved = moved || shown[i] != place;
-                            if (!r.start.empty())
-                                r.start[i] = place;
-                        }
-                // The same mesh and the same parts: the topology of the run before is this
-                // run's (a dab of the smoothing brush changes weights, not connectivity).
-                if (previous && previous->topology().parts == required_topology(r.recipe) &&
-                    previous->topology().vertex_count == r.base.vertex_count() &&
-                    previous->mesh().face_offsets == r.base.face_offsets &&
-                    previous->mesh().face_vertices == r.base.face_vertices)
-                {
-                    // And its factorization: a slider that changes a weight factors again
-                    // on the analysis kept (at 1.25M vertices 6 s of 15 are the analysis).
-                    std::unique_ptr<SparseCholesky> analysed =
-                        previous->session().take_factorization();
-                    Topology topology = std::move(*previous).take_topology();
-                    previous.reset(); // it has no topology left
-                    run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
-                                                        r.recipe, std::move(topology),
-                                                        std::move(analysed));
-                }
-                else
-                    run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order),
-                                                        r.recipe);
-                if (!r.start.empty())
-                    run->session().set_positions(r.start);
-                notes = run->session().notes();
-                if (const SparseCholesky* f = run->session().factorization())
-                    factor_stats = f->stats();
-                energy = run->energy();
-                vertex_face_offsets_ = std::move(r.vertex_face_offsets);
-                vertex_faces_ = std::move(r.vertex_faces);
-                // Frames of this run recompute and upload only what its steps move.
-                display_run_ = new_display_run();
-                changing_ = std::make_shared<const ChangingPart>(
-                    changing_part(run->mesh(), vertex_face_offsets_, vertex_faces_,
-                                  run->session().free_vertices()));
-                // Published only when a pin moved: the interface shows the start otherwise,
-                // and the next steps publish their own (a brush dab steps at once).
-                if (moved)
-                {
-                    published.assign(run->session().positions().begin(),
-                                     run->session().positions().end());
-                    compute_display(published, run->mesh());
-                }
-            }
-            catch (const std::exception& e)
-            {
-                run.reset();
-                error = e.what();
-            }
-            // (A restart of the minimizer's methods has checked it: it failed, or all is held.)
-            std::string no_minimizer;
-            if (run && r.recipe.method == Method::Taubin)
-                no_minimizer = kTaubinHasNoMinimizer;
-            else if (run && !solves_for_minimizer(r.recipe.method))
-                no_minimizer = run->session().unheld_part().value_or("");
+            Prepared p = prepare(r, std::move(previous), progress);
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)
                     .count();
 
             lock.lock();
             busy_ = false;
+            preparing_ = false;
             if (generation != generation_)
-                superseded_ = std::move(run);
+                superseded_ = std::move(p.run); // (null when cancelled)
             else
             {
-                run_ = std::move(run);
+                run_ = std::move(p.run);
                 status_.ready = run_ != nullptr;
-                status_.error = error;
-                status_.no_minimizer = std::move(no_minimizer);
-                notes_ = std::move(notes);
+                status_.error = p.error;
+                status_.cancelled = p.cancelled;
+                status_.no_minimizer = std::move(p.no_minimizer);
+                notes_ = std::move(p.notes);
                 status_.precompute_ms = ms;
-                status_.analyse_ms = 1e3 * factor_stats.analyse_seconds;
-                status_.factor_ms = 1e3 * factor_stats.factor_seconds;
-                status_.analysis_kept = factor_stats.factorizations > 1;
+                status_.analyse_ms = 1e3 * p.factor_stats.analyse_seconds;
+                status_.factor_ms = 1e3 * p.factor_stats.factor_seconds;
+                status_.analysis_kept = p.factor_stats.factorizations > 1;
                 ++status_.restarts;
                 // Playing if asked for since the restart was requested (and it worked).
                 status_.playing = status_.playing && run_ != nullptr;
                 if (run_)
                 {
                     heat_dirty_ = heat_term_.has_value();
-                    energies_ = {{0, energy}};
+                    energies_ = {{0, p.energy}};
                     known_energy_ = energies_.back();
                     energy_due_ = false;
                     ++status_.energy_version;
                     solve_due_ = solves_for_minimizer(r.recipe.method);
-                    if (moved)
+                    if (p.moved)
                     {
-                        published_ = std::move(published);
+                        published_ = std::move(p.published);
                         published_steps_ = 0;
                         std::swap(display_back_, display_published_);
                     }
-                    fresh_ = moved;
+                    fresh_ = p.moved;
                 }
             }
             done_.notify_all();

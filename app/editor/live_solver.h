@@ -4,6 +4,7 @@
 
 #include <condition_variable>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -13,6 +14,7 @@
 
 #include "app/render/mesh_draw_data.h"
 #include "core/recipe/locality_run.h"
+#include "core/solver/preparation_progress.h"
 
 namespace meshfair::app {
 
@@ -48,6 +50,13 @@ struct SolverStatus
     double analyse_ms = 0;
     double factor_ms = 0;
     bool analysis_kept = false;
+    //! A restart's preparation is pending or under way on the worker, and where it is
+    //! (the phase of a pending one: Assembling, not yet begun).
+    bool preparing = false;
+    PreparationProgress::Snapshot preparation;
+    //! The last restart's preparation was cancelled (cancel_preparation): no run until
+    //! the next restart.
+    bool cancelled = false;
     int restarts = 0;                 //!< precomputations so far
     std::uint64_t energy_version = 0; //!< changes of the energy curve so far
 };
@@ -79,6 +88,14 @@ public:
                  std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
+    //! \brief Stops the restart pending or being prepared (a long factorization): it is
+    //! dropped, with the run before it, and nothing runs until the next restart
+    //! (status().cancelled). A preparation under way stops where its next phase would
+    //! begin (PreparationProgress). Returns at once; false when nothing was preparing.
+    bool cancel_preparation();
+    //! \brief Called on the worker as each phase of a restart's preparation begins (a
+    //! trace; a test that holds a phase to cancel it). Set before restarts are made.
+    void set_phase_listener(std::function<void(const PreparationProgress::Snapshot&)> listener);
 
     //! \brief Plays (on the worker) or pauses. It pauses by itself after `frames` frames or
     //! `steps` steps when > 0 (the last frame runs only the steps left), and when the
@@ -95,6 +112,9 @@ public:
     //! vertices are fixed: their targets are right-hand side only). Publishes the positions.
     //! With the direct method the worker then solves for the new minimizer (a
     //! back-substitution with the factorization kept) and publishes it too.
+    //! Never waits for the worker: while it prepares a restart or steps, the targets are
+    //! kept and the worker moves the pins when it is done (the newest targets only; a
+    //! restart after them has them already).
     void move_hard_targets(std::span<const Scalar> targets);
     void set_iterations_per_frame(int n);
     //! \brief Runs `n` steps on the calling thread (waiting for the precomputation and for
@@ -131,6 +151,8 @@ public:
 
 private:
     void worker();
+    //! Moves the run's pins to `targets` and publishes the positions; `lock` holds mutex_.
+    void place_pins(std::span<const Scalar> targets);
     //! Steps `n` times on the run; `lock` holds mutex_, released while stepping.
     void run_steps(int n, std::unique_lock<std::mutex>& lock);
 
@@ -146,12 +168,35 @@ private:
         std::vector<Index> vertex_face_offsets, vertex_faces;
         std::vector<Scalar> start;
     };
+    //! What a restart's preparation made: the run (null when it failed or was cancelled)
+    //! and what the status and the first frame take from it.
+    struct Prepared
+    {
+        std::unique_ptr<LocalityRun> run;
+        std::string error;
+        bool cancelled = false;
+        std::vector<std::string> notes;
+        TermEnergies energy;
+        bool moved = false;            // a pin moved: the start differs from what is shown
+        std::vector<Scalar> published; // the start positions, when a pin moved
+        FactorStats factor_stats;
+        std::string no_minimizer;
+    };
+    //! The restart's preparation, on the worker with the lock released.
+    Prepared prepare(Restart& r, std::unique_ptr<LocalityRun> previous,
+                     const std::shared_ptr<PreparationProgress>& progress);
     std::optional<Restart> restart_;   // pending, for the worker
     std::unique_ptr<LocalityRun> run_; // touched by whoever holds `busy_`
     // A restart's run that a newer restart replaced before it was shown (a slider dragged
     // through many values): never stepped nor shown, kept for the next restart's topology
     // and factorization, as run_ is. The worker's, under the lock.
     std::unique_ptr<LocalityRun> superseded_;
+    // The preparation under way (preparing_), the worker's; read and cancelled under the lock.
+    std::shared_ptr<PreparationProgress> progress_;
+    bool preparing_ = false;
+    std::function<void(const PreparationProgress::Snapshot&)> phase_listener_;
+    // Targets for the pins given while the worker was busy (move_hard_targets).
+    std::optional<std::vector<Scalar>> pending_pins_;
     bool busy_ = false; // the worker is precomputing or stepping
     bool quit_ = false;
     int iterations_per_frame_ = 1;

@@ -95,21 +95,50 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     a.where = r.where;
     if (!j.is_object())
         script_error(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",          "elements",       "through",
-                                        "brush_radius",  "drag",           "click",
-                                        "scroll",        "move",           "key",
-                                        "type",          "click_widget",   "frames",
-                                        "select",        "undo",           "redo",
-                                        "view",          "projection",     "screenshot",
-                                        "save_mesh",     "create_set",     "delete_set",
-                                        "show_set",      "hide_set",       "select_set",
-                                        "move_pins",     "rename_set",     "normal_direction",
-                                        "solver",        "step",           "play",
-                                        "reset",         "apply",          "export_recipe",
-                                        "import_recipe", "noise",          "heat_map",
-                                        "autosave",      "recover",        "up_axis",
-                                        "paint",         "paint_settings", "preset",
-                                        "solve"};
+    static const char* const kinds[] = {"tool",
+                                        "elements",
+                                        "through",
+                                        "brush_radius",
+                                        "drag",
+                                        "click",
+                                        "scroll",
+                                        "move",
+                                        "key",
+                                        "type",
+                                        "click_widget",
+                                        "frames",
+                                        "select",
+                                        "undo",
+                                        "redo",
+                                        "view",
+                                        "projection",
+                                        "screenshot",
+                                        "save_mesh",
+                                        "create_set",
+                                        "delete_set",
+                                        "show_set",
+                                        "hide_set",
+                                        "select_set",
+                                        "move_pins",
+                                        "rename_set",
+                                        "normal_direction",
+                                        "solver",
+                                        "step",
+                                        "play",
+                                        "reset",
+                                        "apply",
+                                        "export_recipe",
+                                        "import_recipe",
+                                        "noise",
+                                        "heat_map",
+                                        "autosave",
+                                        "recover",
+                                        "up_axis",
+                                        "paint",
+                                        "paint_settings",
+                                        "preset",
+                                        "solve",
+                                        "cancel_preparation"};
     // Options, and the actions each belongs to.
     static const std::pair<const char*, const char*> options[] = {
         {"name", "create_set rename_set"},
@@ -568,15 +597,16 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         command(AddNoise{r.number(v, kind, 0, 10), seed});
     }
     else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover" ||
-             kind == "solve")
+             kind == "solve" || kind == "cancel_preparation")
     {
         if (!v.is_boolean() || !v.get<bool>())
             r.bad(kind, "must be true");
-        command(kind == "reset"      ? Command(ResetShape{})
-                : kind == "apply"    ? Command(ApplyShape{})
-                : kind == "autosave" ? Command(Autosave{})
-                : kind == "solve"    ? Command(Solve{})
-                                     : Command(Recover{}));
+        command(kind == "reset"                ? Command(ResetShape{})
+                : kind == "apply"              ? Command(ApplyShape{})
+                : kind == "autosave"           ? Command(Autosave{})
+                : kind == "solve"              ? Command(Solve{})
+                : kind == "cancel_preparation" ? Command(CancelPreparation{})
+                                               : Command(Recover{}));
     }
     else
     {

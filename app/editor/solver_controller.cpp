@@ -46,6 +46,25 @@ void SolverController::clear()
     problems_for_.reset();
 }
 
+bool SolverController::cancel_preparation()
+{
+    if (!solver_.cancel_preparation())
+        return false;
+    cancelled_ = true;
+    run_open_ = false; // (a run asked for before it was prepared: nothing to record)
+    run_before_.reset();
+    return true;
+}
+
+bool SolverController::prepare_again()
+{
+    if (!cancelled_)
+        return false;
+    cancelled_ = false;
+    seen_.reset(); // the next update restarts
+    return true;
+}
+
 void SolverController::start_from_base()
 {
     document_.steps_from_base = 0;
@@ -108,6 +127,7 @@ void SolverController::restart_if_needed()
     {
         // From the base (the recipe's input shape), starting at the current positions.
         const bool at_base = document_.steps_from_base == 0;
+        cancelled_ = false; // prepared again
         solver_.restart(base_mesh(document_), document_.order,
                         build_recipe(sets, settings, document_.mesh, document_.base_positions, 0),
                         at_base ? std::vector<Scalar>{} : document_.mesh.positions,
@@ -162,6 +182,7 @@ bool SolverController::play(int frames, std::string& why)
 {
     if (run_open_)
         return true;
+    prepare_again();
     update(); // the recipe restarted if it changed
     if (!problems().empty())
     {
@@ -220,6 +241,7 @@ bool SolverController::take_frame()
 bool SolverController::step(int n, std::string& why)
 {
     pause();
+    prepare_again();
     update();
     if (!problems().empty())
     {

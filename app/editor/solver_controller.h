@@ -41,10 +41,22 @@ public:
     //! (with `why`) when the sets cannot run.
     bool step(int n, std::string& why);
     void set_iterations_per_frame(int n) { solver_.set_iterations_per_frame(n); }
+    //! LiveSolver::set_phase_listener.
+    void set_phase_listener(std::function<void(const PreparationProgress::Snapshot&)> listener)
+    {
+        solver_.set_phase_listener(std::move(listener));
+    }
     //! The shape is the base: no steps from it, and the next run starts there.
     void start_from_base();
     //! A new document: nothing runs until the next update.
     void clear();
+    //! \brief Stops the solver's preparation (LiveSolver::cancel_preparation); nothing is
+    //! prepared again for these sets until prepare_again() (Play, Step, Solve) or a change
+    //! of the sets or the shape. False when nothing was preparing.
+    bool cancel_preparation();
+    //! After a cancelled preparation: the next update prepares the sets again. False
+    //! when none was cancelled.
+    bool prepare_again();
 
     //! \brief Once per frame: restarts the solver when the recipe or the shape changed since
     //! the last restart, takes the newest positions (bumping the positions' version) and
@@ -86,6 +98,7 @@ private:
     std::optional<DocumentVersions> seen_; // the versions of the last restart decision
     int steps_at_restart_ = 0;             // steps_from_base when the solver last restarted
     bool run_open_ = false;                // play() began a run not yet recorded
+    bool cancelled_ = false;               // the last preparation was cancelled
     std::optional<EditState> run_before_;
     DisplayGeometry display_;      // the solver's newest display geometry
     std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown

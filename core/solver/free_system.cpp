@@ -49,8 +49,9 @@ FreeSystemSolver::FreeSystemSolver(const SymmetricMatrix& a, int block, bool con
         use_conjugate_gradients(a);
     };
     const bool reuse = analysed != nullptr && analysed->analysed_for(a);
-    cholesky_ = reuse ? std::move(analysed) : std::make_unique<SparseCholesky>();
-    analysed.reset(); // (a factor of another pattern goes before this one is made)
+    // One of another pattern is analysed afresh (its factor freed first), keeping the
+    // progress it reports to.
+    cholesky_ = analysed != nullptr ? std::move(analysed) : std::make_unique<SparseCholesky>();
     try
     {
         if (!reuse)

@@ -43,7 +43,9 @@ public:
     //! `analysed`: a factorization kept from an earlier system (take_factorization); when A
     //! has its pattern (a weight changed, not the free set nor the terms), A is factored on
     //! its analysis, which is not done again (libigl's min_quad_with_fixed's precompute
-    //! kept across a value change).
+    //! kept across a value change). Of another pattern (or never analysed: one that only
+    //! carries a PreparationProgress, SparseCholesky::report_to), it is analysed afresh.
+    //! \throw PreparationCancelled when its progress is cancelled.
     //! \throw NotPositiveDefiniteError when A is not positive definite in doubles.
     FreeSystemSolver(const SymmetricMatrix& a, int block, bool conjugate_gradients,
                      double budget_bytes, std::vector<std::string>& notes,

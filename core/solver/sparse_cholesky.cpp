@@ -5,6 +5,7 @@
 #include <cholmod.h>
 #include <dlfcn.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <mutex>
@@ -62,6 +63,22 @@ struct CholmodLibrary
 // against 3.1 s). The same matrix always takes the same count, so the bits never
 // depend on which program factors it.
 constexpr double kOneBlasThreadBelowFlops = 2e9;
+
+// The expected lengths of the phases a PreparationProgress shows: the ordering's seconds
+// per stored nonzero of A and the factorization's operations per second, as this process
+// last measured them on a matrix large enough to time; until then, this machine's figures
+// at 1.25M vertices (docs/performance.md: 7.1 s for 4.1 M nonzeros; 22 Gflop in 2.8-5 s).
+std::atomic<double> ordering_seconds_per_nonzero{1.5e-6};
+std::atomic<double> factor_flops_per_second{4e9};
+constexpr double kTimedNonzeros = 1e5; // smaller analyses say little of larger ones
+
+// From this many unknowns the ordering is METIS's nested dissection alone. CHOLMOD's
+// default tries AMD first and METIS only when AMD's fill is high, which on a surface mesh
+// it always is at this size: at 1.21M unknowns AMD took 1.1 s to give a factor of 78 Gflop
+// that METIS's ordering (6.5-7.5 s) cuts to 23 Gflop. Below it AMD alone is kept (35k: 24 ms
+// against METIS's 140 ms, for a factorization no slower).
+constexpr std::int64_t kNestedDissectionFrom = 200000;
+constexpr double kTimedFlops = 1e8;
 
 template <class Function>
 void bind(void* handle, const char* name, Function& f)
@@ -226,6 +243,12 @@ void SparseCholesky::analyse(const SymmetricMatrix& a)
     factored_ = false;
     size_ = a.size;
     stats_ = {};
+    const double nonzeros = static_cast<double>(a.row.size());
+    if (progress_)
+        progress_->enter(PreparationProgress::Phase::Ordering, a.size, 0,
+                         nonzeros * ordering_seconds_per_nonzero);
+    c.nmethods = a.size >= kNestedDissectionFrom ? 1 : 0; // 0: CHOLMOD's default choice
+    c.method[0].ordering = CHOLMOD_METIS;
     const auto start = std::chrono::steady_clock::now();
     cholmod_sparse s = view(a);
     cholmod_->factor = cholmod_->library.analyze(&s, &c);
@@ -235,6 +258,8 @@ void SparseCholesky::analyse(const SymmetricMatrix& a)
                               : "sparse Cholesky: the analysis failed (CHOLMOD status " +
                                     std::to_string(c.status) + ")");
     stats_.analyse_seconds = seconds_since(start);
+    if (nonzeros >= kTimedNonzeros)
+        ordering_seconds_per_nonzero = stats_.analyse_seconds / nonzeros;
     stats_.factor_nonzeros = c.lnz;
     stats_.factor_flops = c.fl;
     pattern_digest_ = pattern_digest(a);
@@ -264,11 +289,16 @@ bool SparseCholesky::factor(const SymmetricMatrix& a)
         throw SolverError("SparseCholesky::factor: analyse this pattern first");
     cholmod_common& c = cholmod_->common;
     factored_ = false;
+    if (progress_)
+        progress_->enter(PreparationProgress::Phase::Factoring, a.size, stats_.factor_flops,
+                         stats_.factor_flops / factor_flops_per_second);
     const auto start = std::chrono::steady_clock::now();
     cholmod_sparse s = view(a);
     use_blas_threads();
     cholmod_->library.factorize(&s, cholmod_->factor, &c);
     stats_.factor_seconds = seconds_since(start);
+    if (stats_.factor_flops >= kTimedFlops && stats_.factor_seconds > 0)
+        factor_flops_per_second = stats_.factor_flops / stats_.factor_seconds;
     if (stats_.factorizations++ > 0)
         stats_.analyse_seconds = 0; // this matrix's analysis: none, the pattern's was kept
     if (c.status == CHOLMOD_NOT_POSDEF)

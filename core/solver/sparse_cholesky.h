@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "core/solver/preparation_progress.h"
 #include "core/types.h"
 
 namespace meshfair {
@@ -58,12 +59,13 @@ public:
     SparseCholesky& operator=(const SparseCholesky&) = delete;
 
     //! Symbolic analysis: the ordering and the factor's structure, for this pattern.
-    //! \throw SolverError when CHOLMOD fails (out of memory).
+    //! \throw SolverError when CHOLMOD fails (out of memory); PreparationCancelled.
     void analyse(const SymmetricMatrix& a);
     //! Numeric factorization of a matrix with the pattern given to analyse().
     //! \return false when the matrix is not positive definite (its minimizer is not
     //! unique); the factor is then unusable until a factor() that succeeds.
-    //! \throw SolverError on any other failure, or without a prior analyse().
+    //! \throw SolverError on any other failure, or without a prior analyse();
+    //! PreparationCancelled.
     bool factor(const SymmetricMatrix& a);
     //! True after a factor() that succeeded.
     bool factored() const { return factored_; }
@@ -76,6 +78,14 @@ public:
     void solve(std::span<Scalar> b, int columns) const;
     std::int64_t size() const { return size_; }
     const FactorStats& stats() const { return stats_; }
+    //! \brief Reports the ordering and the factorization as phases of `progress` (with
+    //! their expected lengths, from this process's earlier analyses and factorizations),
+    //! and stops before either when it is cancelled (PreparationCancelled).
+    void report_to(std::shared_ptr<PreparationProgress> progress)
+    {
+        progress_ = std::move(progress);
+    }
+    const std::shared_ptr<PreparationProgress>& progress() const { return progress_; }
 
 private:
     struct Cholmod;
@@ -85,6 +95,7 @@ private:
     FactorStats stats_;
     //! OpenBLAS's threads for this factor: one below kOneBlasThreadBelowFlops, else all.
     void use_blas_threads() const;
+    std::shared_ptr<PreparationProgress> progress_;
     std::uint64_t pattern_digest_ = 0; //!< of the analysed pattern (analysed_for)
     std::int64_t pattern_nonzeros_ = -1;
 };

@@ -80,6 +80,8 @@ void menu_bar(const PanelContext& ui)
         if (item(ui, "Solve", "Solve: the minimizer", "Enter",
                  ui.document.solver.method == Method::Direct))
             ui.give(Solve{});
+        if (item(ui, "Solve", "Cancel preparation", "Esc", false, ui.state.solver.preparing))
+            ui.give(CancelPreparation{});
         ImGui::EndMenu();
     }
     if (menu(ui, "Select"))

@@ -100,6 +100,32 @@ void status_bar(const PanelContext& ui)
     ImGui::End();
 }
 
+void preparation_toast(const PanelContext& ui)
+{
+    const EditorState& state = ui.state;
+    const SolverStatus& st = state.solver;
+    if (!st.preparing)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float view_width = io.DisplaySize.x - (state.show_side_panel ? kSidePanelWidth : 0.0f);
+    const float width = std::min(420.0f, view_width - 20);
+    const float top = ImGui::GetFrameHeight() + 12; // below the menu bar
+    ImGui::SetNextWindowPos(ImVec2(view_width * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0));
+    ImGui::SetNextWindowSize(ImVec2(width, 0));
+    ImGui::Begin("##preparing", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
+                     ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::TextWrapped("Preparing the solver: %s", preparation_text(st, !state.offscreen).c_str());
+    const double fraction = state.offscreen ? -1 : st.preparation.fraction();
+    ImGui::ProgressBar(fraction >= 0 ? static_cast<float>(fraction) : 0.0f, ImVec2(-110, 0),
+                       fraction >= 0 ? nullptr : "");
+    ImGui::SameLine();
+    if (ui.button("Cancel (Esc)###cancel preparation", "cancel preparation"))
+        ui.give(cmd::CancelPreparation{});
+    ImGui::End();
+}
+
 void help_overlay(const PanelContext& ui)
 {
     const EditorState& state = ui.state;

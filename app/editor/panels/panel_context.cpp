@@ -4,6 +4,9 @@
 
 #include <imgui.h>
 
+#include <cmath>
+#include <cstdio>
+
 namespace meshfair::app {
 
 namespace {
@@ -125,6 +128,39 @@ const char* kind_label(ConstraintKind kind)
             return "soft normal";
     }
     return "";
+}
+
+std::string preparation_text(const SolverStatus& status, bool with_times)
+{
+    const PreparationProgress::Snapshot& p = status.preparation;
+    std::string text;
+    switch (p.phase)
+    {
+        case PreparationProgress::Phase::Assembling:
+            text = "building the terms and the system";
+            break;
+        case PreparationProgress::Phase::Ordering:
+            text = "ordering " + with_separators(p.unknowns) + " unknowns";
+            break;
+        case PreparationProgress::Phase::Factoring:
+        {
+            char flops[64];
+            std::snprintf(flops, sizeof flops, "factoring (%.1f Gflop)", p.flops / 1e9);
+            text = flops;
+            break;
+        }
+        case PreparationProgress::Phase::Done:
+            text = "solving";
+            break;
+    }
+    if (p.cancelled)
+        text += ", cancelled: stops when this phase ends";
+    else if (with_times && p.expected_seconds > 0)
+        text += ": " + std::to_string(std::lround(p.seconds)) + " s of about " +
+                std::to_string(std::max(1L, std::lround(p.expected_seconds)));
+    else if (with_times)
+        text += ": " + std::to_string(std::lround(p.seconds)) + " s";
+    return text;
 }
 
 } // namespace meshfair::app

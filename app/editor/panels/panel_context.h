@@ -49,6 +49,9 @@ void mesh_panel(const PanelContext& ui);
 void display_panel(const PanelContext& ui);
 void camera_panel(const PanelContext& ui);
 void status_bar(const PanelContext& ui);
+//! \brief While the solver prepares (a long factorization): its phase, a bar of its
+//! expected length and Cancel, over the top of the view, where the artist looks.
+void preparation_toast(const PanelContext& ui);
 void help_overlay(const PanelContext& ui);
 //! The active tool's ring, rectangle or lasso line, over the view.
 void tool_overlay(const EditorState& state);
@@ -57,6 +60,10 @@ void tool_overlay(const EditorState& state);
 inline constexpr float kSidePanelWidth = 340;
 
 const char* view_name(StandardView view);
+//! \brief What the solver's preparation is doing, for the panel and the status bar:
+//! "ordering 1,078,592 unknowns", "factoring (22.1 Gflop)", with "3 s of about 8" when
+//! `with_times` (not offscreen: frames must not depend on the clock).
+std::string preparation_text(const SolverStatus& status, bool with_times);
 const char* kind_label(ConstraintKind kind);
 
 } // namespace meshfair::app

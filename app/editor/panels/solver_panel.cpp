@@ -262,7 +262,7 @@ void solver_panel(const PanelContext& ui)
     if (ui.button("Step"))
         ui.give(Step{});
     ImGui::SameLine();
-    if (ui.button("Solve"))
+    if (ui.button("Solve", "solver/Solve")) // ("Solve" is the menu's)
         ui.give(Solve{});
     ImGui::SameLine();
     if (ui.button("Reset"))
@@ -271,6 +271,10 @@ void solver_panel(const PanelContext& ui)
     if (ui.button("Apply"))
         ui.give(ApplyShape{});
     const SolverStatus& st = state.solver;
+    if (st.preparing) // (its bar and Cancel over the view: preparation_toast)
+        ImGui::TextWrapped("preparing: %s", preparation_text(st, !state.offscreen).c_str());
+    else if (st.cancelled)
+        ImGui::TextWrapped("preparation cancelled: Solve, Play or Step prepares again");
     if (state.playing && st.goal > 0)
         ImGui::Text("running: step %d of %d", st.played, st.goal);
     else if (state.playing && st.relative_gradient >= 0)

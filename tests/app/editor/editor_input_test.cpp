@@ -5,8 +5,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <condition_variable>
 #include <filesystem>
 #include <memory>
+#include <mutex>
+#include <optional>
 #include <set>
 
 #include "app/editor/editor_frame.h"
@@ -111,6 +114,55 @@ struct Editor
         const ViewRect& v = session.view_rect();
         return {v.x + fx * v.width, v.y + fy * v.height, 0};
     }
+};
+
+// Holds the solver's thread where a phase of its preparation begins, until released.
+class PhaseGate
+{
+public:
+    //! The next preparation stops at `phase` (on the solver's thread).
+    void hold(PreparationProgress::Phase phase)
+    {
+        std::lock_guard lock(mutex_);
+        hold_ = phase;
+        held_ = false;
+    }
+    void wait_held()
+    {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return held_; });
+    }
+    void release()
+    {
+        {
+            std::lock_guard lock(mutex_);
+            hold_.reset();
+        }
+        changed_.notify_all();
+    }
+    //! The solver's listener.
+    void arrive(const PreparationProgress::Snapshot& p)
+    {
+        std::unique_lock lock(mutex_);
+        ++seen_;
+        if (hold_ != p.phase)
+            return;
+        held_ = true;
+        changed_.notify_all();
+        changed_.wait(lock, [&] { return !hold_; });
+    }
+    int phases_seen() const
+    {
+        std::lock_guard lock(mutex_);
+        return seen_;
+    }
+
+private:
+    mutable std::mutex mutex_;
+    std::condition_variable changed_;
+    std::optional<PreparationProgress::Phase> hold_;
+    bool held_ = false;
+    int seen_ = 0;
 };
 
 fs::path bunny_copy()
@@ -252,12 +304,14 @@ TEST_SUITE("Editor input")
         // Moving pins changes no set's elements: notes, holes and the border ring stay.
         CHECK(e.doc().versions.set_members == members);
         REQUIRE(e.doc().sets[0].targets.size() == pins.vertices.size());
-        // Targets away from the base; the solver puts the pins there at once.
+        // Targets away from the base; the solver puts the pins there once its thread has
+        // prepared the dome's recipe (the interface does not wait for it).
         const std::vector<Scalar>& base_shape = e.doc().base_positions;
         const Vec3 target = e.doc().sets[0].targets[0];
         CHECK(std::abs(target[0] - base_shape[i]) + std::abs(target[1] - base_shape[i + 1]) +
                   std::abs(target[2] - base_shape[i + 2]) >
               0);
+        e.session.settle_solver();
         e.run();
         CHECK(x[i] == target[0]);
         CHECK(x[i + 1] == target[1]);
@@ -278,6 +332,121 @@ TEST_SUITE("Editor input")
         CHECK(e.session.history().undo_label() == "normal direction");
         e.key("ctrl+z");
         CHECK(e.doc().sets[1].normals.empty());
+    }
+
+    TEST_CASE(
+        "a long preparation shows where it is, and Esc, the Cancel over the view or the menu stops "
+        "it")
+    {
+        Editor e(bunny_copy());
+        e.key("r");
+        e.drag({e.view_point(0.3, 0.3), e.view_point(0.7, 0.7)});
+        e.key("shift+r");
+        e.drag({e.view_point(0.48, 0.48), e.view_point(0.53, 0.53)});
+        e.key("shift+p");
+        REQUIRE(e.doc().sets.size() == 2);
+        const std::string pins = e.doc().sets[1].name;
+        const std::vector<Scalar> before = e.doc().mesh.positions;
+        // The solver's thread held where the ordering begins, as a large mesh's would stay
+        // there for seconds, until the test lets it go on.
+        PhaseGate gate;
+        e.session.observe_preparation(
+            [&gate](const PreparationProgress::Snapshot& p) { gate.arrive(p); });
+
+        // Enter solves: the box over the view and the panel show the phase; Esc cancels.
+        gate.hold(PreparationProgress::Phase::Ordering);
+        e.key("enter");
+        REQUIRE(e.doc().solver.method == Method::Direct);
+        const std::size_t steps = e.session.history().undo_count();
+        e.run(); // (the restart, at the frame after the key's)
+        gate.wait_held();
+        e.run();
+        const SolverStatus& st = e.session.state().solver;
+        CHECK(st.preparing);
+        CHECK(st.preparation.phase == PreparationProgress::Phase::Ordering);
+        CHECK(st.preparation.unknowns > 100);
+        CHECK(st.preparation.expected_seconds > 0);
+        e.widget("cancel preparation"); // the box's Cancel
+        // Pins moved meanwhile: the interface does not wait for the solver's thread.
+        REQUIRE(e.session.dispatch(cmd::MovePins{pins, {0.0, 0.01, 0.0}}));
+        e.key("escape");
+        CHECK(e.session.state().message.rfind("preparation cancelled", 0) == 0);
+        gate.release();
+        e.session.settle_solver();
+        e.run();
+        CHECK_FALSE(st.preparing);
+        CHECK(st.cancelled);
+        CHECK_FALSE(st.ready);
+        CHECK(st.error.empty());
+        CHECK_FALSE(e.frame.ui().widget("cancel preparation").has_value());
+        // Nothing was solved: the shape is as it was but for the pins moved, and the
+        // cancel is no undo step.
+        const std::vector<Scalar>& x = e.doc().mesh.positions;
+        std::vector<char> pinned(before.size() / 3, 0);
+        for (const Index v : e.doc().sets[1].vertices)
+            pinned[static_cast<size_t>(v)] = 1;
+        size_t same = 0;
+        for (size_t v = 0; v < pinned.size(); ++v)
+            same += !pinned[v] && std::equal(x.begin() + 3 * v, x.begin() + 3 * v + 3,
+                                             before.begin() + 3 * v)
+                        ? 1
+                        : 0;
+        CHECK(same == pinned.size() - e.doc().sets[1].vertices.size());
+        CHECK(e.session.history().undo_count() == steps + 1); // the pins moved
+        // Esc again: nothing to cancel.
+        e.key("escape");
+        CHECK(e.session.state().message == "nothing to cancel: the solver is not preparing");
+
+        // Solve prepares again (the sets did not change); the menu's Cancel stops it.
+        gate.hold(PreparationProgress::Phase::Ordering);
+        e.key("enter");
+        e.run();
+        gate.wait_held();
+        e.run();
+        REQUIRE(st.preparing);
+        e.click_widget("Solve");
+        e.click_widget("Solve/Cancel preparation");
+        gate.release();
+        e.session.settle_solver();
+        e.run();
+        CHECK(st.cancelled);
+        CHECK_FALSE(st.ready);
+
+        // Solve prepares again; the Cancel over the view stops it.
+        gate.hold(PreparationProgress::Phase::Ordering);
+        e.click_widget("Solve");
+        e.click_widget("Solve/Solve: the minimizer");
+        e.run();
+        gate.wait_held();
+        e.run();
+        REQUIRE(st.preparing);
+        e.click_widget("cancel preparation");
+        gate.release();
+        e.session.settle_solver();
+        e.run();
+        CHECK(st.cancelled);
+
+        // And the panel's Solve, let through: the minimizer of the sets with the pins
+        // where they were moved to.
+        e.click_widget("solver/Solve");
+        e.session.settle_solver();
+        e.run();
+        CHECK_FALSE(st.cancelled);
+        REQUIRE(st.ready);
+        CHECK(st.error.empty());
+        CHECK(gate.phases_seen() >= 4); // assembling, ordering, factoring, done
+        const std::vector<Scalar>& solved = e.doc().mesh.positions;
+        const size_t p = 3 * static_cast<size_t>(e.doc().sets[1].vertices[0]);
+        const Vec3 target = e.doc().sets[1].targets[0];
+        CHECK(solved[p + 1] == target[1]);
+        CHECK(target[1] == doctest::Approx(e.doc().base_positions[p + 1] + 0.01));
+        size_t moved = 0;
+        for (size_t v = 0; v < pinned.size(); ++v)
+            moved += !pinned[v] && !std::equal(solved.begin() + 3 * v, solved.begin() + 3 * v + 3,
+                                               before.begin() + 3 * v)
+                         ? 1
+                         : 0;
+        CHECK(moved > 100);
     }
 
     TEST_CASE("Play runs its steps and stops, each run and each change during one is a step")

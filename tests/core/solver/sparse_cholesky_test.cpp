@@ -9,7 +9,10 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <memory>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/energies/bending_term.h"
 #include "core/energies/edge_term.h"
@@ -19,6 +22,8 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/solver/free_hessian.h"
+#include "core/solver/free_system.h"
+#include "core/solver/preparation_progress.h"
 #include "core/solver/sparse_cholesky.h"
 #include "tests/helpers.h"
 
@@ -154,6 +159,70 @@ TEST_SUITE("SparseCholesky")
         else
             CHECK(threads() == 1);
         dlclose(blas);
+    }
+
+    TEST_CASE(
+        "the ordering and the factorization are reported as phases, and a cancel stops "
+        "the next one, with no conjugate gradients in its place")
+    {
+        const SymmetricMatrix a = shifted_path(300, 1);
+        auto progress = std::make_shared<PreparationProgress>();
+        std::vector<PreparationProgress::Snapshot> seen;
+        progress->set_listener([&](const PreparationProgress::Snapshot& p) { seen.push_back(p); });
+        SparseCholesky cholesky;
+        cholesky.report_to(progress);
+        cholesky.analyse(a);
+        REQUIRE(cholesky.factor(a));
+        REQUIRE(seen.size() == 2);
+        CHECK(seen[0].phase == PreparationProgress::Phase::Ordering);
+        CHECK(seen[0].unknowns == 300);
+        CHECK(seen[0].expected_seconds > 0);
+        CHECK(seen[1].phase == PreparationProgress::Phase::Factoring);
+        CHECK(seen[1].flops == cholesky.stats().factor_flops);
+        CHECK(seen[1].flops > 0);
+        CHECK(seen[1].expected_seconds > 0);
+        const PreparationProgress::Snapshot now = progress->snapshot();
+        CHECK(now.phase == PreparationProgress::Phase::Factoring);
+        CHECK(now.seconds >= 0);
+        CHECK(now.fraction() >= 0);
+        CHECK(now.fraction() < 1);
+        CHECK_FALSE(now.cancelled);
+
+        // Cancelled while the ordering runs (here: as it begins): no analysis, so no
+        // factorization, and the factor before it is gone.
+        progress->set_listener([&](const PreparationProgress::Snapshot& p) {
+            if (p.phase == PreparationProgress::Phase::Ordering)
+                progress->cancel();
+        });
+        CHECK_THROWS_AS(cholesky.analyse(shifted_path(200, 1)), PreparationCancelled);
+        CHECK(progress->snapshot().cancelled);
+        CHECK_FALSE(cholesky.factored());
+        CHECK_FALSE(cholesky.analysed_for(shifted_path(200, 1)));
+        CHECK_THROWS_AS(cholesky.factor(shifted_path(200, 1)), SolverError);
+
+        // Through the free system's solver: the cancel comes out as it is, where a failed
+        // factorization would have been solved by conjugate gradients with a note.
+        auto fresh = std::make_shared<PreparationProgress>();
+        fresh->set_listener([&](const PreparationProgress::Snapshot& p) {
+            if (p.phase == PreparationProgress::Phase::Factoring)
+                fresh->cancel(); // the analysis done, before its factorization
+        });
+        auto carrier = std::make_unique<SparseCholesky>();
+        carrier->report_to(fresh);
+        std::vector<std::string> notes;
+        CHECK_THROWS_AS(FreeSystemSolver(a, 1, false, 0, notes, std::move(carrier)),
+                        PreparationCancelled);
+        CHECK(notes.empty());
+        // Without a cancel the carrier's progress sees the phases of the factor it becomes.
+        auto watched = std::make_shared<PreparationProgress>();
+        int phases = 0;
+        watched->set_listener([&](const PreparationProgress::Snapshot&) { ++phases; });
+        carrier = std::make_unique<SparseCholesky>();
+        carrier->report_to(watched);
+        FreeSystemSolver solver(a, 1, false, 0, notes, std::move(carrier));
+        CHECK(phases == 2);
+        REQUIRE(solver.factorization() != nullptr);
+        CHECK(solver.factorization()->progress() == watched);
     }
 
     TEST_CASE("misuse is refused: no analysis, a wrong size, a malformed matrix")
