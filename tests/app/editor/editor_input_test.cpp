@@ -76,6 +76,16 @@ struct Editor
         input(drag_events(points, MouseButton::Left, mods));
     }
     void click(double x, double y) { drag({{x, y, 0}, {x, y, 0}}); }
+    // A region of the view's square [r0, r1]^2 (fractions of the view), then pins of
+    // [p0, p1]^2, each with the rectangle tool and its key.
+    void region_and_pins(double r0, double r1, double p0, double p1)
+    {
+        key("r");
+        drag({view_point(r0, r0), view_point(r1, r1)});
+        key("shift+r");
+        drag({view_point(p0, p0), view_point(p1, p1)});
+        key("shift+p");
+    }
     void key(const char* chord) { input(key_events(*parse_key_chord(chord))); }
     void type(const std::string& text)
     {
@@ -339,11 +349,7 @@ TEST_SUITE("Editor input")
         "it")
     {
         Editor e(bunny_copy());
-        e.key("r");
-        e.drag({e.view_point(0.3, 0.3), e.view_point(0.7, 0.7)});
-        e.key("shift+r");
-        e.drag({e.view_point(0.48, 0.48), e.view_point(0.53, 0.53)});
-        e.key("shift+p");
+        e.region_and_pins(0.3, 0.7, 0.48, 0.53);
         REQUIRE(e.doc().sets.size() == 2);
         const std::string pins = e.doc().sets[1].name;
         const std::vector<Scalar> before = e.doc().mesh.positions;
@@ -522,11 +528,7 @@ TEST_SUITE("Editor display")
     TEST_CASE("the region's ring takes its set's colour, each kind its own colour")
     {
         Editor e(bunny_copy());
-        e.key("r");
-        e.drag({e.view_point(0.3, 0.3), e.view_point(0.6, 0.6)});
-        e.key("shift+r");
-        e.drag({e.view_point(0.4, 0.4), e.view_point(0.45, 0.45)});
-        e.key("shift+p");
+        e.region_and_pins(0.3, 0.6, 0.4, 0.45);
         const std::array<float, 3> green{0.1f, 0.9f, 0.2f};
         e.session.dispatch(cmd::SetColor{"region 1", green});
         e.run();

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <dlfcn.h>
+#include <omp.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -140,13 +141,21 @@ TEST_SUITE("SparseCholesky")
         CHECK(cholesky.stats().analyse_seconds == 0);
     }
 
-    TEST_CASE("a small factor runs OpenBLAS on one thread, unless the environment says")
+    TEST_CASE(
+        "a small factor runs OpenBLAS on one thread, unless the environment says, and "
+        "OpenMP's regions as they were")
     {
         // The BLAS CHOLMOD loads (Debian's alternatives: OpenBLAS, which the setup
         // installs), loaded by the first factorization.
+        const int levels = omp_get_max_active_levels();
         SparseCholesky cholesky;
         cholesky.analyse(shifted_path(200, 1));
         REQUIRE(cholesky.factor(shifted_path(200, 1)));
+        std::vector<Scalar> b(200, 1);
+        cholesky.solve(b, 1);
+        // (CHOLMOD's own regions ran on one thread meanwhile: the setting is given back.)
+        CHECK(omp_get_max_active_levels() == levels);
+        CHECK(levels > 0);
         CHECK(cholesky.stats().factor_flops > 0);
         CHECK(cholesky.stats().factor_flops < 2e9);
         void* blas = dlopen("libblas.so.3", RTLD_NOW | RTLD_NOLOAD);
