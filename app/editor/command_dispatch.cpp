@@ -237,10 +237,10 @@ bool CommandExecutor::operator()(const cmd::Solve&) const
     }
     SolverSettings settings = d.solver;
     settings.method = Method::Direct;
-    // What the direct method does not take yet would leave nothing to show.
+    // What the direct method does not take would leave nothing to show (the volume it
+    // keeps: the minimizer under it).
     settings.optimal_step = false;
     settings.joint = false;
-    settings.keep_volume = false;
     d.solver = settings;
     say("solving for the minimizer of the sets (method: direct)");
     return true;

@@ -336,10 +336,6 @@ std::vector<std::string> constraint_problems(const std::vector<ConstraintSet>& a
     if (solves_for_minimizer(settings.method) && (settings.optimal_step || settings.joint))
         problems.push_back(
             "the direct method solves for the minimizer: no optimal lambda, no joint mode");
-    if (solves_for_minimizer(settings.method) && settings.keep_volume)
-        problems.push_back(
-            "the direct method does not keep volumes yet: turn 'keep volume' off or "
-            "choose Jacobi steps");
     return problems;
 }
 

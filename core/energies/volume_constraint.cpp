@@ -452,6 +452,22 @@ Scalar VolumeConstraint::volume(Index component, std::span<const Scalar> x) cons
 
 void VolumeConstraint::project(std::span<Scalar> x, std::span<const Index> hold)
 {
+    gather_gradient(x);
+    for (const Index v : hold)
+        std::fill_n(&gradient_[3 * static_cast<size_t>(v)], 3, Scalar(0));
+    move_to_targets(x);
+}
+
+void VolumeConstraint::project_along(std::span<Scalar> x, std::span<const Scalar> at,
+                                     const std::function<void(std::span<Scalar>)>& direction)
+{
+    gather_gradient(at);
+    direction(gradient_);
+    move_to_targets(x);
+}
+
+void VolumeConstraint::gather_gradient(std::span<const Scalar> x)
+{
     const Mesh& mesh = *mesh_;
     const Topology& topology = *topology_;
     const CornerWalk walk(mesh, topology);
@@ -469,8 +485,21 @@ void VolumeConstraint::project(std::span<Scalar> x, std::span<const Index> hold)
             gradient6(mesh, topology, walk, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
         });
         add_caps_gradient(component, x, g);
-        for (const Index v : hold) // (entries of other components are recomputed there)
-            std::fill_n(&g[3 * static_cast<std::ptrdiff_t>(v)], 3, Scalar(0));
+    }
+}
+
+void VolumeConstraint::move_to_targets(std::span<Scalar> x)
+{
+    const Mesh& mesh = *mesh_;
+    const Topology& topology = *topology_;
+    const CornerWalk walk(mesh, topology);
+    const Scalar* g = gradient_.data();
+    for (Index component = 0; component < component_count(); ++component)
+    {
+        const Index vbegin = vertex_offsets_[component],
+                    vcount = vertex_offsets_[component + 1] - vbegin;
+        if (!is_kept(component) || vcount == 0)
+            continue;
         // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
         // expanded in t, summed in one pass over the faces (each face's four terms, then
         // the block's sums; no per-face array: four sums over one would read it four
@@ -515,8 +544,9 @@ void VolumeConstraint::project(std::span<Scalar> x, std::span<const Index> hold)
         }
         cubic += caps;
         const Scalar* coefficient = cubic.c;
-        // Newton from t = 0 on 6 (V(t) - V_0). g is the gradient of 6 V, so the slope at 0
-        // is c1 = |g|^2: positive unless no free vertex moves the volume.
+        // Newton from t = 0 on 6 (V(t) - V_0). Along g, the gradient of 6 V, the slope at 0
+        // is c1 = |g|^2: positive unless no free vertex moves the volume (along A^-1 g, A
+        // positive definite, it is g^T A^-1 g > 0 too).
         const Scalar goal = 6 * target_[component];
         const auto residual = [&](Scalar t) {
             return coefficient[0] - goal +
@@ -543,6 +573,34 @@ void VolumeConstraint::project(std::span<Scalar> x, std::span<const Index> hold)
             const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
             for (int a = 0; a < 3; ++a)
                 x[i + a] += t * g[i + a];
+        });
+    }
+}
+
+void VolumeConstraint::remove_normal_part(std::span<const Scalar> x, std::span<Scalar> r)
+{
+    gather_gradient(x);
+    const Scalar* g = gradient_.data();
+    for (Index component = 0; component < component_count(); ++component)
+    {
+        const Index vbegin = vertex_offsets_[component],
+                    vcount = vertex_offsets_[component + 1] - vbegin;
+        if (!is_kept(component) || vcount == 0)
+            continue;
+        const auto dot = [&](const Scalar* a, const Scalar* b) {
+            return deterministic_sum(vcount, [&](Index k) {
+                const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
+                return a[i] * b[i] + a[i + 1] * b[i + 1] + a[i + 2] * b[i + 2];
+            });
+        };
+        const Scalar gg = dot(g, g);
+        if (!(gg > 0))
+            continue;
+        const Scalar f = dot(r.data(), g) / gg;
+        parallel_for(vcount, [&](Index k) {
+            const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
+            for (int a = 0; a < 3; ++a)
+                r[i + a] -= f * g[i + a];
         });
     }
 }

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -81,8 +82,23 @@ public:
     //! `hold`: free vertices left where they are this time (the gradient taken as 0 there),
     //! as after FlipGuard shortened their steps.
     void project(std::span<Scalar> x, std::span<const Index> hold = {});
+    //! \brief The same move along another direction: each kept component's free vertices of
+    //! x move along `direction(g)` (g the volume gradient at `at`, 3 #V, rewritten in place;
+    //! a direction the components do not mix) until its volume is V_0: the direct method's
+    //! step toward the constrained minimizer, the direction A_ff^-1 g (docs/math.md, "The
+    //! direct method with the volume kept").
+    void project_along(std::span<Scalar> x, std::span<const Scalar> at,
+                       const std::function<void(std::span<Scalar>)>& direction);
+    //! \brief r less its part along each kept component's volume gradient at x (r, 3 #V,
+    //! read and written at the components' free vertices): what is left of the energy's
+    //! gradient at a minimizer under the constraint (0 there), for the stopping rule.
+    void remove_normal_part(std::span<const Scalar> x, std::span<Scalar> r);
 
 private:
+    //! The volume gradient (times 6) of every kept component at x into gradient_.
+    void gather_gradient(std::span<const Scalar> x);
+    //! Each kept component's free vertices of x moved along gradient_ to the volume V_0.
+    void move_to_targets(std::span<Scalar> x);
     //! 6 times the volume of component c's caps at x (0 without caps).
     Scalar caps_volume6(Index component, std::span<const Scalar> x) const;
     //! Adds the caps' part of 6 dV/dx to g at the component's free vertices.

@@ -342,10 +342,6 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
             throw RecipeError("joint", "is not available with method " + name +
                                            " yet (the normals of joint mode move with the "
                                            "positions; use \"jacobi\")");
-        if (r.volume)
-            throw RecipeError("volume", "is not available with method " + name +
-                                            " yet (the volume is a constraint its linear "
-                                            "system does not hold; use \"jacobi\")");
     }
 }
 

@@ -345,18 +345,37 @@ StepInfo Session::direct_step(std::span<Scalar> x)
 {
     assemble_rhs(x);
     StepInfo info{1};
-    info.gradient = rhs_norm(system_, free_);
     if (!linear_)
         throw SolverError(
             "Session::step: the recipe's system was not factored (its "
             "precomputation failed, or its factorization was handed over)");
+    VolumeConstraint* volume = terms_->volume();
+    // The direct method minimizes under the volume; an implicit step projects onto it.
+    const bool constrained = minimizes_under_volume();
+    if (constrained)
+        volume_at_.assign(x.begin(), x.end()); // where r was assembled
     info.inner_iterations = linear_->add_solution(free_, system_.rhs, x);
+    if (constrained)
+    {
+        // The gradient where the step started, less its part along the constraint's: 0 at
+        // the constrained minimizer (system_.rhs is r there; the solve has read it).
+        volume->remove_normal_part(volume_at_, system_.rhs);
+        info.inner_iterations += keep_volume_minimizing(x);
+    }
+    info.gradient = rhs_norm(system_, free_);
     if (guard_)
         info.shortened = guard_jump(*guard_, free_, guard_start_, x);
-    note_minimizer(x, info.shortened);
-    if (VolumeConstraint* volume = terms_->volume()) // an implicit step's (only it has one)
-        volume->project(x);
+    if (!constrained)
+        note_minimizer(x, info.shortened); // (pins are followed only where x is affine in them)
+    if (volume != nullptr && (!constrained || info.shortened > 0))
+        volume->project(x); // an implicit step's, or after the guard shortened steps
     return info;
+}
+
+int Session::keep_volume_minimizing(std::span<Scalar> x)
+{
+    // (volume_at_ holds where the step started: on the constraint.)
+    return volume_minimizer_.minimize(*terms_->volume(), *linear_, free_, volume_at_, x);
 }
 
 void Session::assemble_rhs(std::span<const Scalar> x)
@@ -372,6 +391,8 @@ Scalar Session::gradient(std::span<const Scalar> x)
 {
     check_size(x, "gradient");
     assemble_rhs(x);
+    if (minimizes_under_volume())
+        terms_->volume()->remove_normal_part(x, system_.rhs);
     return rhs_norm(system_, free_);
 }
 
@@ -380,6 +401,8 @@ Session::Residual Session::residual(std::span<const Scalar> x)
     check_size(x, "residual");
     Residual out;
     assemble_rhs(x);
+    if (minimizes_under_volume())
+        terms_->volume()->remove_normal_part(x, system_.rhs);
     out.gradient = rhs_norm(system_, free_);
     if (free_.empty())
         return out;

@@ -17,6 +17,7 @@
 #include "core/solver/free_system.h"
 #include "core/solver/fused_jacobi.h"
 #include "core/solver/jacobi_system.h"
+#include "core/solver/volume_minimizer.h"
 
 namespace meshfair {
 
@@ -184,7 +185,9 @@ public:
     struct Residual
     {
         //! |r(x)|, the Euclidean norm over the free vertices: 0 exactly at the minimizer.
-        //! The direct method's stopping rule compares it with the input's.
+        //! The direct method's stopping rule compares it with the input's. With the volume
+        //! kept by the direct or CG method, r less its part along each component's volume
+        //! gradient: 0 at the minimizer under the constraint.
         Scalar gradient = 0;
         //! The largest length of a free vertex's generalized Jacobi displacement A_i^-1 r_i:
         //! how far one more Jacobi step would move a vertex.
@@ -248,6 +251,15 @@ private:
     //! One step of the direct or implicit method: dx_f = A_ff^-1 r_f(x), then the flip
     //! guard (guard_jump; general_step keeps the start) and an implicit step's volume.
     StepInfo direct_step(std::span<Scalar> x);
+    //! \brief From x, the unconstrained minimizer, to the minimizer with each kept
+    //! component's volume V_0 (VolumeMinimizer). Returns the conjugate gradients'
+    //! iterations of its solves (0: the factor).
+    int keep_volume_minimizing(std::span<Scalar> x);
+    //! The direct or CG method with the volume kept: the minimizer under the constraint.
+    bool minimizes_under_volume() const
+    {
+        return terms_->volume() != nullptr && solves_for_minimizer(recipe_.method);
+    }
     //! After a direct step on x: the minimizer's pins on record when x is the kept
     //! positions and follow_pins can follow it (pin_response.cpp).
     void note_minimizer(std::span<const Scalar> x, Index shortened);
@@ -291,6 +303,9 @@ private:
     //! recipe); empty: none on record
     std::vector<Scalar> minimizer_pins_;
     PinResponses pin_responses_;
+    //! The direct method with the volume: where the step started, and its minimizer.
+    std::vector<Scalar> volume_at_;
+    VolumeMinimizer volume_minimizer_;
     std::vector<Scalar> dx_;   //!< 3 #V, zero on non-free vertices
     std::vector<Scalar> x_;    //!< kept positions (set_positions)
     std::vector<Scalar> next_; //!< 3 #V: the fused step's output, when fused()
