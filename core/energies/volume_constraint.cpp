@@ -472,12 +472,7 @@ void VolumeConstraint::gather_gradient(std::span<const Scalar> x)
     const Topology& topology = *topology_;
     const CornerWalk walk(mesh, topology);
     Scalar* g = gradient_.data();
-    for (Index component = 0; component < component_count(); ++component)
-    {
-        const Index vbegin = vertex_offsets_[component],
-                    vcount = vertex_offsets_[component + 1] - vbegin;
-        if (!is_kept(component) || vcount == 0)
-            continue;
+    for_each_kept([&](Index component, Index vbegin, Index vcount) {
         // g_i = dV/dx_i (times 6), gathered over the corners of i: for the fan from corner
         // 0 of a face, d det(a, b, c) = (b x c) da + (c x a) db + (a x b) dc.
         parallel_for(vcount, [&](Index k) {
@@ -485,7 +480,7 @@ void VolumeConstraint::gather_gradient(std::span<const Scalar> x)
             gradient6(mesh, topology, walk, x, i, &g[3 * static_cast<std::ptrdiff_t>(i)]);
         });
         add_caps_gradient(component, x, g);
-    }
+    });
 }
 
 void VolumeConstraint::move_to_targets(std::span<Scalar> x)
@@ -494,12 +489,7 @@ void VolumeConstraint::move_to_targets(std::span<Scalar> x)
     const Topology& topology = *topology_;
     const CornerWalk walk(mesh, topology);
     const Scalar* g = gradient_.data();
-    for (Index component = 0; component < component_count(); ++component)
-    {
-        const Index vbegin = vertex_offsets_[component],
-                    vcount = vertex_offsets_[component + 1] - vbegin;
-        if (!is_kept(component) || vcount == 0)
-            continue;
+    for_each_kept([&](Index component, Index vbegin, Index vcount) {
         // V(x + t g) = (c0 + c1 t + c2 t^2 + c3 t^3) / 6: each fan triangle's determinant
         // expanded in t, summed in one pass over the faces (each face's four terms, then
         // the block's sums; no per-face array: four sums over one would read it four
@@ -553,7 +543,7 @@ void VolumeConstraint::move_to_targets(std::span<Scalar> x)
                    t * (coefficient[1] + t * (coefficient[2] + t * coefficient[3]));
         };
         if (!(coefficient[1] > 0))
-            continue; // no free vertex moves the volume
+            return; // no free vertex moves the volume
         Scalar t = 0;
         for (int iteration = 0; iteration < 50; ++iteration)
         {
@@ -568,25 +558,20 @@ void VolumeConstraint::move_to_targets(std::span<Scalar> x)
                 break;
         }
         if (!std::isfinite(t))
-            continue;
+            return;
         parallel_for(vcount, [&](Index k) {
             const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
             for (int a = 0; a < 3; ++a)
                 x[i + a] += t * g[i + a];
         });
-    }
+    });
 }
 
 void VolumeConstraint::remove_normal_part(std::span<const Scalar> x, std::span<Scalar> r)
 {
     gather_gradient(x);
     const Scalar* g = gradient_.data();
-    for (Index component = 0; component < component_count(); ++component)
-    {
-        const Index vbegin = vertex_offsets_[component],
-                    vcount = vertex_offsets_[component + 1] - vbegin;
-        if (!is_kept(component) || vcount == 0)
-            continue;
+    for_each_kept([&](Index, Index vbegin, Index vcount) {
         const auto dot = [&](const Scalar* a, const Scalar* b) {
             return deterministic_sum(vcount, [&](Index k) {
                 const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
@@ -595,14 +580,14 @@ void VolumeConstraint::remove_normal_part(std::span<const Scalar> x, std::span<S
         };
         const Scalar gg = dot(g, g);
         if (!(gg > 0))
-            continue;
+            return;
         const Scalar f = dot(r.data(), g) / gg;
         parallel_for(vcount, [&](Index k) {
             const std::ptrdiff_t i = 3 * static_cast<std::ptrdiff_t>(vertices_[vbegin + k]);
             for (int a = 0; a < 3; ++a)
                 r[i + a] -= f * g[i + a];
         });
-    }
+    });
 }
 
 } // namespace meshfair

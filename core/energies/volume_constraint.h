@@ -95,6 +95,19 @@ public:
     void remove_normal_part(std::span<const Scalar> x, std::span<Scalar> r);
 
 private:
+    //! f(component, first, count) for each kept component with free vertices: they are
+    //! vertices_[first, first + count).
+    template <class F>
+    void for_each_kept(F&& f) const
+    {
+        for (Index component = 0; component < component_count(); ++component)
+        {
+            const Index first = vertex_offsets_[component];
+            const Index count = vertex_offsets_[component + 1] - first;
+            if (is_kept(component) && count > 0)
+                f(component, first, count);
+        }
+    }
     //! The volume gradient (times 6) of every kept component at x into gradient_.
     void gather_gradient(std::span<const Scalar> x);
     //! Each kept component's free vertices of x moved along gradient_ to the volume V_0.
