@@ -25,6 +25,7 @@
 #include "app/editor/offscreen.h"
 #include "app/editor/script.h"
 #include "app/render/recording_renderer.h"
+#include "core/energies/volume_constraint.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
 #include "core/recipe/locality_run.h"
@@ -300,6 +301,51 @@ TEST_SUITE("Live solving")
         // Undo of Solve: back to Jacobi steps.
         REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().solver.method == Method::Jacobi);
+    }
+
+    TEST_CASE("Solve with 'keep volume': the minimizer under the volume, the command line's shape")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        // A region of most of the sphere, weakly anchored everywhere: the membrane would
+        // shrink it; the volume holds it.
+        b.rectangle(60, 40, 380, 280);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
+        REQUIRE(s.dispatch(cmd::RunSelection{SelectionCommand::All}));
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Anchor, "anchors"}));
+        SolverSettings settings = s.document().solver;
+        settings.anchor_mu = 0.05;
+        settings.keep_volume = true;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{settings}));
+        REQUIRE(s.problems().empty());
+        const Mesh base = file_order_mesh(s.document());
+        REQUIRE(s.dispatch(cmd::Solve{}));
+        CHECK(s.document().solver.method == Method::Direct);
+        CHECK(s.document().solver.keep_volume);
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(s.document().steps_from_base >= 1);
+        // The exported recipe ("direct" with the volume) gives the shape bit for bit.
+        CHECK(cli_reproduces(s, b.path, dir));
+        const Recipe r = read_recipe((dir / "recipe.json").string());
+        CHECK(r.method == Method::Direct);
+        REQUIRE(r.volume.has_value());
+        // The sphere's volume is the base's; without the volume the shape shrinks.
+        const Topology t = build_topology(base);
+        const std::vector<char> none(static_cast<size_t>(base.vertex_count()), 0);
+        const VolumeConstraint volume(base, t, base.positions, none);
+        REQUIRE(volume.component_count() == 1);
+        const std::vector<Scalar> solved = file_order_mesh(s.document()).positions;
+        CHECK(volume.volume(0, solved) ==
+              doctest::Approx(volume.target_volumes()[0]).epsilon(1e-12));
+        settings = s.document().solver;
+        settings.keep_volume = false;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{settings}));
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(volume.volume(0, file_order_mesh(s.document()).positions) <
+              (1 - 1e-4) * volume.target_volumes()[0]);
     }
 
     TEST_CASE("implicit steps in the editor: each step a backward-Euler step of the time set")
