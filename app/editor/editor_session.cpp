@@ -223,6 +223,12 @@ void EditorSession::listen_to_preparation()
         });
 }
 
+void EditorSession::settle_preparation()
+{
+    solver_.settle_preparation();
+    update();
+}
+
 void EditorSession::update()
 {
     const bool was_playing = solver_.playing();

@@ -101,6 +101,8 @@ public:
     //! method's minimizer solved) and shows its positions: what a script sees next is the
     //! shape for its last command, as a person sees it a moment later.
     void settle_solver();
+    //! SolverController::settle_preparation, then an update (scripts' widget clicks).
+    void settle_preparation();
 
     //! \brief Once per frame, before drawing: restarts the solver when the recipe or the
     //! shape changed, takes its newest positions, and autosaves when it is time.

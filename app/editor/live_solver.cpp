@@ -208,6 +208,12 @@ void LiveSolver::place_pins(std::span<const Scalar> targets)
     done_.notify_all();
 }
 
+void LiveSolver::wait_prepared()
+{
+    std::unique_lock lock(mutex_);
+    done_.wait(lock, [&] { return !preparing_ && !restart_; });
+}
+
 void LiveSolver::wait_idle()
 {
     std::unique_lock lock(mutex_);

@@ -126,6 +126,8 @@ public:
     //! Waits until the worker is idle (precomputed, not mid-frame, the direct method's
     //! minimizer solved); for tests and scripts.
     void wait_idle();
+    //! Waits until no restart is pending or being prepared (a run may go on playing).
+    void wait_prepared();
 
     //! \brief Also publish each vertex's share of `term` with every frame (a heat map;
     //! nullopt: none). Computed on the worker, at once for the current positions.

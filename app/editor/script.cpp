@@ -125,6 +125,11 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 break;
             case Kind::ClickWidget:
             {
+                // The panel as it is once the solver has prepared the last change: its
+                // lines change then (the reason "until converged" is greyed goes, or comes),
+                // moving what is below them; a person clicks what they see after it.
+                session.settle_preparation();
+                host.run_frame();
                 // A widget scrolled out of the side panel is scrolled to with the wheel over
                 // the panel, down then up, as a person does.
                 const ViewRect& v = session.view_rect();

@@ -71,6 +71,13 @@ public:
     void wait_for_heat() { settle(); }
     //! Restarts if needed and waits until the solver is idle, then takes its positions.
     void settle();
+    //! Restarts if needed and waits until the restart is prepared (a run goes on playing).
+    void settle_preparation()
+    {
+        update();
+        solver_.wait_prepared();
+        update();
+    }
     SolverStatus status() const { return solver_.status(); }
     //! The direct method's solves that the document's positions include (LiveSolver).
     int solves_shown() const { return solver_.solves_taken(); }

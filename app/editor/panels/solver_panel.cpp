@@ -271,9 +271,9 @@ void solver_panel(const PanelContext& ui)
     if (ui.button("Apply"))
         ui.give(ApplyShape{});
     const SolverStatus& st = state.solver;
-    if (st.preparing) // (its bar and Cancel over the view: preparation_toast)
-        ImGui::TextWrapped("preparing: %s", preparation_text(st, !state.offscreen).c_str());
-    else if (st.cancelled)
+    // (A preparation under way shows over the view, preparation_toast: a line here would
+    // come and go, moving what is below it under a pointer about to click.)
+    if (st.cancelled && !st.preparing)
         ImGui::TextWrapped("preparation cancelled: Solve, Play or Step prepares again");
     if (state.playing && st.goal > 0)
         ImGui::Text("running: step %d of %d", st.played, st.goal);
