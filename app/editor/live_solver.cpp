@@ -478,19 +478,19 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
                     if (!r.start.empty())
                         r.start[i] = place;
                 }
-        // The same mesh and the same parts: the topology of the run before is this run's
-        // (a dab of the smoothing brush changes weights, not connectivity), and its
-        // factorization, whose analysis is kept when only a weight changed (a slider; at
-        // 1.25M vertices 6 s of 15 are the analysis).
+        // The same mesh: the factorization of the run before, whose analysis is kept when
+        // the new system has its pattern (a weight's slider, "keep volume" ticked; at 1.25M
+        // vertices 6 s of 15 are the analysis); and with the same parts its topology too (a
+        // dab of the smoothing brush changes weights, not connectivity).
         std::unique_ptr<SparseCholesky> analysed;
         std::optional<Topology> topology;
-        if (previous && previous->topology().parts == required_topology(r.recipe) &&
-            previous->topology().vertex_count == r.base.vertex_count() &&
+        if (previous && previous->topology().vertex_count == r.base.vertex_count() &&
             previous->mesh().face_offsets == r.base.face_offsets &&
             previous->mesh().face_vertices == r.base.face_vertices)
         {
             analysed = previous->session().take_factorization();
-            topology = std::move(*previous).take_topology();
+            if (previous->topology().parts == required_topology(r.recipe))
+                topology = std::move(*previous).take_topology();
         }
         previous.reset(); // (its arrays go before the new run's are built)
         if (!topology)

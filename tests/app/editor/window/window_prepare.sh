@@ -7,7 +7,7 @@
 # shown. The thin
 # plate ticked prepares a new system; Esc cancels it: no factorization after the ordering
 # under way, the shape stays (a screenshot), the trace says so. Enter prepares it again and
-# shows its minimizer.
+# shows its minimizer; "keep volume" ticked then shows the minimizer under the volume.
 #   window_prepare.sh MESHFAIR MESHFAIR_CLI WORK_DIR
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
@@ -70,6 +70,18 @@ key Return
 wait_line "command solve: ok" 2
 wait_line "solved: the minimizer" 2
 [ "$(count_lines 'solver: factored')" = 2 ] || fail "Solve after the cancel did not factor"
+# "keep volume" ticked: the minimizer under the volume (the same pattern: factored on the
+# analysis kept), its recipe "direct" with the volume.
+click_widget "keep volume"
+wait_line "command solver settings: ok" 2
+wait_line "solver: factored on the analysis kept"
+wait_line "solved: the minimizer" 3
+export_recipe "volume-recipe.json"
+python3 - "$work/volume-recipe.json" <<'PY' || fail "the exported recipe is not the direct method with the volume"
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["method"] == "direct" and "volume" in r and "bending" in r, r.keys()
+PY
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
 key ctrl+q
 click_widget "Discard and quit"
