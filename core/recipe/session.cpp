@@ -360,7 +360,9 @@ StepInfo Session::direct_step(std::span<Scalar> x)
         // The gradient where the step started, less its part along the constraint's: 0 at
         // the constrained minimizer (system_.rhs is r there; the solve has read it).
         volume->remove_normal_part(volume_at_, system_.rhs);
-        info.inner_iterations += keep_volume_minimizing(x);
+        // From x*, the unconstrained minimizer, to the one under the volume.
+        info.inner_iterations +=
+            volume_minimizer_.minimize(*volume, *linear_, free_, volume_at_, x);
     }
     info.gradient = rhs_norm(system_, free_);
     if (guard_)
@@ -370,12 +372,6 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     if (volume != nullptr && (!constrained || info.shortened > 0))
         volume->project(x); // an implicit step's, or after the guard shortened steps
     return info;
-}
-
-int Session::keep_volume_minimizing(std::span<Scalar> x)
-{
-    // (volume_at_ holds where the step started: on the constraint.)
-    return volume_minimizer_.minimize(*terms_->volume(), *linear_, free_, volume_at_, x);
 }
 
 void Session::assemble_rhs(std::span<const Scalar> x)

@@ -251,10 +251,6 @@ private:
     //! One step of the direct or implicit method: dx_f = A_ff^-1 r_f(x), then the flip
     //! guard (guard_jump; general_step keeps the start) and an implicit step's volume.
     StepInfo direct_step(std::span<Scalar> x);
-    //! \brief From x, the unconstrained minimizer, to the minimizer with each kept
-    //! component's volume V_0 (VolumeMinimizer). Returns the conjugate gradients'
-    //! iterations of its solves (0: the factor).
-    int keep_volume_minimizing(std::span<Scalar> x);
     //! The direct or CG method with the volume kept: the minimizer under the constraint.
     bool minimizes_under_volume() const
     {

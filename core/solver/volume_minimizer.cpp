@@ -76,7 +76,6 @@ int VolumeMinimizer::minimize(VolumeConstraint& volume, FreeSystemSolver& solver
     }
     const Scalar tolerance = 1e-14 * bounding_box(base_).diagonal();
     int iterations = 0, kept = 0, next_column = 0;
-    evaluations_ = 0;
     for (int k = 0; k < kMostEvaluations; ++k)
     {
         // image = G(at): from x*, along A^-1 g(at), onto the volume.
@@ -86,7 +85,6 @@ int VolumeMinimizer::minimize(VolumeConstraint& volume, FreeSystemSolver& solver
             iterations += solver.add_solution(free, g, scratch_);
             std::copy(scratch_.begin(), scratch_.end(), g.begin());
         });
-        ++evaluations_;
         Scalar change = 0;
         for (const Index v : free)
             for (size_t a = 0; a < 3; ++a)
