@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/parallel/parallel.h"
 #include "core/solver/jacobi_system.h"
 
 namespace meshfair {
@@ -66,23 +67,22 @@ void JointTerm::update_normals(std::span<const Scalar> x, std::span<Scalar> u, S
                                std::span<Scalar> scratch) const
 {
     const Index faces = topology_->face_count;
-    // All minimizers from the old normals first (Jacobi), then the updates.
-    for (Index f = 0; f < faces; ++f)
-    {
+    // All minimizers from the old normals first (Jacobi), then the updates; each face's
+    // own work, the same bits on any thread count.
+    parallel_for(faces, [&](Index f) {
         Scalar* target = &scratch[3 * f];
         if (smoothing_->is_hard(f) || !minimizer(x, u, f, target))
             std::copy_n(&u[3 * f], 3, target);
-    }
-    for (Index f = 0; f < faces; ++f)
-    {
+    });
+    parallel_for(faces, [&](Index f) {
         if (smoothing_->is_hard(f))
-            continue;
+            return;
         Scalar next[3];
         for (int a = 0; a < 3; ++a)
             next[a] = u[3 * f + a] + lambda * (scratch[3 * f + a] - u[3 * f + a]);
         if (normalize3(next))
             std::copy_n(next, 3, &u[3 * f]);
-    }
+    });
 }
 
 } // namespace meshfair

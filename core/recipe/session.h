@@ -249,7 +249,8 @@ private:
     //! system_.rhs at the free vertices: r(x) = -1/2 dE/dx.
     void assemble_rhs(std::span<const Scalar> x);
     //! One step of the direct or implicit method: dx_f = A_ff^-1 r_f(x), then the flip
-    //! guard (guard_jump; general_step keeps the start) and an implicit step's volume.
+    //! guard (guard_jump; general_step keeps the start) and an implicit step's volume
+    //! (direct_step.cpp, with the right-hand side and the gradient).
     StepInfo direct_step(std::span<Scalar> x);
     //! The direct or CG method with the volume kept: the minimizer under the constraint.
     bool minimizes_under_volume() const
