@@ -218,6 +218,19 @@ public:
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
     bool conjugate_gradients() const { return linear_ && linear_->conjugate_gradients(); }
+    //! \brief Conjugate gradients stop after `limit` iterations a coordinate (0: at their
+    //! tolerance): each step is then a truncated solve that still lowers the energy, and
+    //! the steps after it go on from where it stopped (warm-started from its positions).
+    //! The editor's pin drag on a system it does not factor, a frame at a time
+    //! (FreeSystemSolver::limit_iterations). Not with the volume kept, whose fixed point
+    //! needs exact solves: there it has no effect. Kept until the next precomputation.
+    void limit_conjugate_gradients(int limit)
+    {
+        if (linear_ && !minimizes_under_volume())
+            linear_->limit_iterations(limit);
+    }
+    //! False when the last step's conjugate gradients stopped at their limit.
+    bool last_step_solved() const { return !linear_ || linear_->solved_to_tolerance(); }
 
     std::span<const Index> free_vertices() const { return free_; }
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.

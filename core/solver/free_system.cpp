@@ -138,6 +138,8 @@ int FreeSystemSolver::solve(std::span<Scalar> r)
     const size_t m = static_cast<size_t>(cg_->a.size);
     std::vector<Scalar> b(m);
     int iterations = 0;
+    const int cap = static_cast<int>(std::min<size_t>(4 * m + 100, 1000000));
+    solved_to_tolerance_ = true;
     for (size_t c = 0; c * m < r.size(); ++c)
     {
         const std::span<Scalar> d(r.data() + c * m, m);
@@ -145,8 +147,9 @@ int FreeSystemSolver::solve(std::span<Scalar> r)
         std::fill(d.begin(), d.end(), Scalar(0));
         const ConjugateGradientResult result =
             conjugate_gradient(cg_->a, cg_->inverse, block_, b, d, kConjugateGradientTolerance,
-                               static_cast<int>(std::min<size_t>(4 * m + 100, 1000000)));
+                               iteration_limit_ > 0 ? std::min(iteration_limit_, cap) : cap);
         iterations += result.iterations;
+        solved_to_tolerance_ &= result.relative_residual <= kConjugateGradientTolerance;
     }
     return iterations;
 }

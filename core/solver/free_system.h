@@ -67,6 +67,13 @@ public:
     //! cannot solve afterwards. nullptr when conjugate gradients solve.
     std::unique_ptr<SparseCholesky> take_factorization() { return std::move(cholesky_); }
     bool conjugate_gradients() const { return cg_.has_value(); }
+    //! \brief Conjugate gradients stop after `limit` iterations a right-hand side (0: at the
+    //! tolerance, the default): a truncated solve, d the minimizer of the quadratic over
+    //! the Krylov space so far, so that x + d still lowers the energy (the editor's pin
+    //! drag on a system too large to factor, a frame at a time). No effect on a factor.
+    void limit_iterations(int limit) { iteration_limit_ = limit; }
+    //! False when the last solve was truncated before the tolerance (limit_iterations).
+    bool solved_to_tolerance() const { return solved_to_tolerance_; }
 
 private:
     void use_conjugate_gradients(const SymmetricMatrix& a);
@@ -81,6 +88,8 @@ private:
     };
     std::optional<ConjugateGradientSystem> cg_;
     std::vector<Scalar> free_r_; //!< add_solution's r_f, then d_f, in solve()'s order
+    int iteration_limit_ = 0;
+    bool solved_to_tolerance_ = true;
 };
 
 } // namespace meshfair

@@ -730,6 +730,65 @@ TEST_SUITE("Live solving")
         CHECK(s.document().sets[1].targets.empty());
     }
 
+    TEST_CASE("a pin drag without a factor: conjugate gradients frame by frame to the minimizer")
+    {
+        // The method "cg" (a system too large to factor): each frame after a move of the
+        // pins runs a bounded number of conjugate-gradient iterations from the shape shown,
+        // so the drag never waits for a whole solve, and the frames end on the minimizer
+        // the direct method gives.
+        const fs::path dir = test::temp_dir();
+        Mesh sphere = test::icosphere(5); // 10,242 vertices: a region of thousands
+        test::perturb(sphere, 0.008, 7);
+        Editing b(dir, sphere);
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
+        b.rectangle(200, 140, 215, 155);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Pin, "pins"}));
+        SolverSettings cg = s.document().solver;
+        cg.method = Method::ConjugateGradient;
+        cg.bending = Bending{}; // the dome (the M tool keeps these settings)
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{cg}));
+        s.dispatch(cmd::SetTool{ToolKind::MovePins});
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        const std::vector<Scalar> rest = s.document().mesh.positions;
+        const int steps_before = s.solver_status().steps;
+
+        const ConstraintSet& pins = s.document().sets[1];
+        const size_t p = 3 * static_cast<size_t>(pins.vertices[0]);
+        const glm::dvec3 at =
+            s.camera().project({rest[p], rest[p + 1], rest[p + 2]}, kSessionWidth, kSessionHeight);
+        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
+        s.mouse_move(at.x, at.y - 40);
+        s.mouse_release(MouseButton::Left, at.x, at.y - 40);
+        s.settle_solver();
+        REQUIRE(s.solver_status().error.empty());
+        CHECK(s.document().solver.method == Method::ConjugateGradient);
+        // One move, several frames: the thin plate needs more iterations than a frame runs.
+        const int frames = s.solver_status().steps - steps_before;
+        CAPTURE(frames);
+        CHECK(frames >= 3);
+        CHECK(s.solver_status().converged);
+        const std::vector<Scalar> by_frames = s.document().mesh.positions;
+
+        // The direct method's minimizer of the same sets.
+        SolverSettings direct = s.document().solver;
+        direct.method = Method::Direct;
+        REQUIRE(s.dispatch(cmd::SetSolverSettings{direct}));
+        s.settle_solver();
+        const std::vector<Scalar>& minimizer = s.document().mesh.positions;
+        Scalar apart = 0, lifted = 0;
+        for (size_t k = 0; k < minimizer.size(); ++k)
+        {
+            apart = std::max(apart, std::abs(by_frames[k] - minimizer[k]));
+            lifted = std::max(lifted, std::abs(minimizer[k] - rest[k]));
+        }
+        const Scalar diagonal = meshfair::bounding_box(std::span<const Scalar>(rest)).diagonal();
+        CHECK(apart <= 1e-9 * diagonal);
+        CHECK(lifted > 1e-2 * diagonal); // the drag raised something
+    }
+
     TEST_CASE("what does not change the recipe restarts nothing, undoing a pin move puts pins back")
     {
         const fs::path dir = test::temp_dir();

@@ -659,6 +659,54 @@ TEST_SUITE("direct method")
             });
     }
 
+    TEST_CASE("truncated conjugate gradients lower the energy at every step, to the minimizer")
+    {
+        // Session::limit_conjugate_gradients: the editor's frames without a factor.
+        const Mesh m = test::open_grid(30, 30); // a plate, held at its border by pins
+        const Topology t = build_topology(m);
+        const Scalar diagonal = bounding_box(m.positions).diagonal();
+        Recipe r;
+        r.method = Method::ConjugateGradient;
+        r.bending = Bending{1.0, 0.0};
+        r.hard = HardVertices{{}, {}};
+        for (Index v = 0; v < m.vertex_count(); ++v)
+            if (v % 31 == 0 || v % 31 == 30 || v < 31 || v >= 31 * 30)
+                r.hard->vertices.push_back(v);
+        r.hard->vertices.push_back(15 * 31 + 15);
+        for (const Index v : r.hard->vertices)
+            r.hard->targets.push_back({m.positions[3 * v], m.positions[3 * v + 1],
+                                       m.positions[3 * v + 2] + (v == 15 * 31 + 15 ? 0.3 : 0)});
+        Recipe whole = r;
+        whole.method = Method::Direct;
+        Session direct(m, t, whole);
+        const DirectRun d = run_direct(direct, m);
+
+        Session cg(m, t, r);
+        cg.limit_conjugate_gradients(5);
+        std::vector<Scalar> x = m.positions;
+        cg.apply_hard_targets(x);
+        cg.set_positions(x);
+        Scalar energy = cg.energy().total();
+        for (int k = 0; k < 30; ++k)
+        {
+            cg.step();
+            CHECK_FALSE(cg.last_step_solved()); // the limit held
+            const Scalar now = cg.energy().total();
+            CHECK(now < energy);
+            energy = now;
+        }
+        const std::vector<Scalar> partway(cg.positions().begin(), cg.positions().end());
+        Scalar apart = 0;
+        for (size_t k = 0; k < partway.size(); ++k)
+            apart = std::max(apart, std::abs(partway[k] - d.result[k]));
+        CHECK(apart > 1e-6 * diagonal); // still on its way: the check below could fail
+        cg.limit_conjugate_gradients(0);
+        cg.step(); // a whole solve from where the truncated ones stopped
+        CHECK(cg.last_step_solved());
+        const std::vector<Scalar> got(cg.positions().begin(), cg.positions().end());
+        check_near(got, d.result, diagonal);
+    }
+
     TEST_CASE("over its factor budget the direct method solves by conjugate gradients, noted")
     {
         const Mesh m = noisy(test::icosphere(4), 0.01);
