@@ -7,7 +7,8 @@
 # Then the thin plate ticked in the solver panel; Enter (Solve) shows the minimizer of the
 # sets; the pins dragged up with M, the shape solved again at the moves; the thin plate's
 # weight slider dragged (factored on the analysis kept, which the trace says); saved, the recipe
-# exported; then implicit steps chosen in the method's menu, their time slider dragged and a
+# exported; then conjugate gradients chosen in the method's menu and the pins dragged with M
+# again, solved a frame at a time to the minimizer (screenshot cg-drag.png); then implicit steps chosen in the method's menu, their time slider dragged and a
 # run played (its recipe exported: "implicit" with the time set). Then:
 #  - meshfair-cli smooth of the base with the exported recipe ("method": "direct", the
 #    bending section) gives the saved shape (to 1e-9 of the bounding box's diagonal: the
@@ -95,6 +96,23 @@ key ctrl+s
 wait_line "command save: ok"
 export_recipe "solve-recipe.json"
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
+# Conjugate gradients chosen in the method's menu (a system too large to factor): the
+# minimizer shown again, then the pins dragged with M, solved a frame at a time to it.
+settings=$(count_lines "command solver settings: ok")
+solves=$(count_lines "solved: the minimizer")
+click_widget "method"
+click_widget "method/CG: the minimizer"
+wait_line "command solver settings: ok" $((settings + 1))
+wait_line "solved: the minimizer" $((solves + 1))
+gestures=$(count_lines "gesture move pins")
+key m
+drag 400 360 400 340 6
+wait_line "gesture move pins" $((gestures + 1))
+wait_line "solved: the minimizer" $((solves + 2))
+xwd -root -silent | convert xwd:- "$work/cg-drag.png"
+export_recipe "cg-recipe.json" 4
+grep -q '"method": "cg"' "$work/cg-recipe.json" || fail "the CG drag's recipe is not cg"
+[ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
 # Implicit steps chosen in the method's menu, their time dragged, Space: a run of
 # backward-Euler steps (after the save: the run is discarded at the end).
 settings=$(count_lines "command solver settings: ok")
@@ -106,7 +124,7 @@ drag "$tx" "$ty" $((tx + 40)) "$ty" 3
 wait_line "command solver settings: ok" $((settings + 2))
 key space
 wait_line "run stopped"
-export_recipe "implicit-recipe.json" 2
+export_recipe "implicit-recipe.json" 5
 [ "$(count_lines 'command .*: failed')" = 0 ] || fail "$(grep failed "$log" | head -3)"
 key ctrl+q # the run's shape is not saved: it asks
 click_widget "Discard and quit"
@@ -195,4 +213,4 @@ if not plate_near >= 1.2 * membrane_near:
     sys.exit("a horn, not a dome: the vertices next to the pins do not follow them")
 
 PY
-echo "ok: M raised a dome at once (the direct method with the thin plate, undone with the pins by one Ctrl+Z; picture: $work/dome.png); Enter solved the region with the thin plate; pins dragged with M solved again; the thin plate's weight dragged, factored on the analysis kept (picture: $work/analysis-kept.png); the saved shape is meshfair-cli's minimizer and a dome"
+echo "ok: M raised a dome at once (the direct method with the thin plate, undone with the pins by one Ctrl+Z; picture: $work/dome.png); Enter solved the region with the thin plate; pins dragged with M solved again; the thin plate's weight dragged, factored on the analysis kept (picture: $work/analysis-kept.png); CG chosen and the pins dragged, solved frame by frame (picture: $work/cg-drag.png); the saved shape is meshfair-cli's minimizer and a dome"
