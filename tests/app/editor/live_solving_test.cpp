@@ -88,6 +88,20 @@ struct Editing
     }
 };
 
+// Grabs the first pin of set `set` where it is drawn (its position in `rest`) with the tool
+// in hand and drags it up through `heights` pixels, released at the last.
+void drag_first_pin_up(EditorSession& s, size_t set, const std::vector<Scalar>& rest,
+                       std::initializer_list<double> heights)
+{
+    const size_t p = 3 * static_cast<size_t>(s.document().sets[set].vertices[0]);
+    const glm::dvec3 at =
+        s.camera().project({rest[p], rest[p + 1], rest[p + 2]}, kSessionWidth, kSessionHeight);
+    s.mouse_press(MouseButton::Left, {}, at.x, at.y);
+    for (const double h : heights)
+        s.mouse_move(at.x, at.y - h);
+    s.mouse_release(MouseButton::Left, at.x, at.y - *(heights.end() - 1));
+}
+
 // A region "patch" and pins "pins" inside it moved by `offset`, each made of a
 // rectangle's selection.
 void make_region_and_moved_pins(Editing& b, const Vec3& offset)
@@ -675,14 +689,9 @@ TEST_SUITE("Live solving")
         const size_t undo_before = s.history().undo_count();
 
         // Grab the first pin where it is drawn and drag it 40 pixels up.
+        drag_first_pin_up(s, 1, rest, {20, 40});
         const ConstraintSet& pins = s.document().sets[1];
         const size_t p = 3 * static_cast<size_t>(pins.vertices[0]);
-        const glm::dvec3 at =
-            s.camera().project({rest[p], rest[p + 1], rest[p + 2]}, kSessionWidth, kSessionHeight);
-        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
-        s.mouse_move(at.x, at.y - 20);
-        s.mouse_move(at.x, at.y - 40);
-        s.mouse_release(MouseButton::Left, at.x, at.y - 40);
         s.settle_solver();
         REQUIRE(s.solver_status().error.empty());
 
@@ -755,13 +764,7 @@ TEST_SUITE("Live solving")
         const std::vector<Scalar> rest = s.document().mesh.positions;
         const int steps_before = s.solver_status().steps;
 
-        const ConstraintSet& pins = s.document().sets[1];
-        const size_t p = 3 * static_cast<size_t>(pins.vertices[0]);
-        const glm::dvec3 at =
-            s.camera().project({rest[p], rest[p + 1], rest[p + 2]}, kSessionWidth, kSessionHeight);
-        s.mouse_press(MouseButton::Left, {}, at.x, at.y);
-        s.mouse_move(at.x, at.y - 40);
-        s.mouse_release(MouseButton::Left, at.x, at.y - 40);
+        drag_first_pin_up(s, 1, rest, {40});
         s.settle_solver();
         REQUIRE(s.solver_status().error.empty());
         CHECK(s.document().solver.method == Method::ConjugateGradient);
