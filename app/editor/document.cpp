@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/document.h"
 
+#include <atomic>
+
 namespace meshfair::app {
 
 Document load_document(const std::string& path)
@@ -36,7 +38,9 @@ Mesh file_order_mesh(const Document& d)
 
 Document make_document(Mesh mesh, std::string path)
 {
+    static std::atomic<std::uint64_t> documents_made{0};
     Document d;
+    d.id = ++documents_made;
     d.path = std::move(path);
     d.mesh = std::move(mesh);
     d.order = identity_order(d.mesh.vertex_count(), d.mesh.face_count());

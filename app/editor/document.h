@@ -44,6 +44,10 @@ struct ShapeRecipe
 struct Document
 {
     std::string path; //!< the file it came from or was last saved to
+    //! Unique to each document made (make_document): with versions.base, what keys the
+    //! base shape the solver shares (SolverController), so that a copy is made only when the
+    //! base changes, never per restart.
+    std::uint64_t id = 0;
     //! \brief The mesh in the locality numbering MeshFair solves in (as meshfair-cli does),
     //! so that the solver, the normals and the tools stream memory on large meshes. Every
     //! index the editor keeps (selections, sets) is in this numbering; files (meshes,

@@ -94,6 +94,7 @@ public:
     //! playing stopped instead. For scripts, which need no display's pace.
     bool take_frame();
     SolverStatus solver_status() const { return solver_.status(); }
+    const SolverController& solver() const { return solver_; }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     //! Waits for the solver's shares of the heat map's term and shows them (scripts).
     void wait_for_heat();

@@ -55,10 +55,20 @@ LiveSolver::~LiveSolver()
 void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
                          std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces)
 {
+    restart(std::make_shared<const Mesh>(std::move(base)),
+            std::make_shared<const LocalityOrder>(std::move(order)), std::move(recipe),
+            std::move(start),
+            std::make_shared<const VertexFaces>(
+                VertexFaces{std::move(vertex_face_offsets), std::move(vertex_faces)}));
+}
+
+void LiveSolver::restart(std::shared_ptr<const Mesh> base,
+                         std::shared_ptr<const LocalityOrder> order, Recipe recipe,
+                         std::vector<Scalar> start, std::shared_ptr<const VertexFaces> vertex_faces)
+{
     {
         std::lock_guard lock(mutex_);
-        restart_ = Restart{std::move(base),         std::move(order),
-                           std::move(recipe),       std::move(vertex_face_offsets),
+        restart_ = Restart{std::move(base), std::move(order), std::move(recipe),
                            std::move(vertex_faces), std::move(start)};
         ++generation_;
         pending_pins_.reset(); // the recipe has the newest targets
@@ -246,8 +256,8 @@ void LiveSolver::wait_idle()
 
 void LiveSolver::compute_display(std::span<const Scalar> x, const Mesh& mesh)
 {
-    update_display_geometry(x, mesh, vertex_face_offsets_, vertex_faces_, display_run_, changing_,
-                            display_back_);
+    update_display_geometry(x, mesh, vertex_faces_->offsets, vertex_faces_->faces, display_run_,
+                            changing_, display_back_);
 }
 
 bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry, int& steps)
@@ -264,6 +274,12 @@ bool LiveSolver::take(std::vector<Scalar>& positions, DisplayGeometry& geometry,
     }
     wake_.notify_all(); // a playing worker waits for this
     return true;
+}
+
+const Mesh* LiveSolver::run_mesh() const
+{
+    std::lock_guard lock(mutex_);
+    return run_ ? &run_->mesh() : nullptr;
 }
 
 int LiveSolver::solves_taken() const
@@ -506,19 +522,20 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
     try
     {
         progress->enter(PreparationProgress::Phase::Assembling);
-        check_recipe(r.recipe, r.base);
+        const Mesh& base = *r.base;
+        check_recipe(r.recipe, base);
         // The pins go where the recipe puts them: their targets, or without targets their
         // place in the base shape, wherever a run before put them. Only if one of them
         // moves are the start positions published: otherwise the interface already shows
         // them, and taking them would change nothing.
-        const std::vector<Scalar>& shown = r.start.empty() ? r.base.positions : r.start;
+        const std::vector<Scalar>& shown = r.start.empty() ? base.positions : r.start;
         if (r.recipe.hard)
             for (size_t k = 0; k < r.recipe.hard->vertices.size(); ++k)
                 for (size_t a = 0; a < 3; ++a)
                 {
                     const size_t i = 3 * static_cast<size_t>(r.recipe.hard->vertices[k]) + a;
                     const Scalar place = r.recipe.hard->targets.empty()
-                                             ? r.base.positions[i]
+                                             ? base.positions[i]
                                              : r.recipe.hard->targets[k][a];
                     p.moved = p.moved || shown[i] != place;
                     if (!r.start.empty())
@@ -530,9 +547,10 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
         // dab of the smoothing brush changes weights, not connectivity).
         std::unique_ptr<SparseCholesky> analysed;
         std::optional<Topology> topology;
-        if (previous && previous->topology().vertex_count == r.base.vertex_count() &&
-            previous->mesh().face_offsets == r.base.face_offsets &&
-            previous->mesh().face_vertices == r.base.face_vertices)
+        if (previous && (previous->shared_mesh() == r.base ||
+                         (previous->topology().vertex_count == base.vertex_count() &&
+                          previous->mesh().face_offsets == base.face_offsets &&
+                          previous->mesh().face_vertices == base.face_vertices)))
         {
             analysed = previous->session().take_factorization();
             if (previous->topology().parts == required_topology(r.recipe))
@@ -540,24 +558,22 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
         }
         previous.reset(); // (its arrays go before the new run's are built)
         if (!topology)
-            topology = build_topology(r.base, required_topology(r.recipe));
+            topology = build_topology(base, required_topology(r.recipe));
         if (!analysed)
             analysed = std::make_unique<SparseCholesky>();
         analysed->report_to(progress);
-        p.run = std::make_unique<LocalityRun>(std::move(r.base), std::move(r.order), r.recipe,
-                                              std::move(*topology), std::move(analysed));
-        if (!r.start.empty())
-            p.run->session().set_positions(r.start);
+        p.run = std::make_unique<LocalityRun>(r.base, r.order, r.recipe, std::move(*topology),
+                                              std::move(analysed), std::move(r.start));
         p.notes = p.run->session().notes();
         if (const SparseCholesky* f = p.run->session().factorization())
             p.factor_stats = f->stats();
         p.energy = p.run->energy();
-        vertex_face_offsets_ = std::move(r.vertex_face_offsets);
-        vertex_faces_ = std::move(r.vertex_faces);
+        vertex_faces_ = r.vertex_faces;
         // Frames of this run recompute and upload only what its steps move.
         display_run_ = new_display_run();
-        changing_ = std::make_shared<const ChangingPart>(changing_part(
-            p.run->mesh(), vertex_face_offsets_, vertex_faces_, p.run->session().free_vertices()));
+        changing_ = std::make_shared<const ChangingPart>(
+            changing_part(p.run->mesh(), vertex_faces_->offsets, vertex_faces_->faces,
+                          p.run->session().free_vertices()));
         // Published only when a pin moved: the interface shows the start otherwise, and
         // the next steps publish their own (a brush dab steps at once).
         if (p.moved)

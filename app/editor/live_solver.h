@@ -62,6 +62,13 @@ struct SolverStatus
     std::uint64_t energy_version = 0; //!< changes of the energy curve so far
 };
 
+//! The faces around each vertex (the draw data's vertex_face_offsets and vertex_faces), from
+//! which the solver's thread computes each frame's display geometry.
+struct VertexFaces
+{
+    std::vector<Index> offsets, faces;
+};
+
 //! \brief The editor's solver: a LocalityRun (the command line's pipeline) of the
 //! document's base shape and recipe, stepped on a worker thread while playing, so that the
 //! interface never waits for it, or on the caller's thread for a step or a script.
@@ -87,6 +94,14 @@ public:
     //! and moved on: a restart per dab of the smoothing brush copies the mesh once, not twice.
     void restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
                  std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces);
+    //! \brief The same with the base mesh, the order and the faces around each vertex
+    //! shared with the caller and never copied (the editor's document: a restart per
+    //! slider value or brush dab copies no mesh; the run before's topology and factor are
+    //! kept without comparing connectivities when the base is the same object). They must
+    //! stay unchanged while a run holds them: a new shape is a new object.
+    void restart(std::shared_ptr<const Mesh> base, std::shared_ptr<const LocalityOrder> order,
+                 Recipe recipe, std::vector<Scalar> start,
+                 std::shared_ptr<const VertexFaces> vertex_faces);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
     //! \brief Stops the restart pending or being prepared (a long factorization): it is
@@ -144,6 +159,9 @@ public:
     //! moved) the positions last taken include: a trace can say when the shape shown is the
     //! minimizer.
     int solves_taken() const;
+    //! The mesh the current run solves on (the base given to restart, when shared), or
+    //! nullptr without a run.
+    const Mesh* run_mesh() const;
     SolverStatus status() const;
     //! The energy after each published frame of the current run (step 0 first).
     std::vector<EnergySample> energies() const;
@@ -165,10 +183,10 @@ private:
     std::condition_variable done_;   // to callers: a frame published, a restart finished
     struct Restart
     {
-        Mesh base;
-        LocalityOrder order;
+        std::shared_ptr<const Mesh> base;
+        std::shared_ptr<const LocalityOrder> order;
         Recipe recipe;
-        std::vector<Index> vertex_face_offsets, vertex_faces;
+        std::shared_ptr<const VertexFaces> vertex_faces;
         std::vector<Scalar> start;
     };
     //! What a restart's preparation made: the run (null when it failed or was cancelled)
@@ -222,7 +240,7 @@ private:
     bool solving_ = false;          // the worker runs a direct solve (not a played frame)
     std::vector<Scalar> back_;      // file order, being written (while busy_)
     DisplayGeometry display_published_, display_back_;
-    std::vector<Index> vertex_face_offsets_, vertex_faces_; // of the run (set at a restart)
+    std::shared_ptr<const VertexFaces> vertex_faces_; // of the run (set at a restart)
     //! The display geometry's run (a new one at each restart and when pins move: positions
     //! outside the free vertices change) and the part of it the steps change.
     std::uint64_t display_run_ = 0;

@@ -128,10 +128,10 @@ void SolverController::restart_if_needed()
         // From the base (the recipe's input shape), starting at the current positions.
         const bool at_base = document_.steps_from_base == 0;
         cancelled_ = false; // prepared again
-        solver_.restart(base_mesh(document_), document_.order,
+        share_base();
+        solver_.restart(shared_base_, shared_order_,
                         build_recipe(sets, settings, document_.mesh, document_.base_positions, 0),
-                        at_base ? std::vector<Scalar>{} : document_.mesh.positions,
-                        document_.draw_data.vertex_face_offsets, document_.draw_data.vertex_faces);
+                        at_base ? std::vector<Scalar>{} : document_.mesh.positions, shared_faces_);
         if (!at_base)
             document_.reproducible = document_.reproducible && shape_made_by_current_recipe();
         steps_at_restart_ = document_.steps_from_base;
@@ -139,6 +139,24 @@ void SolverController::restart_if_needed()
             solver_.resume();
     }
     running_ = std::make_shared<const ShapeRecipe>(ShapeRecipe{sets, settings});
+}
+
+void SolverController::share_base()
+{
+    if (shared_document_ != document_.id || !shared_order_)
+    {
+        shared_order_ = std::make_shared<const LocalityOrder>(document_.order);
+        shared_faces_ = std::make_shared<const VertexFaces>(
+            VertexFaces{document_.draw_data.vertex_face_offsets, document_.draw_data.vertex_faces});
+        shared_base_.reset();
+        shared_document_ = document_.id;
+    }
+    if (!shared_base_ || shared_base_version_ != document_.versions.base)
+    {
+        shared_base_ = std::make_shared<const Mesh>(base_mesh(document_));
+        shared_base_version_ = document_.versions.base;
+        ++base_copies_;
+    }
 }
 
 bool SolverController::update()

@@ -83,6 +83,14 @@ public:
     int solves_shown() const { return solver_.solves_taken(); }
     std::vector<EnergySample> energies() const { return solver_.energies(); }
     std::vector<std::string> notes() const { return solver_.notes(); }
+    //! How many base shapes were made for the solver's runs: one per document and per change
+    //! of its base (Apply, noise, undo of them), never one per restart.
+    int base_copies() const { return base_copies_; }
+    //! The current run solves on that shared base, not on a copy of it.
+    bool run_shares_base() const
+    {
+        return shared_base_ != nullptr && solver_.run_mesh() == shared_base_.get();
+    }
 
 private:
     //! The run since it began (or since the last segment) as one undo step.
@@ -95,9 +103,18 @@ private:
     //! is what the current sets and settings give after as many steps.
     bool shape_made_by_current_recipe() const;
 
+    //! The base shape, order and faces around each vertex the solver's runs share (made once
+    //! per document, the base again when it changes: versions.base), never copied per restart.
+    void share_base();
+
     Document& document_;
     History& history_;
     LiveSolver solver_;
+    std::uint64_t shared_document_ = 0, shared_base_version_ = 0;
+    std::shared_ptr<const Mesh> shared_base_;
+    std::shared_ptr<const LocalityOrder> shared_order_;
+    std::shared_ptr<const VertexFaces> shared_faces_;
+    int base_copies_ = 0;
     std::vector<std::string> problems_;
     std::optional<DocumentVersions> problems_for_;
     //! The sets and settings the solver runs (null: no run), as the shapes it makes record.

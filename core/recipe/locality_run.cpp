@@ -74,6 +74,23 @@ LocalityRun::LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe
     session_.adopt_positions(std::move(mesh_.positions));
 }
 
+LocalityRun::LocalityRun(std::shared_ptr<const Mesh> renumbered_mesh,
+                         std::shared_ptr<const LocalityOrder> order,
+                         const Recipe& renumbered_recipe, Topology topology,
+                         std::unique_ptr<SparseCholesky> analysed, std::vector<Scalar> start)
+    : shared_order_(std::move(order)),
+      shared_mesh_(std::move(renumbered_mesh)),
+      topology_(checked(std::move(topology), *shared_mesh_, renumbered_recipe)),
+      session_(*shared_mesh_, topology_, renumbered_recipe, shared_order_->vertex_order,
+               std::move(analysed))
+{
+    const bool from_mesh = start.empty();
+    std::vector<Scalar> x = from_mesh ? shared_mesh_->positions : std::move(start);
+    if (from_mesh)
+        session_.apply_hard_targets(x);
+    session_.adopt_positions(std::move(x));
+}
+
 Topology LocalityRun::take_topology() &&
 {
     return std::move(topology_);
@@ -81,6 +98,12 @@ Topology LocalityRun::take_topology() &&
 
 LocalityRun::Released LocalityRun::release() &&
 {
+    if (shared_mesh_)
+    {
+        mesh_.face_offsets = shared_mesh_->face_offsets;
+        mesh_.face_vertices = shared_mesh_->face_vertices;
+        order_ = *shared_order_;
+    }
     mesh_.positions = session_.release_positions();
     return {std::move(mesh_), std::move(order_)};
 }

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -42,6 +43,16 @@ public:
     //! \throw SolverError when its counts or parts are not those (what can be checked cheaply).
     LocalityRun(Mesh renumbered_mesh, LocalityOrder order, const Recipe& renumbered_recipe,
                 Topology topology, std::unique_ptr<SparseCholesky> analysed = nullptr);
+    //! \brief The same run on a mesh and an order shared with the caller, never copied (the
+    //! editor's document: one connectivity for the document, every restart's run and the
+    //! display; a restart per slider value or brush dab copies no mesh). The session keeps
+    //! positions of its own: `start` (3 #V, pins placed by the caller), or the mesh's with
+    //! the pins at their targets when empty. release() copies the shared mesh.
+    //! \pre as above; the mesh and order stay unchanged while the run holds them.
+    LocalityRun(std::shared_ptr<const Mesh> renumbered_mesh,
+                std::shared_ptr<const LocalityOrder> order, const Recipe& renumbered_recipe,
+                Topology topology, std::unique_ptr<SparseCholesky> analysed,
+                std::vector<Scalar> start);
 
     //! One step on the kept positions.
     StepInfo step() { return session_.step(); }
@@ -49,12 +60,14 @@ public:
     Session& session() { return session_; }
     const Session& session() const { return session_; }
     //! The mesh in the locality numbering (its positions are the session's until released).
-    const Mesh& mesh() const { return mesh_; }
+    const Mesh& mesh() const { return shared_mesh_ ? *shared_mesh_ : mesh_; }
+    //! The shared mesh, or nullptr when the run owns its mesh.
+    const std::shared_ptr<const Mesh>& shared_mesh() const { return shared_mesh_; }
     const Topology& topology() const { return topology_; }
     //! The numbering, internal to file: vertex_order and face_order. Their inverses (file
     //! to internal; 12 bytes a vertex the solve does not read) are dropped before the
     //! topology and the session are built; file_order_mesh rebuilds them.
-    const LocalityOrder& order() const { return order_; }
+    const LocalityOrder& order() const { return shared_order_ ? *shared_order_ : order_; }
 
     //! \brief Ends the run: the renumbered mesh with the current positions, and its order.
     //! Renumber it back with file_order_mesh once the run is gone, so that the solver's
@@ -80,8 +93,11 @@ private:
     static Renumbered renumber(Mesh mesh, const Recipe& recipe);
     explicit LocalityRun(Renumbered r);
 
+    // Owned (the command line's, Python's), or shared (the editor's): mesh() and order().
     LocalityOrder order_;
+    std::shared_ptr<const LocalityOrder> shared_order_;
     Mesh mesh_;
+    std::shared_ptr<const Mesh> shared_mesh_;
     Topology topology_;
     Session session_;
 };

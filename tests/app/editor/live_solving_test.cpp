@@ -792,6 +792,43 @@ TEST_SUITE("Live solving")
         CHECK(lifted > 1e-2 * diagonal); // the drag raised something
     }
 
+    TEST_CASE("restarts share the document's base: a copy per base, none per restart")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        b.rectangle(120, 80, 300, 220);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Region, "patch"}));
+        s.settle_solver();
+        const int restarts = s.solver_status().restarts;
+        // A slider dragged through values: a restart each, on the same base.
+        for (const double lambda : {0.4, 0.3, 0.2})
+        {
+            SolverSettings settings = s.document().solver;
+            settings.lambda = lambda;
+            REQUIRE(s.dispatch(cmd::SetSolverSettings{settings}));
+            s.settle_solver();
+            CHECK(s.solver().run_shares_base());
+        }
+        CHECK(s.solver_status().restarts >= restarts + 3);
+        CHECK(s.solver().base_copies() == 1);
+        // A new base (Apply): one copy more, and the run is on it.
+        s.dispatch(cmd::Step{3});
+        REQUIRE(s.dispatch(cmd::ApplyShape{}));
+        s.settle_solver();
+        CHECK(s.solver().base_copies() == 2);
+        CHECK(s.solver().run_shares_base());
+        // Undone: the base before, made again, and the run's shape is the command line's.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        s.settle_solver();
+        CHECK(s.solver().base_copies() == 3);
+        CHECK(s.solver().run_shares_base());
+        s.dispatch(cmd::ResetShape{});
+        s.dispatch(cmd::Step{2});
+        CHECK(s.document().reproducible);
+        CHECK(cli_reproduces(s, b.path, dir));
+    }
+
     TEST_CASE("what does not change the recipe restarts nothing, undoing a pin move puts pins back")
     {
         const fs::path dir = test::temp_dir();

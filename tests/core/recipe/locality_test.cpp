@@ -189,4 +189,53 @@ TEST_SUITE("Session")
             LocalityRun(work, order, normals, build_topology(work, required_topology(second))),
             SolverError);
     }
+
+    TEST_CASE("a run on a shared mesh gives the bits of a run on its own copy, and changes none")
+    {
+        // The editor's restarts share the document's base, order and connectivity.
+        Mesh m = test::icosphere(3);
+        test::perturb(m, 0.03, 13);
+        const LocalityOrder order = locality_order(m);
+        const auto shared = std::make_shared<const Mesh>(reorder_mesh(m, order));
+        const auto shared_order = std::make_shared<const LocalityOrder>(order);
+        const Mesh kept = *shared;
+        Recipe r;
+        r.iterations = 4;
+        r.region = Region{test::all_indices(shared->vertex_count() / 2), {}};
+        r.hard = HardVertices{{0, 5}, {{0.1, 0.2, 0.3}, {-0.1, 0.0, 0.4}}};
+        const Topology t = build_topology(*shared, required_topology(r));
+        for (const bool from_start : {false, true})
+        {
+            CAPTURE(from_start);
+            std::vector<Scalar> start;
+            if (from_start)
+            {
+                start = shared->positions;
+                start[3 * 7] += 0.01; // a shape of its own, pins placed by the caller
+                for (size_t k = 0; k < r.hard->vertices.size(); ++k)
+                    std::copy_n(r.hard->targets[k].begin(), 3,
+                                &start[3 * static_cast<size_t>(r.hard->vertices[k])]);
+            }
+            LocalityRun on_shared(shared, shared_order, r, t, nullptr, start);
+            LocalityRun owned(*shared, order, r, t);
+            if (from_start)
+                owned.session().set_positions(start);
+            CHECK(&on_shared.mesh() == shared.get());
+            CHECK(on_shared.order().vertex_order == order.vertex_order);
+            for (int k = 0; k < 4; ++k)
+            {
+                on_shared.step();
+                owned.step();
+            }
+            CHECK(std::equal(
+                on_shared.session().positions().begin(), on_shared.session().positions().end(),
+                owned.session().positions().begin(), owned.session().positions().end()));
+            CHECK(on_shared.session().positions()[3] != shared->positions[3]); // it moved
+            // Released, it is a mesh of its own with the run's positions.
+            const LocalityRun::Released released = std::move(on_shared).release();
+            CHECK(released.mesh.face_vertices == shared->face_vertices);
+            CHECK(released.mesh.positions != shared->positions);
+        }
+        CHECK(*shared == kept); // nothing written into the shared mesh
+    }
 }
