@@ -91,7 +91,7 @@ public:
     //! Returns at once: the precomputation happens on the worker. Stops playing.
     //! `vertex_face_offsets` and `vertex_faces` (the draw data's faces around each vertex)
     //! let the solver's thread compute the display geometry of each frame. Taken by value
-    //! and moved on: a restart per dab of the smoothing brush copies the mesh once, not twice.
+    //! (and shared from then on); the editor shares its own (the overload below).
     void restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
                  std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces);
     //! \brief The same with the base mesh, the order and the faces around each vertex
