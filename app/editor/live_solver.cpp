@@ -20,22 +20,14 @@ constexpr size_t kMaxEnergySamples = 20000;
 // to rounding when the guard or rounding left something (DirectConvergence stops them).
 constexpr int kDirectSolveSteps = 4;
 
-// A frame of conjugate gradients (no factor) runs kTruncatedWork / #free iterations a
-// coordinate, 4 to 400: its time grows with the stencil, not with the mesh.
-constexpr double kTruncatedWork = 3e6;
+// A frame of conjugate gradients (no factor) runs kProgressiveWork / #free iterations a
+// right-hand side, 4 to 400: about the same work a frame at any size up to 750k free.
+constexpr double kProgressiveWork = 3e6;
 
-int truncated_iterations(size_t free_count)
+int progressive_iterations(size_t free_count)
 {
     return static_cast<int>(std::clamp(
-        kTruncatedWork / static_cast<double>(std::max<size_t>(free_count, 1)), 4.0, 400.0));
-}
-
-// Past a whole solve's worth of truncated iterations (conjugate gradients' own cap for the
-// system, three coordinates), the next frame solves to the tolerance: the frames end.
-int truncated_iteration_cap(const Session& session)
-{
-    return static_cast<int>(
-        std::min<size_t>(3 * (4 * session.free_vertices().size() + 100), 3000000));
+        kProgressiveWork / static_cast<double>(std::max<size_t>(free_count, 1)), 4.0, 400.0));
 }
 
 } // namespace
@@ -234,7 +226,7 @@ void LiveSolver::place_pins(std::span<const Scalar> targets)
     std::swap(display_back_, display_published_);
     fresh_ = true;
     solve_due_ = solves_for_minimizer(session.recipe().method);
-    truncated_.reset(); // the solve for these pins judged from where they leave the shape
+    progressive_ = false; // the step for these pins begins where they leave the shape
     done_.notify_all();
 }
 
@@ -370,7 +362,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     const auto t = std::chrono::steady_clock::now();
     int done = 0;
     bool converged_now = false;
-    bool solve_goes_on = false; // a truncated solve's frame: the next one is due
+    bool solve_goes_on = false; // a frame of a progressive solve: the next one is due
     Scalar relative_gradient = -1;
     Session& session = run_->session();
     if (solves_for_minimizer(session.recipe().method))
@@ -384,30 +376,31 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             done = 1;
             converged_now = true;
         }
-        else if (solving_ && session.conjugate_gradients())
+        else if (solving_ && session.can_solve_progressively())
         {
-            // No factor: conjugate gradients a frame at a time, each frame's truncated
-            // solve going on from the last one's positions, until the rule stops them. A
-            // pin moved meanwhile starts another solve (place_pins) and the frames go on
-            // from the shape shown; the last step is a whole solve, so the frames end.
-            if (!truncated_)
-                truncated_.emplace(TruncatedSolve{DirectConvergence(session.recipe().tolerance)});
-            const int limit = truncated_iterations(session.free_vertices().size());
-            const bool last = truncated_->iterations >= truncated_iteration_cap(session);
-            session.limit_conjugate_gradients(last ? 0 : limit);
-            const StepInfo info = run_->step();
-            session.limit_conjugate_gradients(0);
-            truncated_->iterations += info.inner_iterations;
+            // No factor: the step's conjugate gradients a frame at a time, the same sequence
+            // going on from frame to frame (its iterations those of one solve), each frame
+            // showing the shape so far (lower in energy every frame). A pin moved meanwhile
+            // begins another step from the shape shown (place_pins). Once solved, the rule
+            // judges it as a direct step.
+            if (!progressive_)
+            {
+                session.begin_progressive_solve();
+                progressive_ = true;
+            }
+            bool finished = false;
+            const StepInfo info = session.advance_progressive_solve(
+                progressive_iterations(session.free_vertices().size()), finished);
             done = 1;
-            converged_now =
-                truncated_->rule.stop_after(info.gradient, session.gradient(session.positions()),
-                                            session.last_step_solved()) ||
-                last;
-            solve_goes_on = !converged_now;
-            if (converged_now)
-                truncated_.reset();
+            solve_goes_on = !finished;
+            if (finished)
+            {
+                progressive_ = false;
+                converged_now =
+                    rule.stop_after(info.gradient, session.gradient(session.positions()));
+            }
         }
-        for (; done < n && !converged_now; ++done)
+        for (; done < n && !converged_now && !solve_goes_on; ++done)
         {
             const StepInfo info = run_->step();
             converged_now = rule.stop_after(info.gradient, session.gradient(session.positions()));
@@ -705,7 +698,7 @@ void LiveSolver::worker()
             else
             {
                 run_ = std::move(p.run);
-                truncated_.reset();
+                progressive_ = false;
                 status_.ready = run_ != nullptr;
                 status_.error = p.error;
                 status_.cancelled = p.cancelled;

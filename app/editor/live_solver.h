@@ -14,7 +14,6 @@
 
 #include "app/render/mesh_draw_data.h"
 #include "core/recipe/locality_run.h"
-#include "core/recipe/run.h"
 #include "core/solver/preparation_progress.h"
 
 namespace meshfair::app {
@@ -257,14 +256,9 @@ private:
     // The direct method's run shows its minimizer by itself: solved on the worker after a
     // restart and after the pins move, without playing.
     bool solve_due_ = false;
-    //! A solve by conjugate gradients a frame at a time (no factor): its rule, from the
-    //! first frame after the pins moved, and the iterations so far.
-    struct TruncatedSolve
-    {
-        DirectConvergence rule;
-        int iterations = 0;
-    };
-    std::optional<TruncatedSolve> truncated_; // (the worker's, or under the lock)
+    //! A step solved by conjugate gradients a frame at a time (no factor) is under way
+    //! (Session::begin_progressive_solve); the worker's, or under the lock.
+    bool progressive_ = false;
     std::optional<EnergyTerm> heat_term_;
     bool heat_dirty_ = false;           // shares wanted for the current positions
     std::vector<float> heat_published_; // colours (heat_colors), newest

@@ -45,6 +45,37 @@ StepInfo Session::direct_step(std::span<Scalar> x)
     return info;
 }
 
+void Session::begin_progressive_solve()
+{
+    if (!has_positions_ || !can_solve_progressively())
+        throw SolverError(
+            "Session::begin_progressive_solve: no positions, or the step is not "
+            "solved by conjugate gradients");
+    can_revert_ = false;
+    minimizer_pins_.clear();
+    assemble_rhs(x_);
+    progressive_gradient_ = rhs_norm(system_, free_);
+    progressive_start_.assign(x_.begin(), x_.end());
+    linear_->begin_progressive(free_, system_.rhs);
+}
+
+StepInfo Session::advance_progressive_solve(int limit, bool& finished)
+{
+    if (progressive_start_.size() != x_.size())
+        throw SolverError("Session::advance_progressive_solve: no progressive solve begun");
+    const int before = linear_->progressive_iterations();
+    finished = linear_->advance_progressive(limit, free_, progressive_start_, x_);
+    StepInfo info{1};
+    info.gradient = progressive_gradient_;
+    info.inner_iterations = linear_->progressive_iterations() - before;
+    if (guard_)
+        info.shortened = guard_jump(*guard_, free_, progressive_start_, x_);
+    forget_fixed_energy();
+    if (finished)
+        progressive_start_ = {};
+    return info;
+}
+
 void Session::assemble_rhs(std::span<const Scalar> x)
 {
     if (system_.rhs.size() != 3 * static_cast<size_t>(vertex_count_))

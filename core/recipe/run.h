@@ -27,15 +27,13 @@ public:
     {
     }
     //! A step that started at gradient `started` (StepInfo::gradient) and ended at `now`;
-    //! true when the run stops here. A step truncated on purpose (`complete` false:
-    //! Session::limit_conjugate_gradients) is stopped by the tolerance alone: its gradient
-    //! falls, but not by half each time nor steadily.
-    bool stop_after(Scalar started, Scalar now, bool complete = true)
+    //! true when the run stops here.
+    bool stop_after(Scalar started, Scalar now)
     {
         if (steps_++ == 0)
             first_ = started;
         relative_ = first_ > 0 ? now / first_ : 0;
-        const bool stalled = complete && steps_ > 1 && now >= Scalar(0.5) * last_;
+        const bool stalled = steps_ > 1 && now >= Scalar(0.5) * last_;
         last_ = now;
         return relative_ <= tolerance_ || stalled;
     }

@@ -218,19 +218,23 @@ public:
     //! True when the minimizer's steps are solved by conjugate gradients ("cg", or the
     //! direct method over its factor budget: notes() says why).
     bool conjugate_gradients() const { return linear_ && linear_->conjugate_gradients(); }
-    //! \brief Conjugate gradients stop after `limit` iterations a coordinate (0: at their
-    //! tolerance): each step is then a truncated solve that still lowers the energy, and
-    //! the steps after it go on from where it stopped (warm-started from its positions).
-    //! The editor's pin drag on a system it does not factor, a frame at a time
-    //! (FreeSystemSolver::limit_iterations). Not with the volume kept, whose fixed point
-    //! needs exact solves: there it has no effect. Kept until the next precomputation.
-    void limit_conjugate_gradients(int limit)
+    //! \brief The minimizer's step solved by conjugate gradients over several calls (the
+    //! editor's frames on a system it does not factor, FreeSystemSolver::begin_progressive):
+    //! possible for the direct and CG methods without a factor nor the volume.
+    bool can_solve_progressively() const
     {
-        if (linear_ && !minimizes_under_volume())
-            linear_->limit_iterations(limit);
+        return linear_ && linear_->conjugate_gradients() && !minimizes_under_volume() &&
+               solves_for_minimizer(recipe_.method);
     }
-    //! False when the last step's conjugate gradients stopped at their limit.
-    bool last_step_solved() const { return !linear_ || linear_->solved_to_tolerance(); }
+    //! Begins the step at the kept positions (the right-hand side there).
+    //! \pre can_solve_progressively().
+    void begin_progressive_solve();
+    //! \brief At most `limit` more iterations a coordinate of the step begun; the kept
+    //! positions become its start plus the solution so far, through the flip guard (each
+    //! call lowers the energy). `finished`: the step is solved (the tolerance, or conjugate
+    //! gradients' cap). StepInfo::gradient is the gradient where the step began,
+    //! inner_iterations the iterations of this call.
+    StepInfo advance_progressive_solve(int limit, bool& finished);
 
     std::span<const Index> free_vertices() const { return free_; }
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.
@@ -315,6 +319,9 @@ private:
     PinResponses pin_responses_;
     //! The direct method with the volume: where the step started, and its minimizer.
     std::vector<Scalar> volume_at_;
+    //! The progressive step: where it began, and the gradient there.
+    std::vector<Scalar> progressive_start_;
+    Scalar progressive_gradient_ = 0;
     VolumeMinimizer volume_minimizer_;
     std::vector<Scalar> dx_;   //!< 3 #V, zero on non-free vertices
     std::vector<Scalar> x_;    //!< kept positions (set_positions)

@@ -105,69 +105,91 @@ std::vector<Scalar> block_jacobi_inverse(const SymmetricRows& a, int block)
     return inverse;
 }
 
+ConjugateGradient::ConjugateGradient(const SymmetricRows& a, std::span<const Scalar> inverse_blocks,
+                                     int block, std::span<const Scalar> b, std::span<Scalar> x)
+    : a_(&a), inverse_(inverse_blocks), block_(block), x_(x)
+{
+    const auto n = static_cast<size_t>(a.size);
+    b_norm_ = std::sqrt(dot(b, b));
+    if (n == 0 || b_norm_ == 0)
+    {
+        std::fill(x.begin(), x.end(), Scalar(0));
+        return;
+    }
+    r_.resize(n);
+    z_.resize(n);
+    ap_.resize(n);
+    a.multiply(x, ap_);
+    parallel_for(static_cast<Index>(n), [&](Index i) {
+        r_[static_cast<size_t>(i)] = b[static_cast<size_t>(i)] - ap_[static_cast<size_t>(i)];
+    });
+    r_norm_ = std::sqrt(dot(r_, r_));
+    precondition(r_, z_);
+    p_ = z_;
+    rz_ = dot(r_, z_);
+}
+
+Scalar ConjugateGradient::dot(std::span<const Scalar> u, std::span<const Scalar> v) const
+{
+    return deterministic_sum(static_cast<Index>(a_->size), [&](Index i) {
+        return u[static_cast<size_t>(i)] * v[static_cast<size_t>(i)];
+    });
+}
+
+void ConjugateGradient::precondition(std::span<const Scalar> r, std::span<Scalar> z) const
+{
+    const int block = block_;
+    const auto bb = static_cast<size_t>(block) * static_cast<size_t>(block);
+    parallel_for(static_cast<Index>(a_->size) / block, [&](Index v) {
+        const Scalar* m = &inverse_[static_cast<size_t>(v) * bb];
+        const size_t at = static_cast<size_t>(v) * static_cast<size_t>(block);
+        for (int i = 0; i < block; ++i)
+        {
+            Scalar s = 0;
+            for (int j = 0; j < block; ++j)
+                s += m[i * block + j] * r[at + static_cast<size_t>(j)];
+            z[at + static_cast<size_t>(i)] = s;
+        }
+    });
+}
+
+ConjugateGradientResult ConjugateGradient::iterate(Scalar tolerance, int max_iterations)
+{
+    const Index ni = static_cast<Index>(a_->size);
+    int done = 0;
+    while (b_norm_ > 0 && r_norm_ > tolerance * b_norm_ && done < max_iterations)
+    {
+        a_->multiply(p_, ap_);
+        const Scalar alpha = rz_ / dot(p_, ap_);
+        parallel_for(ni, [&](Index i) {
+            const auto k = static_cast<size_t>(i);
+            x_[k] += alpha * p_[k];
+            r_[k] -= alpha * ap_[k];
+        });
+        ++done;
+        ++iterations_;
+        r_norm_ = std::sqrt(dot(r_, r_));
+        precondition(r_, z_);
+        const Scalar rz_next = dot(r_, z_);
+        const Scalar beta = rz_next / rz_;
+        rz_ = rz_next;
+        parallel_for(ni, [&](Index i) {
+            const auto k = static_cast<size_t>(i);
+            p_[k] = z_[k] + beta * p_[k];
+        });
+    }
+    ConjugateGradientResult result;
+    result.iterations = iterations_;
+    result.relative_residual = b_norm_ > 0 ? r_norm_ / b_norm_ : 0;
+    return result;
+}
+
 ConjugateGradientResult conjugate_gradient(const SymmetricRows& a,
                                            std::span<const Scalar> inverse_blocks, int block,
                                            std::span<const Scalar> b, std::span<Scalar> x,
                                            Scalar tolerance, int max_iterations)
 {
-    const auto n = static_cast<size_t>(a.size);
-    const Index ni = static_cast<Index>(a.size);
-    const auto dot = [&](std::span<const Scalar> u, std::span<const Scalar> v) {
-        return deterministic_sum(
-            ni, [&](Index i) { return u[static_cast<size_t>(i)] * v[static_cast<size_t>(i)]; });
-    };
-    const auto precondition = [&](std::span<const Scalar> r, std::span<Scalar> z) {
-        const auto bb = static_cast<size_t>(block) * static_cast<size_t>(block);
-        parallel_for(ni / block, [&](Index v) {
-            const Scalar* m = &inverse_blocks[static_cast<size_t>(v) * bb];
-            const size_t at = static_cast<size_t>(v) * static_cast<size_t>(block);
-            for (int i = 0; i < block; ++i)
-            {
-                Scalar s = 0;
-                for (int j = 0; j < block; ++j)
-                    s += m[i * block + j] * r[at + static_cast<size_t>(j)];
-                z[at + static_cast<size_t>(i)] = s;
-            }
-        });
-    };
-    ConjugateGradientResult result;
-    const Scalar b_norm = std::sqrt(dot(b, b));
-    if (n == 0 || b_norm == 0)
-    {
-        std::fill(x.begin(), x.end(), Scalar(0));
-        return result;
-    }
-    std::vector<Scalar> r(n), z(n), p(n), ap(n);
-    a.multiply(x, ap);
-    parallel_for(ni, [&](Index i) {
-        r[static_cast<size_t>(i)] = b[static_cast<size_t>(i)] - ap[static_cast<size_t>(i)];
-    });
-    Scalar r_norm = std::sqrt(dot(r, r));
-    precondition(r, z);
-    p = z;
-    Scalar rz = dot(r, z);
-    while (r_norm > tolerance * b_norm && result.iterations < max_iterations)
-    {
-        a.multiply(p, ap);
-        const Scalar alpha = rz / dot(p, ap);
-        parallel_for(ni, [&](Index i) {
-            const auto k = static_cast<size_t>(i);
-            x[k] += alpha * p[k];
-            r[k] -= alpha * ap[k];
-        });
-        ++result.iterations;
-        r_norm = std::sqrt(dot(r, r));
-        precondition(r, z);
-        const Scalar rz_next = dot(r, z);
-        const Scalar beta = rz_next / rz;
-        rz = rz_next;
-        parallel_for(ni, [&](Index i) {
-            const auto k = static_cast<size_t>(i);
-            p[k] = z[k] + beta * p[k];
-        });
-    }
-    result.relative_residual = r_norm / b_norm;
-    return result;
+    return ConjugateGradient(a, inverse_blocks, block, b, x).iterate(tolerance, max_iterations);
 }
 
 } // namespace meshfair

@@ -32,6 +32,37 @@ struct ConjugateGradientResult
     Scalar relative_residual = 0;
 };
 
+//! \brief Preconditioned conjugate gradients for A x = b (conjugate_gradient, below) that can
+//! stop and go on: iterate() runs some iterations, a later call continues the same
+//! sequence, so that iterations spread over calls give the bits of one run of as many.
+//! Each iterate leaves x the minimizer of the quadratic over the Krylov space so far. The
+//! matrix, the inverted blocks and x must outlive it and stay unchanged between calls (x is
+//! written by it only).
+class ConjugateGradient
+{
+public:
+    //! Starts at x (warm start); b is read here only.
+    ConjugateGradient(const SymmetricRows& a, std::span<const Scalar> inverse_blocks, int block,
+                      std::span<const Scalar> b, std::span<Scalar> x);
+    //! At most max_iterations more, until |b - A x| <= tolerance |b|; the iterations and
+    //! the relative residual since the start.
+    ConjugateGradientResult iterate(Scalar tolerance, int max_iterations);
+    //! Iterations since the start.
+    int iterations() const { return iterations_; }
+
+private:
+    Scalar dot(std::span<const Scalar> u, std::span<const Scalar> v) const;
+    void precondition(std::span<const Scalar> r, std::span<Scalar> z) const;
+
+    const SymmetricRows* a_;
+    std::span<const Scalar> inverse_;
+    int block_;
+    std::span<Scalar> x_;
+    std::vector<Scalar> r_, z_, p_, ap_;
+    Scalar b_norm_ = 0, r_norm_ = 0, rz_ = 0;
+    int iterations_ = 0;
+};
+
 //! \brief Preconditioned conjugate gradients for A x = b, A symmetric positive definite,
 //! with the block-Jacobi preconditioner of A's diagonal blocks of `block` unknowns (1: the
 //! diagonal; 3: a vertex's 3x3 block), inverted once by the caller (block_jacobi_inverse).

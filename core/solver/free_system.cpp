@@ -17,6 +17,12 @@ namespace {
 // minimizer to rounding, as the factor gives it (the run's rule then stops the steps).
 constexpr Scalar kConjugateGradientTolerance = 1e-13;
 
+// Conjugate gradients' cap on iterations for a system of m unknowns.
+int iteration_cap(size_t m)
+{
+    return static_cast<int>(std::min<size_t>(4 * m + 100, 1000000));
+}
+
 const char* const kNotPositiveDefinite =
     "the system of the free vertices is not positive definite in double precision (weights "
     "many orders of magnitude apart: closer ones make it so)";
@@ -101,25 +107,41 @@ void FreeSystemSolver::use_conjugate_gradients(const SymmetricMatrix& a)
     cg_ = std::move(cg);
 }
 
+size_t FreeSystemSolver::order_of(size_t free_count, Index k, int a) const
+{
+    // By vertex with blocks, else by coordinate (3 columns).
+    return block_ == 3 ? 3 * static_cast<size_t>(k) + static_cast<size_t>(a)
+                       : static_cast<size_t>(a) * free_count + static_cast<size_t>(k);
+}
+
+void FreeSystemSolver::gather(std::span<const Index> free, std::span<const Scalar> r,
+                              std::vector<Scalar>& out) const
+{
+    out.resize(3 * free.size());
+    parallel_for(static_cast<Index>(free.size()), [&](Index k) {
+        for (int a = 0; a < 3; ++a)
+            out[order_of(free.size(), k, a)] = r[3 * static_cast<size_t>(free[k]) + a];
+    });
+}
+
+void FreeSystemSolver::scatter(std::span<const Index> free, std::span<const Scalar> d,
+                               std::span<const Scalar> x0, std::span<Scalar> x) const
+{
+    parallel_for(static_cast<Index>(free.size()), [&](Index k) {
+        for (int a = 0; a < 3; ++a)
+        {
+            const size_t i = 3 * static_cast<size_t>(free[k]) + a;
+            x[i] = x0[i] + d[order_of(free.size(), k, a)];
+        }
+    });
+}
+
 int FreeSystemSolver::add_solution(std::span<const Index> free, std::span<const Scalar> r,
                                    std::span<Scalar> x)
 {
-    // r_f in the solver's order: by vertex with blocks, else by coordinate (3 columns).
-    const Index n = static_cast<Index>(free.size());
-    const auto at = [&](Index k, int a) {
-        return block_ == 3 ? 3 * static_cast<size_t>(k) + a
-                           : static_cast<size_t>(a) * static_cast<size_t>(n) + k;
-    };
-    free_r_.resize(3 * free.size());
-    parallel_for(n, [&](Index k) {
-        for (int a = 0; a < 3; ++a)
-            free_r_[at(k, a)] = r[3 * static_cast<size_t>(free[k]) + a];
-    });
+    gather(free, r, free_r_);
     const int iterations = solve(free_r_);
-    parallel_for(n, [&](Index k) {
-        for (int a = 0; a < 3; ++a)
-            x[3 * static_cast<size_t>(free[k]) + a] += free_r_[at(k, a)];
-    });
+    scatter(free, free_r_, x, x);
     return iterations;
 }
 
@@ -138,20 +160,57 @@ int FreeSystemSolver::solve(std::span<Scalar> r)
     const size_t m = static_cast<size_t>(cg_->a.size);
     std::vector<Scalar> b(m);
     int iterations = 0;
-    const int cap = static_cast<int>(std::min<size_t>(4 * m + 100, 1000000));
-    solved_to_tolerance_ = true;
+    const int cap = iteration_cap(m);
     for (size_t c = 0; c * m < r.size(); ++c)
     {
         const std::span<Scalar> d(r.data() + c * m, m);
         std::copy(d.begin(), d.end(), b.begin());
         std::fill(d.begin(), d.end(), Scalar(0));
-        const ConjugateGradientResult result =
-            conjugate_gradient(cg_->a, cg_->inverse, block_, b, d, kConjugateGradientTolerance,
-                               iteration_limit_ > 0 ? std::min(iteration_limit_, cap) : cap);
+        const ConjugateGradientResult result = conjugate_gradient(
+            cg_->a, cg_->inverse, block_, b, d, kConjugateGradientTolerance, cap);
         iterations += result.iterations;
-        solved_to_tolerance_ &= result.relative_residual <= kConjugateGradientTolerance;
     }
     return iterations;
+}
+
+void FreeSystemSolver::begin_progressive(std::span<const Index> free, std::span<const Scalar> r)
+{
+    if (!cg_)
+        throw SolverError("FreeSystemSolver::begin_progressive: a factor solves this system");
+    gather(free, r, progressive_b_);
+    progressive_d_.assign(progressive_b_.size(), 0);
+    progressive_.clear();
+    const size_t m = static_cast<size_t>(cg_->a.size);
+    for (size_t c = 0; c * m < progressive_b_.size(); ++c)
+        progressive_.emplace_back(cg_->a, cg_->inverse, block_,
+                                  std::span<const Scalar>(progressive_b_.data() + c * m, m),
+                                  std::span<Scalar>(progressive_d_.data() + c * m, m));
+}
+
+bool FreeSystemSolver::advance_progressive(int limit, std::span<const Index> free,
+                                           std::span<const Scalar> x0, std::span<Scalar> x)
+{
+    if (!cg_ || progressive_d_.size() != 3 * free.size())
+        throw SolverError("FreeSystemSolver::advance_progressive: no progressive solve begun");
+    const int cap = iteration_cap(static_cast<size_t>(cg_->a.size));
+    bool done = true;
+    for (ConjugateGradient& column : progressive_)
+    {
+        const ConjugateGradientResult result = column.iterate(
+            kConjugateGradientTolerance, std::max(0, std::min(limit, cap - column.iterations())));
+        done = done && (result.relative_residual <= kConjugateGradientTolerance ||
+                        result.iterations >= cap);
+    }
+    scatter(free, progressive_d_, x0, x);
+    return done;
+}
+
+int FreeSystemSolver::progressive_iterations() const
+{
+    int n = 0;
+    for (const ConjugateGradient& column : progressive_)
+        n += column.iterations();
+    return n;
 }
 
 } // namespace meshfair

@@ -67,16 +67,29 @@ public:
     //! cannot solve afterwards. nullptr when conjugate gradients solve.
     std::unique_ptr<SparseCholesky> take_factorization() { return std::move(cholesky_); }
     bool conjugate_gradients() const { return cg_.has_value(); }
-    //! \brief Conjugate gradients stop after `limit` iterations a right-hand side (0: at the
-    //! tolerance, the default): a truncated solve, d the minimizer of the quadratic over
-    //! the Krylov space so far, so that x + d still lowers the energy (the editor's pin
-    //! drag on a system too large to factor, a frame at a time). No effect on a factor.
-    void limit_iterations(int limit) { iteration_limit_ = limit; }
-    //! False when the last solve was truncated before the tolerance (limit_iterations).
-    bool solved_to_tolerance() const { return solved_to_tolerance_; }
+    //! \brief A solve of conjugate gradients spread over calls (the editor's frames without a
+    //! factor): begin_progressive reads r as add_solution does; each advance_progressive runs
+    //! at most `limit` more iterations a right-hand side, the same sequence going on, and
+    //! writes x_f = x0_f + d_f with the solution so far (the minimizer over the Krylov space
+    //! built: the energy lower at every call). Returns true once every right-hand side is at
+    //! the tolerance, or at conjugate gradients' own cap. r, x0 and x at `free` as in
+    //! add_solution. \pre conjugate_gradients().
+    void begin_progressive(std::span<const Index> free, std::span<const Scalar> r);
+    bool advance_progressive(int limit, std::span<const Index> free, std::span<const Scalar> x0,
+                             std::span<Scalar> x);
+    //! The iterations of the progressive solve so far, over its right-hand sides.
+    int progressive_iterations() const;
 
 private:
     void use_conjugate_gradients(const SymmetricMatrix& a);
+    //! Where coordinate a of free vertex k (of free_count) sits in solve()'s order.
+    size_t order_of(size_t free_count, Index k, int a) const;
+    //! r at `free` into out, in solve()'s order.
+    void gather(std::span<const Index> free, std::span<const Scalar> r,
+                std::vector<Scalar>& out) const;
+    //! x = x0 + d at `free` (d in solve()'s order; x0 may be x).
+    void scatter(std::span<const Index> free, std::span<const Scalar> d, std::span<const Scalar> x0,
+                 std::span<Scalar> x) const;
 
     int block_;
     std::unique_ptr<SparseCholesky> cholesky_;
@@ -88,8 +101,10 @@ private:
     };
     std::optional<ConjugateGradientSystem> cg_;
     std::vector<Scalar> free_r_; //!< add_solution's r_f, then d_f, in solve()'s order
-    int iteration_limit_ = 0;
-    bool solved_to_tolerance_ = true;
+    //! The progressive solve: its right-hand sides, its solution so far (solve()'s order)
+    //! and one conjugate-gradient sequence per right-hand side.
+    std::vector<Scalar> progressive_b_, progressive_d_;
+    std::vector<ConjugateGradient> progressive_;
 };
 
 } // namespace meshfair

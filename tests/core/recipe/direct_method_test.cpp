@@ -659,52 +659,63 @@ TEST_SUITE("direct method")
             });
     }
 
-    TEST_CASE("truncated conjugate gradients lower the energy at every step, to the minimizer")
+    TEST_CASE(
+        "a progressive solve: conjugate gradients over calls, the energy lower at each, "
+        "the bits of one solve")
     {
-        // Session::limit_conjugate_gradients: the editor's frames without a factor.
+        // Session::begin_progressive_solve: the editor's frames without a factor.
         const Mesh m = test::open_grid(30, 30); // a plate, held at its border by pins
         const Topology t = build_topology(m);
         const Scalar diagonal = bounding_box(m.positions).diagonal();
         Recipe r;
         r.method = Method::ConjugateGradient;
         r.bending = Bending{1.0, 0.0};
+        r.iterations = 1;
         r.hard = HardVertices{{}, {}};
+        const Index lifted = 15 * 31 + 15;
         for (Index v = 0; v < m.vertex_count(); ++v)
-            if (v % 31 == 0 || v % 31 == 30 || v < 31 || v >= 31 * 30)
+            if (v % 31 == 0 || v % 31 == 30 || v < 31 || v >= 31 * 30 || v == lifted)
                 r.hard->vertices.push_back(v);
-        r.hard->vertices.push_back(15 * 31 + 15);
         for (const Index v : r.hard->vertices)
             r.hard->targets.push_back({m.positions[3 * v], m.positions[3 * v + 1],
-                                       m.positions[3 * v + 2] + (v == 15 * 31 + 15 ? 0.3 : 0)});
-        Recipe whole = r;
-        whole.method = Method::Direct;
-        Session direct(m, t, whole);
-        const DirectRun d = run_direct(direct, m);
+                                       m.positions[3 * v + 2] + (v == lifted ? 0.3 : 0)});
+        // One step solved at once, from the same positions.
+        Session whole(m, t, r);
+        const DirectRun once = run_direct(whole, m);
 
         Session cg(m, t, r);
-        cg.limit_conjugate_gradients(5);
-        std::vector<Scalar> x = m.positions;
-        cg.apply_hard_targets(x);
-        cg.set_positions(x);
+        REQUIRE(cg.can_solve_progressively());
+        cg.set_positions(once.start);
+        cg.begin_progressive_solve();
         Scalar energy = cg.energy().total();
-        for (int k = 0; k < 30; ++k)
+        bool finished = false;
+        int calls = 0, iterations = 0;
+        std::vector<Scalar> partway;
+        while (!finished)
         {
-            cg.step();
-            CHECK_FALSE(cg.last_step_solved()); // the limit held
+            const StepInfo info = cg.advance_progressive_solve(5, finished);
+            CHECK(info.inner_iterations <= 3 * 5);
+            iterations += info.inner_iterations;
             const Scalar now = cg.energy().total();
-            CHECK(now < energy);
+            CHECK(now <= energy * (1 + 1e-12)); // (in exact arithmetic it never rises)
             energy = now;
+            if (++calls == 10)
+                partway.assign(cg.positions().begin(), cg.positions().end());
+            REQUIRE(calls < 100000);
         }
-        const std::vector<Scalar> partway(cg.positions().begin(), cg.positions().end());
+        CHECK(calls > 20);                                      // spread over calls, not one
+        CHECK(iterations == once.run.inner_iterations.front()); // the iterations of one solve
+        const std::vector<Scalar> got(cg.positions().begin(), cg.positions().end());
+        CHECK(got == once.result); // the same sequence: the same bits
         Scalar apart = 0;
         for (size_t k = 0; k < partway.size(); ++k)
-            apart = std::max(apart, std::abs(partway[k] - d.result[k]));
-        CHECK(apart > 1e-6 * diagonal); // still on its way: the check below could fail
-        cg.limit_conjugate_gradients(0);
-        cg.step(); // a whole solve from where the truncated ones stopped
-        CHECK(cg.last_step_solved());
-        const std::vector<Scalar> got(cg.positions().begin(), cg.positions().end());
-        check_near(got, d.result, diagonal);
+            apart = std::max(apart, std::abs(partway[k] - once.result[k]));
+        CHECK(apart > 1e-6 * diagonal); // on its way after 10 calls: the checks could fail
+        check_near(got, once.result, diagonal);
+        // Not for a factor.
+        Recipe direct = r;
+        direct.method = Method::Direct;
+        CHECK_FALSE(Session(m, t, direct).can_solve_progressively());
     }
 
     TEST_CASE("over its factor budget the direct method solves by conjugate gradients, noted")
