@@ -340,8 +340,10 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                                             " (each of its steps solves for the minimizer)");
         if (r.joint)
             throw RecipeError("joint", "is not available with method " + name +
-                                           " yet (the normals of joint mode move with the "
-                                           "positions; use \"jacobi\")");
+                                           " (the normals of joint mode move with the "
+                                           "positions, and Jacobi steps reach their fixed "
+                                           "point sooner: docs/math.md, \"The direct "
+                                           "method\"); use \"jacobi\"");
     }
 }
 
