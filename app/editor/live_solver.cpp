@@ -226,7 +226,6 @@ void LiveSolver::place_pins(std::span<const Scalar> targets)
     std::swap(display_back_, display_published_);
     fresh_ = true;
     solve_due_ = solves_for_minimizer(session.recipe().method);
-    progressive_ = false; // the step for these pins begins where they leave the shape
     done_.notify_all();
 }
 
@@ -383,22 +382,16 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             // showing the shape so far (lower in energy every frame). A pin moved meanwhile
             // begins another step from the shape shown (place_pins). Once solved, the rule
             // judges it as a direct step.
-            if (!progressive_)
-            {
+            if (!session.progressive_solve_under_way())
                 session.begin_progressive_solve();
-                progressive_ = true;
-            }
             bool finished = false;
             const StepInfo info = session.advance_progressive_solve(
                 progressive_iterations(session.free_vertices().size()), finished);
             done = 1;
             solve_goes_on = !finished;
             if (finished)
-            {
-                progressive_ = false;
                 converged_now =
                     rule.stop_after(info.gradient, session.gradient(session.positions()));
-            }
         }
         for (; done < n && !converged_now && !solve_goes_on; ++done)
         {
@@ -698,7 +691,6 @@ void LiveSolver::worker()
             else
             {
                 run_ = std::move(p.run);
-                progressive_ = false;
                 status_.ready = run_ != nullptr;
                 status_.error = p.error;
                 status_.cancelled = p.cancelled;

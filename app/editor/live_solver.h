@@ -256,9 +256,7 @@ private:
     // The direct method's run shows its minimizer by itself: solved on the worker after a
     // restart and after the pins move, without playing.
     bool solve_due_ = false;
-    //! A step solved by conjugate gradients a frame at a time (no factor) is under way
-    //! (Session::begin_progressive_solve); the worker's, or under the lock.
-    bool progressive_ = false;
+
     std::optional<EnergyTerm> heat_term_;
     bool heat_dirty_ = false;           // shares wanted for the current positions
     std::vector<float> heat_published_; // colours (heat_colors), newest

@@ -112,6 +112,7 @@ bool Session::follow_pins()
 {
     if (minimizer_pins_.empty() || !has_positions_ || hard_targets_.empty())
         return false;
+    progressive_start_.clear(); // the kept positions move otherwise
     // r_f's x coordinates at x with the pins at `targets` (the falloff's anchors with them).
     const auto rhs = [&](std::span<const Scalar> x, std::span<const Scalar> targets,
                          std::span<Scalar> r_x) {

@@ -165,6 +165,7 @@ void Session::apply_hard_targets(std::span<Scalar> x) const
 
 void Session::set_hard_targets(std::span<const Scalar> targets)
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     if (targets.size() != 3 * hard_.size())
         throw InvalidInputError("Session::set_hard_targets: expected " +
                                 std::to_string(3 * hard_.size()) + " values");
@@ -205,6 +206,7 @@ void Session::adopt_positions(std::vector<Scalar>&& x)
 
 void Session::positions_given()
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     minimizer_pins_.clear();
     has_positions_ = true;
     forget_fixed_energy();
@@ -215,6 +217,7 @@ void Session::positions_given()
 
 std::vector<Scalar> Session::release_positions()
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     std::vector<Scalar> out;
     out.swap(x_);
     has_positions_ = false;
@@ -225,6 +228,7 @@ std::vector<Scalar> Session::release_positions()
 
 StepInfo Session::step()
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     if (!has_positions_)
         throw SolverError("Session::step: no positions (call set_positions first)");
     can_revert_ = revert_to_previous_ = false;
@@ -253,6 +257,7 @@ StepInfo Session::step()
 
 StepInfo Session::step(TermEnergies& before, bool gradient)
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     if (!has_positions_)
         throw SolverError("Session::step: no positions (call set_positions first)");
     can_revert_ = false;
@@ -281,6 +286,7 @@ StepInfo Session::step(TermEnergies& before, bool gradient)
 
 void Session::revert_step()
 {
+    progressive_start_.clear(); // the kept positions move otherwise
     if (!can_revert_)
         throw SolverError("Session::revert_step: no step to undo");
     // The fused step's buffer it read is untouched: it wrote the other one (the free

@@ -235,6 +235,9 @@ public:
     //! gradients' cap). StepInfo::gradient is the gradient where the step began,
     //! inner_iterations the iterations of this call.
     StepInfo advance_progressive_solve(int limit, bool& finished);
+    //! A progressive step is begun and not finished, and the kept positions are its own
+    //! (any other step, new positions or pins end it).
+    bool progressive_solve_under_way() const { return !progressive_start_.empty(); }
 
     std::span<const Index> free_vertices() const { return free_; }
     //! Current face normals u (3 #F) used by the normal terms; empty when unused.

@@ -712,6 +712,18 @@ TEST_SUITE("direct method")
             apart = std::max(apart, std::abs(partway[k] - once.result[k]));
         CHECK(apart > 1e-6 * diagonal); // on its way after 10 calls: the checks could fail
         check_near(got, once.result, diagonal);
+        CHECK_FALSE(cg.progressive_solve_under_way());
+        // New positions (another step, a pin moved) end one under way: it is never taken up
+        // again from the start it had.
+        cg.begin_progressive_solve();
+        cg.advance_progressive_solve(1, finished);
+        CHECK(cg.progressive_solve_under_way());
+        cg.set_positions(once.start);
+        CHECK_FALSE(cg.progressive_solve_under_way());
+        CHECK_THROWS_AS(cg.advance_progressive_solve(1, finished), SolverError);
+        cg.begin_progressive_solve();
+        cg.step();
+        CHECK_FALSE(cg.progressive_solve_under_way());
         // Not for a factor.
         Recipe direct = r;
         direct.method = Method::Direct;
