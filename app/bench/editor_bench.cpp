@@ -95,6 +95,8 @@ int main(int argc, char** argv)
     app.add_option("--jacobi-cap-ms", drag.jacobi_cap_ms,
                    "pin drag: the Jacobi peer's time per move")
         ->check(CLI::Range(100.0, 600000.0));
+    app.add_flag("--drag-cg", drag.conjugate_gradients,
+                 "pin drag: by conjugate gradients (no factor), not the direct method");
     app.add_flag("--drag-only", drag_only,
                  "only the pin drag (not the selection and live solving)");
     CLI11_PARSE(app, argc, argv);

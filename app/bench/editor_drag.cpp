@@ -215,14 +215,16 @@ void print_row(const char* name, const std::vector<double>& v)
 void print_drag(const DragSeries& d, std::optional<double> first_ms, const SolverStatus& first,
                 double diagonal, const DragOptions& o)
 {
-    std::printf("\n| M drag, direct method with the thin plate | samples | median | max |\n");
+    std::printf("\n| M drag, %s with the thin plate | samples | median | max |\n",
+                o.conjugate_gradients ? "conjugate gradients" : "direct method");
     std::printf("|---|---|---|---|\n");
     std::printf(
         "| first result: the first move (dome settings: analysis, factorization, solve) | 1 | "
         "%s | |\n",
         first_ms ? (std::to_string(std::lround(*first_ms)) + " ms").c_str() : "never within");
     std::printf(
-        "| of which the solver's precomputation (analysis, factorization) | 1 | %.0f ms | |\n",
+        "| of which the solver's precomputation (the direct method's analysis, factorization) | 1 "
+        "| %.0f ms | |\n",
         first.precompute_ms);
     std::printf("| of which the solver's solve frame | 1 | %.0f ms | |\n", first.step_ms);
     print_row("a move: the minimizer shown within the tolerance, ms", d.latency);
@@ -525,7 +527,18 @@ void drag_case(EditorSession& s, int width, int height, const DragOptions& o)
         return;
     }
     s.dispatch(cmd::SetTool{ToolKind::MovePins});
-    s.settle_solver(); // the sets' run as they stand (Jacobi), as an artist finds it
+    if (o.conjugate_gradients)
+    {
+        // The settings the drag keeps: conjugate gradients with the thin plate (the dome).
+        SolverSettings cg = s.document().solver;
+        cg.method = Method::ConjugateGradient;
+        cg.bending = Bending{};
+        s.dispatch(cmd::SetSolverSettings{cg});
+        std::printf(
+            "method: conjugate gradients, the thin plate (no factor: a frame's "
+            "iterations at a time)\n");
+    }
+    s.settle_solver(); // the sets' run as they stand, as an artist finds it
     const Document& d = s.document();
     const double diagonal = glm::length(d.box.hi - d.box.lo);
     const size_t region = set_named(s, "patch").vertices.size();
@@ -543,7 +556,8 @@ void drag_case(EditorSession& s, int width, int height, const DragOptions& o)
             "count; analysis %.1f s, factorization %.1f s\n",
             f->stats().factor_nonzeros / 1e6, gigabytes(f->stats().factor_bytes()),
             f->stats().analyse_seconds, f->stats().factor_seconds);
-    price_move(s, *drag->minimizer);
+    if (!o.conjugate_gradients) // (its parts are the direct method's)
+        price_move(s, *drag->minimizer);
     if (o.jacobi_moves > 0)
         print_peer(jacobi_peer(s, drag->offset, *drag->minimizer, o.tolerance * diagonal, o),
                    diagonal, o);

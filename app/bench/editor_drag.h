@@ -21,6 +21,9 @@ struct DragOptions
     double budget_ms = 100;      //!< the latency asked for
     int jacobi_moves = 5;        //!< moves of the Jacobi peer (0: none)
     double jacobi_cap_ms = 3000; //!< how long the peer may take for one move
+    //! The drag by conjugate gradients (no factor: a frame's iterations at a time) in place
+    //! of the direct method, as for a system too large to factor
+    bool conjugate_gradients = false;
 };
 
 //! \brief Sets up a region ("patch") and pins inside it as an artist does (rectangles
