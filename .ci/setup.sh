@@ -19,7 +19,8 @@ esac
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 
-# libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), nothing else. The
+# libopenmesh-dev is the peer of meshfair-bench (docs/performance.md), and with
+# libmeshsdfilter-dev (header-only) a reference filter of meshfair-quality, nothing else. The
 # editor needs GLFW, OSMesa, GLM, Dear ImGui and stb; xvfb and xauth give it a display
 # where there is none. pybind11 and NumPy build the Python module for Debian's own Python
 # (/usr/bin/python3, for which python3-numpy and python3-pytest are). The builds use Ninja;
@@ -29,6 +30,7 @@ cd "$root"
 # times slower.
 packages=(cmake ninja-build make g++ pkg-config libtinyobjloader-dev nlohmann-json3-dev libcli11-dev
     doctest-dev libeigen3-dev libsuitesparse-dev libopenblas0-pthread libopenmesh-dev
+    libmeshsdfilter-dev
     libglfw3-dev libosmesa6-dev libglm-dev libimgui-dev libstb-dev xvfb xauth pybind11-dev
     python3-dev python3-numpy)
 # Tests also need: clang-format (style), strace (fault injection in the save tests and the

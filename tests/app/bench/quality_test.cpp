@@ -3,6 +3,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <array>
+#include <iostream>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -13,6 +15,7 @@
 #include "app/bench/quality_metrics.h"
 #include "app/bench/quality_noise.h"
 #include "app/bench/reference_filters.h"
+#include "app/bench/sdfilter_peer.h"
 #include "core/energies/volume_constraint.h"
 #include "core/geometry/face_geometry.h"
 #include "core/topology/topology.h"
@@ -597,5 +600,42 @@ TEST_SUITE("ReferenceFilters")
         // Both smooth: theta drops below the noisy mesh's.
         const Scalar theta_noisy = mean_normal_angle_deg(m, noisy, m.positions);
         CHECK(mean_normal_angle_deg(m, taubin, m.positions) < theta_noisy);
+    }
+
+    TEST_CASE("SDFilter (libmeshsdfilter-dev) denoises the cube to its creases, quietly")
+    {
+        const Mesh m = cube_mesh(16);
+        const std::vector<Scalar> noisy = noisy_positions(m, {NoiseModel::GaussianNormal, 0.2}, 11);
+        std::vector<Scalar> x = noisy;
+        std::streambuf* const out = std::cout.rdbuf();
+        REQUIRE(sdfilter_denoise(m, x));
+        CHECK(std::cout.rdbuf() == out); // its progress kept off stdout, the stream given back
+        const Scalar theta_noisy = mean_normal_angle_deg(m, noisy, m.positions);
+        const Scalar theta = mean_normal_angle_deg(m, x, m.positions);
+        MESSAGE("theta noisy ", theta_noisy, ", sdfilter ", theta);
+        CHECK(theta < 0.2 * theta_noisy);
+        CHECK(crease_normal_angle_deg(m, x) < crease_normal_angle_deg(m, noisy));
+        // Quads are split into triangles for it: the same vertices come back, smoothed.
+        Mesh quads;
+        for (int j = 0; j <= 6; ++j)
+            for (int i = 0; i <= 6; ++i)
+                quads.add_vertex(i, j, 0.05 * ((i * 7 + j * 3) % 5 - 2));
+        for (Index j = 0; j < 6; ++j)
+            for (Index i = 0; i < 6; ++i)
+            {
+                const Index a = 7 * j + i;
+                const std::array<Index, 4> q{a, a + 1, a + 8, a + 7};
+                quads.add_face(q);
+            }
+        std::vector<Scalar> y = quads.positions;
+        REQUIRE(sdfilter_denoise(quads, y));
+        REQUIRE(y.size() == quads.positions.size());
+        Scalar bumps_before = 0, bumps_after = 0;
+        for (size_t k = 2; k < y.size(); k += 3)
+        {
+            bumps_before += std::abs(quads.positions[k]);
+            bumps_after += std::abs(y[k] - 0.0);
+        }
+        CHECK(bumps_after < bumps_before);
     }
 }
