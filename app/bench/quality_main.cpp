@@ -651,8 +651,8 @@ std::string QualityRun::goals() const
                 ++runs;
                 turned += r.turned;
             }
-        s << "- (reference) faces turned over by " << reference << ": " << turned << " in "
-          << runs << " runs\n";
+        s << "- (reference) faces turned over by " << reference << ": " << turned << " in " << runs
+          << " runs\n";
     }
     return s.str();
 }

@@ -4,8 +4,8 @@
 
 #include <algorithm>
 #include <array>
-#include <iostream>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <random>
