@@ -333,6 +333,13 @@ void QualityRun::run_mesh(const std::string& name)
             if (!o_.write_meshes.empty())
                 write_positions(mesh, x, case_dir / (method + ".obj"));
         };
+        // A method that gave no result: its row says why.
+        const auto record_note = [&](const std::string& method, const std::string& note) {
+            Row row;
+            row.mesh = name, row.noise = noise_id, row.level = noise.level;
+            row.method = method, row.note = note;
+            rows_.push_back(row);
+        };
         record("noisy", noisy, 0);
 
         std::vector<Scalar> x = noisy;
@@ -352,12 +359,7 @@ void QualityRun::run_mesh(const std::string& name)
         if (sdfilter_denoise(mesh, x))
             record("sdfilter", x, seconds_since(start));
         else
-        {
-            Row failed;
-            failed.mesh = name, failed.noise = noise_id, failed.level = noise.level;
-            failed.method = "sdfilter", failed.note = "the library reported a failure";
-            rows_.push_back(failed);
-        }
+            record_note("sdfilter", "the library reported a failure");
 
         for (const NamedRecipe& r : recipes_)
         {
@@ -367,10 +369,7 @@ void QualityRun::run_mesh(const std::string& name)
             std::string note;
             if (!run_recipe(r.recipe, mesh, topology, noisy, x, seconds, note))
             {
-                Row refused;
-                refused.mesh = name, refused.noise = noise_id, refused.level = noise.level;
-                refused.method = r.name, refused.note = note;
-                rows_.push_back(refused);
+                record_note(r.name, note);
                 continue;
             }
             record(r.name, x, seconds);

@@ -44,16 +44,6 @@ LiveSolver::~LiveSolver()
     thread_.join();
 }
 
-void LiveSolver::restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
-                         std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces)
-{
-    restart(std::make_shared<const Mesh>(std::move(base)),
-            std::make_shared<const LocalityOrder>(std::move(order)), std::move(recipe),
-            std::move(start),
-            std::make_shared<const VertexFaces>(
-                VertexFaces{std::move(vertex_face_offsets), std::move(vertex_faces)}));
-}
-
 void LiveSolver::restart(std::shared_ptr<const Mesh> base,
                          std::shared_ptr<const LocalityOrder> order, Recipe recipe,
                          std::vector<Scalar> start, std::shared_ptr<const VertexFaces> vertex_faces)
@@ -379,9 +369,9 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         {
             // No factor: the step's conjugate gradients a frame at a time, the same sequence
             // going on from frame to frame (its iterations those of one solve), each frame
-            // showing the shape so far (lower in energy every frame). A pin moved meanwhile
-            // begins another step from the shape shown (place_pins). Once solved, the rule
-            // judges it as a direct step.
+            // showing the shape so far (lower in energy every frame, the flip guard aside). A pin
+            // moved meanwhile begins another step from the shape shown (place_pins). Once solved,
+            // the rule judges it as a direct step.
             if (!session.progressive_solve_under_way())
                 session.begin_progressive_solve();
             bool finished = false;

@@ -88,16 +88,12 @@ public:
     //! positions `start` (3 #V; empty: the base). Positions and shares are published in that
     //! numbering.
     //! Returns at once: the precomputation happens on the worker. Stops playing.
-    //! `vertex_face_offsets` and `vertex_faces` (the draw data's faces around each vertex)
-    //! let the solver's thread compute the display geometry of each frame. Taken by value
-    //! (and shared from then on); the editor shares its own (the overload below).
-    void restart(Mesh base, LocalityOrder order, Recipe recipe, std::vector<Scalar> start,
-                 std::vector<Index> vertex_face_offsets, std::vector<Index> vertex_faces);
-    //! \brief The same with the base mesh, the order and the faces around each vertex
-    //! shared with the caller and never copied (the editor's document: a restart per
-    //! slider value or brush dab copies no mesh; the run before's topology and factor are
-    //! kept without comparing connectivities when the base is the same object). They must
-    //! stay unchanged while a run holds them: a new shape is a new object.
+    //! `vertex_faces` (the draw data's faces around each vertex) lets the solver's thread
+    //! compute the display geometry of each frame. The base, the order and the faces are
+    //! shared with the caller, never copied (a restart per slider value or brush dab copies
+    //! no mesh; the run before's topology and factor are kept without comparing
+    //! connectivities when the base is the same object); they must stay unchanged while a
+    //! run holds them: a new shape is a new object.
     void restart(std::shared_ptr<const Mesh> base, std::shared_ptr<const LocalityOrder> order,
                  Recipe recipe, std::vector<Scalar> start,
                  std::shared_ptr<const VertexFaces> vertex_faces);

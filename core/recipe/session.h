@@ -230,10 +230,11 @@ public:
     //! \pre can_solve_progressively().
     void begin_progressive_solve();
     //! \brief At most `limit` more iterations a coordinate of the step begun; the kept
-    //! positions become its start plus the solution so far, through the flip guard (each
-    //! call lowers the energy). `finished`: the step is solved (the tolerance, or conjugate
-    //! gradients' cap). StepInfo::gradient is the gradient where the step began,
-    //! inner_iterations the iterations of this call.
+    //! positions become its start plus the solution so far (whose energy falls from call to
+    //! call), through the flip guard, which shortens it toward the start (below the start's
+    //! energy, but not always below the last call's). `finished`: the step is solved (the
+    //! tolerance, or conjugate gradients' cap). StepInfo::gradient is the gradient where the step
+    //! began, inner_iterations the iterations of this call.
     StepInfo advance_progressive_solve(int limit, bool& finished);
     //! A progressive step is begun and not finished, and the kept positions are its own
     //! (any other step, new positions or pins end it).

@@ -102,6 +102,16 @@ void drag_first_pin_up(EditorSession& s, size_t set, const std::vector<Scalar>& 
     s.mouse_release(MouseButton::Left, at.x, at.y - *(heights.end() - 1));
 }
 
+// A run of `recipe` on `base` (the document's numbering), from the base shape, as the
+// editor's SolverController starts one: the mesh, the order and the faces shared.
+void restart_on(LiveSolver& solver, const Mesh& base, const Document& doc, const Recipe& recipe)
+{
+    solver.restart(std::make_shared<const Mesh>(base),
+                   std::make_shared<const LocalityOrder>(doc.order), recipe, {},
+                   std::make_shared<const VertexFaces>(
+                       VertexFaces{doc.draw_data.vertex_face_offsets, doc.draw_data.vertex_faces}));
+}
+
 // A region "patch" and pins "pins" inside it moved by `offset`, each made of a
 // rectangle's selection.
 void make_region_and_moved_pins(Editing& b, const Vec3& offset)
@@ -493,8 +503,7 @@ TEST_SUITE("Live solving")
         Recipe r;
         r.soft = SoftVertices{{true, {}}, 0.2, {}};
         LiveSolver solver;
-        solver.restart(m, doc.order, r, {}, doc.draw_data.vertex_face_offsets,
-                       doc.draw_data.vertex_faces);
+        restart_on(solver, m, doc, r);
         solver.wait_idle();
         solver.set_iterations_per_frame(2);
         solver.set_playing(true, 6);
@@ -585,8 +594,7 @@ TEST_SUITE("Live solving")
             const Recipe& recipe = named.second;
             CAPTURE(name);
             LiveSolver solver;
-            solver.restart(base, doc.order, recipe, {}, doc.draw_data.vertex_face_offsets,
-                           doc.draw_data.vertex_faces);
+            restart_on(solver, base, doc, recipe);
             solver.wait_idle();
             std::vector<Scalar> x;
             DisplayGeometry g;
