@@ -290,6 +290,31 @@ void perturb(Mesh& mesh, double sigma, unsigned seed)
     add_gaussian_noise(mesh, sigma, seed);
 }
 
+Mesh folded_grid()
+{
+    Mesh m = open_grid(12, 6);
+    for (Index v = 0; v < m.vertex_count(); ++v)
+        if (m.positions[3 * v] > 6)
+        {
+            m.positions[3 * v + 2] = m.positions[3 * v] - 6;
+            m.positions[3 * v] = 6;
+        }
+    return m;
+}
+
+Scalar mean_angle_degrees(std::span<const Scalar> u, std::span<const Scalar> clean)
+{
+    Scalar sum = 0;
+    for (size_t f = 0; 3 * f < u.size(); ++f)
+    {
+        Scalar dot = 0;
+        for (int a = 0; a < 3; ++a)
+            dot += u[3 * f + a] * clean[3 * f + a];
+        sum += std::acos(std::clamp<Scalar>(dot, -1, 1)) * 180 / M_PI;
+    }
+    return sum / static_cast<Scalar>(u.size() / 3);
+}
+
 CommandRun cli(const std::string& args)
 {
     return run_command(shell_quote(MESHFAIR_CLI) + " " + args);

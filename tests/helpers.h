@@ -85,4 +85,11 @@ struct ThreadCountGuard
 //! Adds deterministic Gaussian noise (sigma in absolute units).
 void perturb(Mesh& mesh, double sigma, unsigned seed);
 
+//! An open grid of 12 x 6 quads folded at x = 6 into an L: a flat floor and a vertical
+//! wall meeting at a 90 degree crease.
+Mesh folded_grid();
+
+//! The mean angle in degrees between the unit normals u and clean (3 per face).
+Scalar mean_angle_degrees(std::span<const Scalar> u, std::span<const Scalar> clean);
+
 } // namespace meshfair::test

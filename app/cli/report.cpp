@@ -183,6 +183,12 @@ Json smooth_report(const Mesh& mesh, const Topology& topology, const Session& se
     }
     if (!session.normal_smoothing_trace().empty())
         j["normal_smoothing_energy"] = session.normal_smoothing_trace();
+    if (const auto& noise = session.noise_estimate())
+        j["noise"] = {{"estimated_sigma", noise->sigma},
+                      {"height", noise->height},
+                      {"edge_length", noise->edge_length},
+                      {"vertices_measured", noise->vertices},
+                      {"normal_smoothing_iterations", session.normal_smoothing_iterations()}};
     j["notes"] = read_report.notes;
     for (const std::string& note : session.notes())
         j["notes"].push_back(note);

@@ -358,7 +358,11 @@ bool CommandExecutor::operator()(const cmd::ApplyPreset& c) const
     ImportedRecipe preset = import_recipe(d, path);
     d.sets = merge_preset(d.sets, std::move(preset.sets));
     d.solver = with_pace(preset.settings, d.solver);
-    say("preset " + c.preset + ": its settings, with your regions and pins" +
+    // A run plays the preset's own steps: its settings were tuned for that many.
+    d.solver.steps_per_run = std::max(1, preset.iterations);
+    const std::string description = preset_description(c.preset);
+    say("preset " + c.preset + (description.empty() ? "" : " (" + description + ")") +
+        ": its settings, with your regions and pins" +
         (s.problems().empty() ? std::string() : " (" + s.problems().front() + ")"));
     return true;
 }

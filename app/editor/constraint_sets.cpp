@@ -451,6 +451,7 @@ Recipe build_recipe(const std::vector<ConstraintSet>& sets, const SolverSettings
         {
             NormalSmoothing ns;
             ns.iterations = settings.normal_smoothing_iterations;
+            ns.adaptive = settings.adaptive_smoothing;
             ns.lambda = settings.normal_smoothing_lambda;
             ns.hard.faces = merged(sets, ConstraintKind::HardNormal, false);
             ns.hard.normals = merged_normals(sets, ConstraintKind::HardNormal, input_normal);
@@ -686,6 +687,7 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
     if (r.normal_smoothing)
     {
         s.normal_smoothing_iterations = r.normal_smoothing->iterations;
+        s.adaptive_smoothing = r.normal_smoothing->adaptive;
         s.normal_smoothing_lambda = r.normal_smoothing->lambda;
         if (!r.normal_smoothing->hard.faces.empty())
             add(ConstraintKind::HardNormal, {}, r.normal_smoothing->hard.faces).normals =

@@ -86,6 +86,9 @@ struct SolverSettings
     //! Normals of the Normal sets without normals of their own: Initial or Smoothed.
     NormalSource normal_source = NormalSource::Initial;
     int normal_smoothing_iterations = 10;
+    //! set: normal smoothing takes its iterations from the noise in the mesh, scaled by
+    //! the strength (Recipe's "iterations": "auto"); normal_smoothing_iterations otherwise
+    std::optional<AdaptiveIterations> adaptive_smoothing;
     Scalar normal_smoothing_lambda = 0.5;
     Scalar soft_normal_mu = 1;
     bool joint = false;

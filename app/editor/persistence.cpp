@@ -57,6 +57,18 @@ std::vector<std::string> preset_names()
     return names;
 }
 
+std::string preset_description(const std::string& preset)
+{
+    try
+    {
+        return read_recipe(preset_path(preset)).description;
+    }
+    catch (const std::exception&)
+    {
+        return {}; // a preset that does not read is refused, with the reason, when chosen
+    }
+}
+
 std::string preset_path(const std::string& preset)
 {
     if (preset.find('/') != std::string::npos ||

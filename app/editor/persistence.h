@@ -36,6 +36,8 @@ void export_recipe(const Document& document, const std::string& path);
 ImportedRecipe import_recipe(const Document& document, const std::string& path);
 //! The presets the solver panel offers: the names of assets/recipes/*.json, sorted.
 std::vector<std::string> preset_names();
+//! The preset's "description" (what it is for); empty when it has none or does not read.
+std::string preset_description(const std::string& preset);
 //! \brief The file of a preset: assets/recipes/NAME.json, or `preset` itself when it names
 //! a file (a path with a '/' or ending in .json).
 //! \throw InvalidInputError naming the presets there are when there is no such preset.

@@ -220,6 +220,10 @@ Json settings_json(const SolverSettings& s)
             {"normal_mu", s.normal_mu},
             {"smoothed_normals", s.normal_source == NormalSource::Smoothed},
             {"normal_smoothing_iterations", s.normal_smoothing_iterations},
+            {"adaptive_smoothing", s.adaptive_smoothing
+                                       ? Json{{"per_noise", s.adaptive_smoothing->per_noise},
+                                              {"strength", s.adaptive_smoothing->strength}}
+                                       : Json(nullptr)},
             {"normal_smoothing_lambda", s.normal_smoothing_lambda},
             {"soft_normal_mu", s.soft_normal_mu},
             {"joint", s.joint},
@@ -257,6 +261,10 @@ SolverSettings settings_of(const Json& j)
     s.normal_source =
         j.at("smoothed_normals").get<bool>() ? NormalSource::Smoothed : NormalSource::Initial;
     s.normal_smoothing_iterations = count_at(j, "normal_smoothing_iterations", 0);
+    if (j.contains("adaptive_smoothing") && !j["adaptive_smoothing"].is_null()) // older: none
+        s.adaptive_smoothing =
+            AdaptiveIterations{non_negative_at(j["adaptive_smoothing"], "per_noise"),
+                               non_negative_at(j["adaptive_smoothing"], "strength")};
     s.normal_smoothing_lambda = positive_at(j, "normal_smoothing_lambda");
     s.soft_normal_mu = non_negative_at(j, "soft_normal_mu");
     s.joint = j.at("joint").get<bool>();

@@ -44,7 +44,17 @@ SolverSettings merged_settings(const SolverSettings& g, const std::vector<std::s
         else if (key == "gamma")
             s.gamma = g.gamma;
         else if (key == "normal_smoothing_iterations")
+        {
+            // A count replaces the iterations from the noise.
             s.normal_smoothing_iterations = g.normal_smoothing_iterations;
+            s.adaptive_smoothing.reset();
+        }
+        else if (key == "strength")
+        {
+            // The strength turns the iterations from the noise on, as the panel's slider.
+            s.adaptive_smoothing = s.adaptive_smoothing.value_or(AdaptiveIterations{});
+            s.adaptive_smoothing->strength = g.adaptive_smoothing->strength;
+        }
         else if (key == "normal_smoothing_lambda")
             s.normal_smoothing_lambda = g.normal_smoothing_lambda;
         else if (key == "joint")

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 
+#include "core/energies/patch_guidance.h"
 #include "core/geometry/face_geometry.h"
 #include "core/parallel/parallel.h"
 
@@ -19,33 +20,6 @@ Scalar squared_distance3(const Scalar* a, const Scalar* b)
     for (int k = 0; k < 3; ++k)
         sum += (a[k] - b[k]) * (a[k] - b[k]);
     return sum;
-}
-
-//! The faces sharing a vertex with f, for every f: CSR, each list sorted, f excluded.
-void vertex_neighborhoods(const Mesh& mesh, const Topology& topology, std::vector<Index>& offsets,
-                          std::vector<Index>& neighbors)
-{
-    const Index nf = mesh.face_count();
-    offsets.assign(static_cast<size_t>(nf) + 1, 0);
-    neighbors.clear();
-    // `seen[g] == f + 1` marks g as already listed for f: no clearing between faces.
-    std::vector<Index> seen(nf, 0);
-    for (Index f = 0; f < nf; ++f)
-    {
-        const size_t start = neighbors.size();
-        for (const Index v : mesh.face(f))
-            for (const Index corner : topology.corners_of_vertex(v))
-            {
-                const Index g = topology.face_of_corner(corner);
-                if (g != f && seen[g] != f + 1)
-                {
-                    seen[g] = f + 1;
-                    neighbors.push_back(g);
-                }
-            }
-        std::sort(neighbors.begin() + static_cast<std::ptrdiff_t>(start), neighbors.end());
-        offsets[f + 1] = static_cast<Index>(neighbors.size());
-    }
 }
 
 //! Every k-th neighbour entry goes into the median, so that at most 2^20 do.
@@ -83,7 +57,7 @@ BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& top
       reweight_every_(settings.reweight_every)
 {
     if (settings.neighbors == FaceNeighborhood::Vertex)
-        vertex_neighborhoods(mesh, topology, offsets_, neighbors_);
+        vertex_face_rings(mesh, topology, offsets_, neighbors_);
     else
     {
         offsets_ = topology.face_neighbor_offsets;
@@ -96,6 +70,11 @@ BilateralFaceWeights::BilateralFaceWeights(const Mesh& mesh, const Topology& top
     for (Index f = 0; f < nf; ++f)
         weight_sum_[f] = static_cast<Scalar>(offsets_[f + 1] - offsets_[f]);
     centroids_.assign(3 * static_cast<size_t>(nf), 0);
+    if (settings.guided)
+    {
+        guidance_.emplace(mesh, topology);
+        guide_.assign(3 * static_cast<size_t>(nf), 0);
+    }
     if (noise_scale_ > 0)
         sample_.assign((neighbors_.size() + sample_stride(neighbors_.size()) - 1) /
                            sample_stride(neighbors_.size()),
@@ -122,6 +101,10 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
     spatial_current_ = true;
     // 1 / 2 sigma^2, or 0 for a spatial factor of 1 (sigma_s = 0: no scale to measure).
     const Scalar spatial_rate = sigma_s_ > 0 ? Scalar(1) / (2 * sigma_s_ * sigma_s_) : 0;
+    // The range kernel compares the guidance normals when guided, the normals otherwise.
+    if (guidance_)
+        guidance_->compute(x, u, guide_);
+    const std::span<const Scalar> r = guidance_ ? std::span<const Scalar>(guide_) : u;
     effective_sigma_r_ = sigma_r_;
     if (!sample_.empty())
     {
@@ -132,7 +115,7 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
             for (Index k = offsets_[f]; k < offsets_[f + 1]; ++k)
                 if (static_cast<size_t>(k) % stride == 0)
                     sample[static_cast<size_t>(k) / stride] =
-                        std::sqrt(squared_distance3(&u[3 * f], &u[3 * neighbors_[k]]));
+                        std::sqrt(squared_distance3(&r[3 * f], &r[3 * neighbors_[k]]));
         });
         const auto middle = sample_.begin() + static_cast<std::ptrdiff_t>(sample_.size() / 2);
         std::nth_element(sample_.begin(), middle, sample_.end());
@@ -148,7 +131,7 @@ void BilateralFaceWeights::reweight(std::span<const Scalar> x, std::span<const S
                 spatial_[k] = std::exp(-spatial_rate *
                                        squared_distance3(&centroids[3 * f], &centroids[3 * g]));
             weights_[k] =
-                spatial_[k] * std::exp(-range_rate * squared_distance3(&u[3 * f], &u[3 * g]));
+                spatial_[k] * std::exp(-range_rate * squared_distance3(&r[3 * f], &r[3 * g]));
             sum += weights_[k];
         }
         weight_sum_[f] = sum;

@@ -2,9 +2,11 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
+#include "core/energies/patch_guidance.h"
 #include "core/mesh/mesh.h"
 #include "core/topology/topology.h"
 
@@ -31,6 +33,10 @@ struct BilateralWeights
     //! sigma_r is at least noise_scale times the median of |u_f - u_g| over the neighbouring
     //! faces at each reweighting (0: sigma_r as given)
     Scalar noise_scale = 1.5;
+    //! the range kernel compares guidance normals (PatchGuidance: each face's most
+    //! consistent patch's mean normal, from the current normals) instead of the normals
+    //! themselves: guided mesh normal filtering \cite zhang_2015
+    bool guided = false;
     bool operator==(const BilateralWeights&) const = default;
 };
 
@@ -112,6 +118,8 @@ private:
     std::vector<Scalar> centroids_;          //!< 3 #F, the centroids spatial_ was taken at
     bool spatial_current_ = false;           //!< spatial_ is of centroids_
     std::vector<Scalar> sample_;             //!< the median's scratch (sampled pairs)
+    std::optional<PatchGuidance> guidance_;  //!< with BilateralWeights::guided
+    std::vector<Scalar> guide_;              //!< the guidance normals, 3 #F when guided
     Scalar sigma_s_ = 0, sigma_r_ = 0, noise_scale_ = 0, effective_sigma_r_ = 0;
     int reweight_every_ = 1;
 };

@@ -244,6 +244,13 @@ void check_recipe(const Recipe& r, const Mesh& mesh)
                               "through the face-normal term");
         if (ns.iterations < 0)
             throw RecipeError("normal_smoothing.iterations", "must be >= 0");
+        if (ns.adaptive)
+        {
+            check_weight(ns.adaptive->per_noise, "normal_smoothing.iterations_per_noise");
+            if (!(std::isfinite(ns.adaptive->strength) && ns.adaptive->strength >= 0 &&
+                  ns.adaptive->strength <= 10))
+                throw RecipeError("normal_smoothing.strength", "must be between 0 and 10");
+        }
         if (!(std::isfinite(ns.lambda) && ns.lambda > 0))
             throw RecipeError("normal_smoothing.lambda", "must be finite and > 0");
         check_indices(ns.hard.faces, nf, {"normal_smoothing.hard", "faces"}, "face", "faces", seen);

@@ -135,14 +135,31 @@ struct SoftNormals
     std::vector<Scalar> weights = {}; //!< face k weighs mu * weights[k]; empty: mu
 };
 
+//! \brief Normal smoothing's iterations from the noise in the mesh ("iterations": "auto"):
+//! iterations = clamp(round(per_noise * strength * sigma), 1, 400), sigma the noise
+//! estimate_noise finds in the vertices of the normal term's faces, in mean edge lengths.
+//! Noise of 0.1 and of 0.7 edge lengths then take the same recipe; strength (the editor's
+//! slider) scales the noise taken: 2 smooths as for noise twice as strong.
+struct AdaptiveIterations
+{
+    Scalar per_noise = 50; //!< iterations per mean edge length of noise
+    Scalar strength = 1;
+    bool operator==(const AdaptiveIterations&) const = default;
+};
+
+//! The most iterations an adaptive normal smoothing takes.
+inline constexpr int kMaxAdaptiveIterations = 400;
+
 struct NormalSmoothing
 {
-    int iterations = 10;
+    int iterations = 10; //!< unless `adaptive`
     Scalar lambda = 0.5;
     HardNormals hard;
     SoftNormals soft;
     //! absent: every dual edge weighs 1 (the paper's E_U)
     std::optional<BilateralWeights> bilateral = {};
+    //! set: the iterations follow the mesh's noise ("iterations": "auto")
+    std::optional<AdaptiveIterations> adaptive = {};
 };
 
 struct Joint
@@ -196,6 +213,8 @@ struct KeepVolume
 //! The JSON form is documented in docs/recipe.md (see recipe_json.h).
 struct Recipe
 {
+    //! What the recipe is for, in a sentence (a preset's menu says it); no effect on a run.
+    std::string description;
     int iterations = 10;
     bool optimal_step = false; //!< exact line search instead of the fixed lambda
     Scalar lambda = 0.5;

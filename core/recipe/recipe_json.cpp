@@ -436,9 +436,16 @@ Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
     expect_object(j, "",
-                  {"iterations", "lambda", "tolerance", "method", "taubin_mu", "region", "hard",
-                   "soft", "centroid", "normal", "normal_smoothing", "joint", "bending", "volume",
-                   "falloff", "prevent_flips", "factor_budget_mb", "time"});
+                  {"description", "iterations", "lambda", "tolerance", "method", "taubin_mu",
+                   "region", "hard", "soft", "centroid", "normal", "normal_smoothing", "joint",
+                   "bending", "volume", "falloff", "prevent_flips", "factor_budget_mb", "time"});
+    if (j.contains("description"))
+    {
+        if (!j["description"].is_string())
+            throw RecipeError("description",
+                              "must be a string (got " + describe(j["description"]) + ")");
+        r.description = j["description"].get<std::string>();
+    }
     if (j.contains("iterations"))
         r.iterations = count(j["iterations"], "iterations");
     if (j.contains("lambda"))
@@ -493,10 +500,30 @@ Recipe parse_recipe_json(const Json& j)
     if (j.contains("normal_smoothing"))
     {
         const Json& s = j["normal_smoothing"];
-        expect_object(s, "normal_smoothing", {"iterations", "lambda", "hard", "soft", "bilateral"});
+        expect_object(s, "normal_smoothing",
+                      {"iterations", "lambda", "hard", "soft", "bilateral", "strength",
+                       "iterations_per_noise"});
         NormalSmoothing ns;
-        if (s.contains("iterations"))
+        if (s.contains("iterations") && s["iterations"].is_string())
+        {
+            if (s["iterations"] != "auto")
+                throw RecipeError(
+                    "normal_smoothing.iterations",
+                    "must be a count or \"auto\" (got " + s["iterations"].dump() + ")");
+            ns.adaptive = AdaptiveIterations{};
+        }
+        else if (s.contains("iterations"))
             ns.iterations = count(s["iterations"], "normal_smoothing.iterations");
+        for (const char* key : {"strength", "iterations_per_noise"})
+            if (s.contains(key) && !ns.adaptive)
+                throw RecipeError(std::string("normal_smoothing.") + key,
+                                  "needs \"iterations\": \"auto\" (it scales the iterations "
+                                  "taken from the noise in the mesh)");
+        if (s.contains("strength"))
+            ns.adaptive->strength = weight(s["strength"], "normal_smoothing.strength");
+        if (s.contains("iterations_per_noise"))
+            ns.adaptive->per_noise =
+                weight(s["iterations_per_noise"], "normal_smoothing.iterations_per_noise");
         if (s.contains("lambda"))
             ns.lambda = step_length(s["lambda"], "normal_smoothing.lambda");
         if (s.contains("hard"))
@@ -630,6 +657,8 @@ Recipe read_recipe(const std::string& path)
 nlohmann::json recipe_to_json(const Recipe& r)
 {
     Json j;
+    if (!r.description.empty())
+        j["description"] = r.description;
     j["iterations"] = r.iterations;
     j["lambda"] = r.optimal_step ? Json("optimal") : Json(r.lambda);
     j["tolerance"] = r.tolerance;
@@ -702,6 +731,12 @@ nlohmann::json recipe_to_json(const Recipe& r)
     {
         const NormalSmoothing& ns = *r.normal_smoothing;
         Json s = {{"iterations", ns.iterations}, {"lambda", ns.lambda}};
+        if (ns.adaptive)
+        {
+            s["iterations"] = "auto";
+            s["strength"] = ns.adaptive->strength;
+            s["iterations_per_noise"] = ns.adaptive->per_noise;
+        }
         if (!ns.hard.faces.empty())
         {
             s["hard"] = {{"faces", ns.hard.faces}};
@@ -741,7 +776,8 @@ nlohmann::json recipe_to_json(const Recipe& r)
 
 BilateralWeights parse_bilateral(const Json& s, const std::string& key)
 {
-    expect_object(s, key, {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors"});
+    expect_object(s, key,
+                  {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors", "guidance"});
     BilateralWeights b;
     if (s.contains("sigma_s"))
         b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
@@ -759,6 +795,8 @@ BilateralWeights parse_bilateral(const Json& s, const std::string& key)
         b.neighbors = choice(s["neighbors"], child(key, "neighbors"), {"edge", "vertex"}) == 0
                           ? FaceNeighborhood::Edge
                           : FaceNeighborhood::Vertex;
+    if (s.contains("guidance"))
+        b.guided = choice(s["guidance"], child(key, "guidance"), {"none", "patch"}) == 1;
     return b;
 }
 
@@ -818,11 +856,15 @@ Falloff parse_falloff(const Json& s, const std::string& key)
 
 Json bilateral_json(const BilateralWeights& b)
 {
-    return {{"sigma_s", b.sigma_s},
-            {"sigma_r", b.sigma_r},
-            {"noise_scale", b.noise_scale},
-            {"reweight_every", b.reweight_every},
-            {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
+    Json j = {{"sigma_s", b.sigma_s},
+              {"sigma_r", b.sigma_r},
+              {"noise_scale", b.noise_scale},
+              {"reweight_every", b.reweight_every},
+              {"neighbors", b.neighbors == FaceNeighborhood::Edge ? "edge" : "vertex"}};
+    // Written when not the default, so recipes written before it read back the same.
+    if (b.guided)
+        j["guidance"] = "patch";
+    return j;
 }
 
 Json falloff_json(const Falloff& f)

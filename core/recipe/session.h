@@ -246,6 +246,11 @@ public:
     //! E_U before and after each normal-smoothing iteration (normals "smoothed"); with
     //! bilateral weights, the robust energy E_R + the soft part (BilateralFaceWeights).
     const std::vector<Scalar>& normal_smoothing_trace() const { return terms_->smoothing_trace(); }
+    //! The noise found in the mesh when normal smoothing's iterations are "auto"
+    //! (estimate_noise over the vertices of the normal term's faces, at the start).
+    const std::optional<NoiseEstimate>& noise_estimate() const { return terms_->noise_estimate(); }
+    //! The normal-smoothing iterations taken: the recipe's count, or those from the noise.
+    int normal_smoothing_iterations() const { return terms_->smoothing_iterations(); }
     //! What the run does besides the recipe's letter, for reports: how open components'
     //! volumes are kept (or that they are not), a falloff with nothing to fade from.
     const std::vector<std::string>& notes() const { return notes_; }

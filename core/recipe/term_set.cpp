@@ -3,6 +3,7 @@
 #include "core/recipe/term_set.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 #include <utility>
 
@@ -220,6 +221,25 @@ void TermSet::build_normal_terms(const Vec3& centre)
         bilateral_->reweight(x0, normals_);
         smoothing_->set_weights(&*bilateral_);
     }
+    smoothing_iterations_ = ns.iterations;
+    if (n.source == NormalSource::Smoothed && ns.adaptive)
+    {
+        // The noise of the vertices whose faces the normal term holds.
+        std::vector<char> counted(static_cast<size_t>(mesh.vertex_count()), 0);
+        for (const Index f : normal_->faces())
+            for (const Index v : mesh.face(f))
+                counted[v] = 1;
+        noise_ = estimate_noise(mesh, *topology_, x0, counted);
+        const Scalar wanted = ns.adaptive->per_noise * ns.adaptive->strength * noise_->sigma;
+        smoothing_iterations_ =
+            static_cast<int>(std::lround(std::clamp<Scalar>(wanted, 1, kMaxAdaptiveIterations)));
+        char note[160];
+        std::snprintf(note, sizeof note,
+                      "normal smoothing: noise of %.3g mean edge lengths found in the mesh: %d "
+                      "iterations (strength %.3g)",
+                      noise_->sigma, smoothing_iterations_, ns.adaptive->strength);
+        notes_.push_back(note);
+    }
     if (n.source == NormalSource::Smoothed)
     {
         // Normal smoothing first, then integration of the smoothed normals through the
@@ -231,7 +251,7 @@ void TermSet::build_normal_terms(const Vec3& centre)
                    smoothing_->soft_energy(normals_);
         };
         smoothing_trace_.push_back(smoothing_energy());
-        for (int k = 0; k < ns.iterations; ++k)
+        for (int k = 0; k < smoothing_iterations_; ++k)
         {
             if (bilateral_ && k > 0 && k % bilateral_->reweight_every() == 0)
                 bilateral_->reweight(x0, normals_);

@@ -18,6 +18,7 @@
 #include "core/energies/position_term.h"
 #include "core/energies/soft_vertex_term.h"
 #include "core/energies/volume_constraint.h"
+#include "core/geometry/noise_estimate.h"
 #include "core/recipe/recipe.h"
 #include "core/solver/free_system.h"
 #include "core/solver/sparse_cholesky.h"
@@ -78,6 +79,10 @@ public:
     std::span<const Scalar> normals() const { return normals_; }
     //! E_U before and after each normal-smoothing iteration (Session::normal_smoothing_trace).
     const std::vector<Scalar>& smoothing_trace() const { return smoothing_trace_; }
+    //! The noise estimated for "iterations": "auto" (Session::noise_estimate).
+    const std::optional<NoiseEstimate>& noise_estimate() const { return noise_; }
+    //! The normal-smoothing iterations taken (the recipe's, or those from the noise).
+    int smoothing_iterations() const { return smoothing_iterations_; }
     //! What the terms do besides the recipe's letter (the volume's, the falloff's notes).
     const std::vector<std::string>& notes() const { return notes_; }
 
@@ -161,6 +166,8 @@ private:
     std::optional<FaceNormalTerm> normal_;
     std::optional<NormalSmoothingTerm> smoothing_;
     std::optional<BilateralFaceWeights> bilateral_; //!< the smoothing term's weights, if any
+    std::optional<NoiseEstimate> noise_;            //!< with adaptive iterations
+    int smoothing_iterations_ = 0;
     std::optional<JointTerm> joint_;
     int joint_steps_ = 0; //!< joint updates so far (for reweighting)
     std::optional<VolumeConstraint> volume_;

@@ -39,13 +39,29 @@ void solver_panel(const PanelContext& ui)
     const EditorState& state = ui.state;
     // The presets: each sets the recipe's settings over the artist's regions and pins.
     static const std::vector<std::string> presets = preset_names();
+    static const std::vector<std::string> descriptions = [] {
+        std::vector<std::string> out;
+        for (const std::string& name : presets)
+            out.push_back(preset_description(name));
+        return out;
+    }();
     ImGui::SetNextItemWidth(160);
     if (ImGui::BeginCombo("preset", "choose...", ImGuiComboFlags_None))
     {
-        for (const std::string& name : presets)
+        for (size_t k = 0; k < presets.size(); ++k)
         {
+            const std::string& name = presets[k];
             if (ImGui::Selectable(name.c_str(), false))
                 ui.give(ApplyPreset{name});
+            // What each preset is for, where the artist chooses it.
+            if (!descriptions[k].empty() && ImGui::IsItemHovered())
+            {
+                ImGui::BeginTooltip();
+                ImGui::PushTextWrapPos(ImGui::GetFontSize() * 28);
+                ImGui::TextUnformatted(descriptions[k].c_str());
+                ImGui::PopTextWrapPos();
+                ImGui::EndTooltip();
+            }
             ui.track("preset/" + name);
         }
         ImGui::EndCombo();
@@ -137,6 +153,39 @@ void solver_panel(const PanelContext& ui)
     toggled |= ui.checkbox("joint mode", &s.joint);
     if (s.joint)
         dragged |= weight_slider(ui, "gamma", s.gamma);
+    if (s.normal_source == NormalSource::Smoothed)
+    {
+        // The normal smoothing's iterations from the noise found in the mesh, scaled by one
+        // strength (docs/recipe.md, "iterations": "auto"); the run's note says what it found.
+        bool from_noise = s.adaptive_smoothing.has_value();
+        if (ui.checkbox("iterations from the noise", &from_noise))
+        {
+            s.adaptive_smoothing =
+                from_noise ? std::optional<AdaptiveIterations>(AdaptiveIterations{}) : std::nullopt;
+            toggled = true;
+        }
+        if (s.adaptive_smoothing)
+        {
+            float strength = float(s.adaptive_smoothing->strength);
+            if (ImGui::SliderFloat("strength", &strength, 0.0f, 3.0f, "%.2f"))
+            {
+                // Hundredths, as shown: an exported recipe says 1.25, not 1.2500000476837158.
+                s.adaptive_smoothing->strength =
+                    std::round(std::clamp(Scalar(strength), Scalar(0), Scalar(3)) * 100) / 100;
+                dragged = true;
+            }
+            ui.track("strength");
+        }
+        else
+        {
+            if (ImGui::SliderInt("normal iterations", &s.normal_smoothing_iterations, 0, 200))
+            {
+                s.normal_smoothing_iterations = std::clamp(s.normal_smoothing_iterations, 0, 200);
+                dragged = true;
+            }
+            ui.track("normal iterations");
+        }
+    }
     if (s.normal_source == NormalSource::Smoothed || s.joint)
     {
         // Normals kept apart across creases (bilateral weights, docs/recipe.md).

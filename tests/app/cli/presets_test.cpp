@@ -32,7 +32,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* const kPresets[] = {"denoise", "relax", "fair-region", "combined"};
+const char* const kPresets[] = {"denoise", "denoise-organic", "relax", "fair-region", "combined"};
 
 using test::cli;
 

@@ -21,33 +21,6 @@ using namespace meshfair;
 
 namespace {
 
-//! An open grid of 12 x 6 quads folded at x = 6 into an L: a flat floor and a vertical
-//! wall meeting at a 90 degree crease.
-Mesh folded_grid()
-{
-    Mesh m = test::open_grid(12, 6);
-    for (Index v = 0; v < m.vertex_count(); ++v)
-        if (m.positions[3 * v] > 6)
-        {
-            m.positions[3 * v + 2] = m.positions[3 * v] - 6;
-            m.positions[3 * v] = 6;
-        }
-    return m;
-}
-
-Scalar mean_angle_degrees(std::span<const Scalar> u, std::span<const Scalar> clean)
-{
-    Scalar sum = 0;
-    for (size_t f = 0; 3 * f < u.size(); ++f)
-    {
-        Scalar dot = 0;
-        for (int a = 0; a < 3; ++a)
-            dot += u[3 * f + a] * clean[3 * f + a];
-        sum += std::acos(std::clamp<Scalar>(dot, -1, 1)) * 180 / M_PI;
-    }
-    return sum / static_cast<Scalar>(u.size() / 3);
-}
-
 Scalar squared_distance(const Vec3& a, const Vec3& b)
 {
     return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
@@ -95,7 +68,7 @@ TEST_SUITE("BilateralFaceWeights")
 
     TEST_CASE("each weight is the product of the two Gaussians, a crease cuts the weights")
     {
-        const Mesh m = folded_grid();
+        const Mesh m = test::folded_grid();
         const Topology t = build_topology(m);
         const BilateralWeights settings{1.5, 0.35, 1, FaceNeighborhood::Vertex};
         BilateralFaceWeights w(m, t, settings, m.positions);
@@ -139,7 +112,7 @@ TEST_SUITE("BilateralFaceWeights")
         // The spatial factors are kept between reweightings at unchanged positions (the
         // two-stage process) and taken again when a centroid moves (joint mode): either
         // way the weights are a fresh object's, bit for bit.
-        const Mesh m = folded_grid();
+        const Mesh m = test::folded_grid();
         const Topology t = build_topology(m);
         const BilateralWeights settings{1.5, 0.35, 1, FaceNeighborhood::Vertex};
         const std::vector<Scalar> u = face_normals(m, m.positions);
@@ -175,7 +148,7 @@ TEST_SUITE("BilateralFaceWeights")
         "the weighted step's numerator is -1/2 dE_U/du (central differences), its "
         "denominator the weights' sum plus mu_f")
     {
-        Mesh m = folded_grid();
+        Mesh m = test::folded_grid();
         test::perturb(m, 0.1, 5);
         const Topology t = build_topology(m);
         BilateralFaceWeights w(m, t, BilateralWeights{}, m.positions);
@@ -207,7 +180,7 @@ TEST_SUITE("BilateralFaceWeights")
         "without renormalization a stage's Jacobi iteration reaches Eigen's minimizer "
         "of its quadratic")
     {
-        Mesh m = folded_grid();
+        Mesh m = test::folded_grid();
         test::perturb(m, 0.1, 6);
         const Topology t = build_topology(m);
         const Index nf = m.face_count();
@@ -254,7 +227,7 @@ TEST_SUITE("BilateralFaceWeights")
         "reweighted smoothing keeps a crease that the paper's uniform smoothing rounds, "
         "the robust energy never increases")
     {
-        const Mesh clean = folded_grid();
+        const Mesh clean = test::folded_grid();
         Mesh m = clean;
         test::perturb(m, 0.08, 7);
         const Topology t = build_topology(m);
@@ -282,9 +255,9 @@ TEST_SUITE("BilateralFaceWeights")
             robust = now;
             term.step(bilateral, 0.5, scratch);
         }
-        const Scalar noisy = mean_angle_degrees(noisy_u, clean_u);
-        const Scalar theta_uniform = mean_angle_degrees(uniform, clean_u);
-        const Scalar theta_bilateral = mean_angle_degrees(bilateral, clean_u);
+        const Scalar noisy = test::mean_angle_degrees(noisy_u, clean_u);
+        const Scalar theta_uniform = test::mean_angle_degrees(uniform, clean_u);
+        const Scalar theta_bilateral = test::mean_angle_degrees(bilateral, clean_u);
         CAPTURE(noisy);
         CAPTURE(theta_uniform);
         CAPTURE(theta_bilateral);
@@ -296,7 +269,7 @@ TEST_SUITE("BilateralFaceWeights")
         "strong noise widens sigma_r by the normals' median difference, and then the "
         "smoothing removes it where a fixed sigma_r keeps it as features")
     {
-        const Mesh clean = folded_grid();
+        const Mesh clean = test::folded_grid();
         Mesh m = clean;
         test::perturb(m, 0.7, 8);
         const Topology t = build_topology(m);
@@ -319,7 +292,7 @@ TEST_SUITE("BilateralFaceWeights")
             }
             if (noise_scale > 0)
                 CHECK(w.effective_sigma_r() < *first_sigma); // it narrows as the noise goes
-            return mean_angle_degrees(u, clean_u);
+            return test::mean_angle_degrees(u, clean_u);
         };
         Scalar fixed_sigma = 0, adaptive_sigma = 0;
         const Scalar fixed = smoothed(0, &fixed_sigma);

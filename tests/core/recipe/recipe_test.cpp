@@ -92,8 +92,9 @@ TEST_SUITE("Recipe")
     TEST_CASE("every malformed recipe is refused naming the key")
     {
         CHECK(error_of(R"({"iteratoins": 3})") ==
-              "'r.json': iteratoins: unknown key (allowed here: iterations, lambda, tolerance, "
-              "method, taubin_mu, region, hard, soft, centroid, normal, normal_smoothing, joint, "
+              "'r.json': iteratoins: unknown key (allowed here: description, iterations, lambda, "
+              "tolerance, method, taubin_mu, region, hard, soft, centroid, normal, "
+              "normal_smoothing, joint, "
               "bending, volume, falloff, prevent_flips, factor_budget_mb, time)");
         CHECK(error_of(R"({"bending": {"stiffness": 1}})") ==
               "'r.json': bending.stiffness: unknown key (allowed here: mu, membrane)");
@@ -202,7 +203,7 @@ TEST_SUITE("Recipe")
               "'r.json': normal_smoothing.bilateral.neighbors: must be \"edge\" or \"vertex\"");
         CHECK(error_of(smoothing + R"({"bilateral": {"sigma": 1}}})") ==
               "'r.json': normal_smoothing.bilateral.sigma: unknown key (allowed here: sigma_s, "
-              "sigma_r, noise_scale, reweight_every, neighbors)");
+              "sigma_r, noise_scale, reweight_every, neighbors, guidance)");
         CHECK(error_of(R"({"volume": {"keep": true}})") ==
               "'r.json': volume.keep: unknown key (allowed here: open, components)");
         CHECK(error_of(R"({"volume": {"open": "ignore"}})") ==

@@ -10,7 +10,14 @@
 #     saying how the open scan's volume is kept; saved (Ctrl+S) and its recipe exported:
 #     meshfair-cli smooth of the scan with that recipe gives the saved file byte for byte; a
 #     screenshot of the window taken from outside the editor;
-#  2. relax and combined chosen and run in turn, each with its note;
+#  2. Reset to the scan; denoise-organic chosen (its menu entry hovered first: the tooltip
+#     says what it is for, a screenshot); its note says the noise it found and the
+#     iterations taken; the strength slider dragged: the run restarts with more iterations
+#     for the stronger setting, said in a new note; Reset, run to its end (the preset's own
+#     12 steps), saved, its recipe
+#     exported: meshfair-cli smooth of the scan with that recipe gives the saved file byte
+#     for byte; a screenshot;
+#     then relax and combined chosen and run in turn, each with its note;
 #  3. the shape after the three runs: no face turned over against the scan (more than 90
 #     degrees from its normal) and its volume, capped by the boundary loops, within 0.5 %.
 #   window_open_scan.sh MESHFAIR MESHFAIR_CLI BUNNY.obj WORK_DIR
@@ -117,12 +124,67 @@ cmp "$work/cli.obj" "$work/scan.obj" ||
     fail "meshfair-cli smooth with the exported recipe does not give the saved file"
 grep -q '"prevent_flips": true' "$work/denoise-here.json" ||
     fail "the exported recipe lacks the preset's flip guard"
+noise_note="run note: normal smoothing: noise of [0-9.]* mean edge lengths found in the mesh"
+grep -q "$noise_note: [0-9]* iterations (strength 1)" "$log" ||
+    fail "the run's note does not say the noise denoise found in the scan"
 
-# --- 2. The other presets, each run from where the last one stopped.
-run_preset relax 3
-run_preset combined 4
+# --- 2. Reset to the scan; denoise-organic, its tooltip, its strength slider; then the
+# other presets, each run from where the last one stopped.
+click_widget "Reset"
+wait_line "command reset: ok"
+click_widget "preset"
+hover $(widget_at "preset/denoise-organic")
+next_frame
+xwd -root -silent | convert xwd:- "$work/organic-tooltip.png"
+notes=$(count_lines "$noise_note")
+stopped=$(count_lines "run stopped")
+click_widget "preset/denoise-organic" # the menu is open: the entry hovered is taken
+wait_line "command preset: ok" 3
+wait_line "$noise_note: [0-9]* iterations (strength 1)" $((notes + 1))
+key space
+wait_line "run stopped" $((stopped + 1))
+first=$(grep "$noise_note" "$log" | tail -1 | sed 's/.*mesh: \([0-9]*\) iterations.*/\1/')
+settings=$(count_lines "command solver settings: ok")
+read -r sx sy < <(widget_at "strength")
+drag "$sx" "$sy" $((sx + 60)) "$sy" 4 # toward a stronger smoothing
+wait_line "command solver settings: ok" $((settings + 1))
+wait_line "$noise_note: [0-9]* iterations (strength [0-9.]*)" $((notes + 2))
+line=$(grep "$noise_note" "$log" | tail -1)
+strength=$(sed 's/.*(strength \([0-9.]*\)).*/\1/' <<<"$line")
+second=$(sed 's/.*mesh: \([0-9]*\) iterations.*/\1/' <<<"$line")
+python3 -c "import sys; s, a, b = float(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]); sys.exit(0 if s > 1.2 and b > a else 1)" \
+    "$strength" "$first" "$second" ||
+    fail "the strength slider did not take more iterations: strength $strength, $first then $second"
+# From the scan again with the new strength, for the preset's own steps.
+click_widget "Reset"
+wait_line "command reset: ok" 2
+stopped=$(count_lines "run stopped")
+key space
+wait_line "run stopped" $((stopped + 1))
+# The preset's sets' glyphs hidden (display only), so the picture shows the surface.
+shown=$(count_lines "command show set: ok")
+click_widget "sets/centroid/show"
+wait_line "command show set: ok" $((shown + 1))
+click_widget "sets/normal/show"
+wait_line "command show set: ok" $((shown + 2))
+next_frame
+xwd -root -silent | convert xwd:- "$work/organic-strength.png"
 key ctrl+s
 wait_line "command save: ok" 2
+export_recipe "organic-here.json" 2
+grep -q '"iterations": "auto"' "$work/organic-here.json" ||
+    fail "the exported recipe does not take its iterations from the noise"
+grep -q "\"strength\": $strength" "$work/organic-here.json" ||
+    grep -q "\"strength\": ${strength}[0-9]" "$work/organic-here.json" ||
+    fail "the exported recipe lacks the strength $strength"
+"$cli" smooth "$work/input.obj" -o "$work/cli-organic.obj" --recipe "$work/organic-here.json" -q
+cmp "$work/cli-organic.obj" "$work/scan.obj" ||
+    fail "meshfair-cli smooth with the exported organic recipe does not give the saved file"
+
+run_preset relax 4
+run_preset combined 5
+key ctrl+s
+wait_line "command save: ok" 3
 
 # --- 3. No face turned over against the scan, its capped volume kept.
 python3 - "$work/input.obj" "$work/scan.obj" <<'PY' || fail "the presets' result is not what they promise"
@@ -215,4 +277,4 @@ PY
 
 key ctrl+q
 wait_exit "$pid" "$log" "$name" "Ctrl+Q after the save"
-echo "ok: the four presets chosen from the solver panel's menu on an open scan (6 boundary loops), each run to its end with its note; denoise's saved shape reproduced by meshfair-cli from the exported recipe; no face turned over, the capped volume kept; picture: $work/denoised.png"
+echo "ok: the five presets chosen from the solver panel's menu on an open scan (6 boundary loops), each run to its end with its note; denoise's and denoise-organic's (strength $strength: $first then $second normal-smoothing iterations) saved shapes reproduced by meshfair-cli from the exported recipes; no face turned over, the capped volume kept; pictures: $work/denoised.png, $work/organic-tooltip.png, $work/organic-strength.png"
