@@ -127,7 +127,7 @@ if [ "$mode" = run ]; then
     mkdir -p "$out"
     job_start=$SECONDS
     mesh=assets/bunny.obj
-    recipe=assets/recipes/denoise.json
+    recipe=assets/recipes/denoise-organic.json # the bunny is curved everywhere
     counts=$("$cli" info "$mesh" | awk '/^(vertices|faces):/ {printf "%s%s %s", sep, $2, substr($1, 1, length($1) - 1); sep = ", "}')
     "$cli" noise "$mesh" -o "$out/bunny-noisy.obj" --sigma 0.3 --seed 1 >/dev/null
     smoothed=$("$cli" smooth "$out/bunny-noisy.obj" -o "$out/bunny-smoothed.obj" \
@@ -137,8 +137,9 @@ if [ "$mode" = run ]; then
     echo
     echo "MeshFair's main job on the bundled Stanford bunny ($mesh: $counts)"
     echo "  noise     Gaussian, sigma = 0.3 mean edge lengths, seed 1: $out/bunny-noisy.obj"
-    echo "  smoothed  with the preset $recipe (bilateral normal smoothing integrated"
-    echo "            through face-normal and face-centroid constraints, volume kept):"
+    echo "  smoothed  with the preset $recipe (guided normal smoothing, its iterations"
+    echo "            from the noise found, integrated through face-normal and face-centroid"
+    echo "            constraints, volume kept):"
     echo "            $out/bunny-smoothed.obj"
     echo "$smoothed" | sed -n 's/^smoothed [^:]*: /            /p; s/^seconds: /            seconds: /p'
     echo "  picture   $out/before-after.png (left: noisy, right: smoothed; one camera, offscreen)"

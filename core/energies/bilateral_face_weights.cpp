@@ -14,14 +14,6 @@ namespace meshfair {
 
 namespace {
 
-Scalar squared_distance3(const Scalar* a, const Scalar* b)
-{
-    Scalar sum = 0;
-    for (int k = 0; k < 3; ++k)
-        sum += (a[k] - b[k]) * (a[k] - b[k]);
-    return sum;
-}
-
 //! Every k-th neighbour entry goes into the median, so that at most 2^20 do.
 size_t sample_stride(size_t entries)
 {

@@ -3,6 +3,7 @@
 #include "core/energies/patch_guidance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/geometry/face_geometry.h"
@@ -14,10 +15,7 @@ namespace {
 
 Scalar distance3(const Scalar* a, const Scalar* b)
 {
-    Scalar sum = 0;
-    for (int k = 0; k < 3; ++k)
-        sum += (a[k] - b[k]) * (a[k] - b[k]);
-    return std::sqrt(sum);
+    return std::sqrt(squared_distance3(a, b));
 }
 
 } // namespace
@@ -52,7 +50,32 @@ PatchGuidance::PatchGuidance(const Mesh& mesh, const Topology& topology)
     : mesh_(&mesh), topology_(&topology)
 {
     vertex_face_rings(mesh, topology, offsets_, ring_);
+    // E_P of every patch, as positions in the dual graph's listing (each edge from its
+    // lower face): found once, read at every compute().
+    const Index nf = mesh.face_count();
+    const std::vector<Index>& dual_offsets = topology.face_neighbor_offsets;
+    inner_offsets_.assign(static_cast<size_t>(nf) + 1, 0);
+    for (Index f = 0; f < nf; ++f)
+    {
+        const std::span<const Index> ring = ring_of(f);
+        const auto in_patch = [&](Index h) {
+            return h == f || std::binary_search(ring.begin(), ring.end(), h);
+        };
+        const auto add = [&](Index i) {
+            for (Index k = dual_offsets[i]; k < dual_offsets[i + 1]; ++k)
+            {
+                const Index j = topology.face_neighbors[k];
+                if (j > i && in_patch(j))
+                    inner_edges_.push_back(k);
+            }
+        };
+        add(f);
+        for (const Index i : ring)
+            add(i);
+        inner_offsets_[f + 1] = static_cast<Index>(inner_edges_.size());
+    }
     area_.assign(mesh.face_count(), 0);
+    jump_.assign(topology.face_neighbors.size(), 0);
     consistency_.assign(mesh.face_count(), 0);
     mean_.assign(3 * static_cast<size_t>(mesh.face_count()), 0);
 }
@@ -62,43 +85,54 @@ void PatchGuidance::compute(std::span<const Scalar> x, std::span<const Scalar> u
 {
     constexpr Scalar kEpsilon = 1e-9;
     const Index nf = mesh_->face_count();
-    // The areas, each patch's consistency and mean normal, then each face's best patch
-    // among those containing it: three sweeps, each face's work its own.
+    // The areas and the jumps phi across each dual edge (once a face, not once a patch
+    // that holds it), each patch's consistency and mean normal, then each face's best
+    // patch among those containing it: three sweeps, each face's work its own.
+    const std::vector<Index>& dual_offsets = topology_->face_neighbor_offsets;
     parallel_for(nf, [&](Index f) {
         const Vec3 a = face_area_vector(*mesh_, x, f);
         area_[f] = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        for (Index k = dual_offsets[f]; k < dual_offsets[f + 1]; ++k)
+            jump_[k] = distance3(&u[3 * f], &u[3 * topology_->face_neighbors[k]]);
     });
     parallel_for(nf, [&](Index f) {
         const std::span<const Index> ring = ring_of(f);
-        const auto in_patch = [&](Index h) {
-            return h == f || std::binary_search(ring.begin(), ring.end(), h);
-        };
         Vec3 mean{0, 0, 0};
-        Scalar spread = 0, jump_max = 0, jump_sum = 0;
+        Scalar spread2 = 0, jump_max = 0, jump_sum = 0; // D(P)^2: one root a patch
+        // D(P) over every pair once. The patch's normals gathered first (most patches hold
+        // a dozen faces): each is then read once from the mesh-wide array, not once a pair.
+        constexpr size_t kGathered = 48;
+        if (ring.size() < kGathered)
+        {
+            std::array<Scalar, 3 * kGathered> n;
+            std::copy_n(&u[3 * static_cast<size_t>(f)], 3, n.data());
+            for (size_t a = 0; a < ring.size(); ++a)
+                std::copy_n(&u[3 * static_cast<size_t>(ring[a])], 3, &n[3 * (a + 1)]);
+            for (size_t a = 0; a <= ring.size(); ++a)
+                for (size_t b = a + 1; b <= ring.size(); ++b)
+                    spread2 = std::max(spread2, squared_distance3(&n[3 * a], &n[3 * b]));
+        }
+        else
+            for (size_t a = 0; a <= ring.size(); ++a)
+                for (size_t b = a + 1; b <= ring.size(); ++b)
+                    spread2 = std::max(
+                        spread2,
+                        squared_distance3(&u[3 * (a == 0 ? f : ring[a - 1])], &u[3 * ring[b - 1]]));
         const auto visit = [&](Index i) {
             for (int k = 0; k < 3; ++k)
                 mean[k] += area_[i] * u[3 * static_cast<size_t>(i) + k];
-            // D(P): every pair once (i with the faces after it in the patch's order f, ring).
-            if (i == f)
-                for (const Index j : ring)
-                    spread = std::max(spread, distance3(&u[3 * i], &u[3 * j]));
-            else
-                for (auto it = std::upper_bound(ring.begin(), ring.end(), i); it != ring.end();
-                     ++it)
-                    spread = std::max(spread, distance3(&u[3 * i], &u[3 * *it]));
-            // E_P: each edge shared by two faces of P once (from its lower face).
-            for (const Index j : topology_->face_neighbors_of(i))
-                if (j > i && in_patch(j))
-                {
-                    const Scalar phi = distance3(&u[3 * i], &u[3 * j]);
-                    jump_max = std::max(jump_max, phi);
-                    jump_sum += phi;
-                }
         };
         visit(f);
         for (const Index i : ring)
             visit(i);
-        consistency_[f] = spread * jump_max / (jump_sum + kEpsilon);
+        // E_P: each edge shared by two faces of P once.
+        for (Index e = inner_offsets_[f]; e < inner_offsets_[f + 1]; ++e)
+        {
+            const Scalar phi = jump_[inner_edges_[e]];
+            jump_max = std::max(jump_max, phi);
+            jump_sum += phi;
+        }
+        consistency_[f] = std::sqrt(spread2) * jump_max / (jump_sum + kEpsilon);
         const Scalar length = std::sqrt(mean[0] * mean[0] + mean[1] * mean[1] + mean[2] * mean[2]);
         for (int k = 0; k < 3; ++k)
             mean_[3 * static_cast<size_t>(f) + k] =

@@ -50,9 +50,12 @@ private:
     const Mesh* mesh_;
     const Topology* topology_;
     std::vector<Index> offsets_, ring_; //!< CSR: the faces sharing a vertex with each face
-    std::vector<Scalar> area_;          //!< A_f at the last compute(), #F
-    std::vector<Scalar> consistency_;   //!< H(P_f), #F
-    std::vector<Scalar> mean_;          //!< m_{P_f}, 3 #F
+    //! CSR: each patch's E_P, as positions in the topology's face_neighbors listing
+    std::vector<Index> inner_offsets_, inner_edges_;
+    std::vector<Scalar> area_;        //!< A_f at the last compute(), #F
+    std::vector<Scalar> jump_;        //!< phi of each dual-graph listing (CSR of N*(f))
+    std::vector<Scalar> consistency_; //!< H(P_f), #F
+    std::vector<Scalar> mean_;        //!< m_{P_f}, 3 #F
 };
 
 //! \brief The faces sharing a vertex with f, for every f: CSR (offsets #F + 1), each list

@@ -12,6 +12,13 @@
 
 namespace meshfair {
 
+//! |a - b|^2 for 3-vectors at a and b.
+inline Scalar squared_distance3(const Scalar* a, const Scalar* b)
+{
+    return (a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) +
+           (a[2] - b[2]) * (a[2] - b[2]);
+}
+
 //! \brief Centroid x_f = (1/n_f) sum_{i in f} x_i of face f for positions `x` (3 #V).
 //! Sum of the positions of face f's corners, in face order (face_centroid before the
 //! division; the centroid term scales it itself with a cached 1/n_f).
