@@ -632,4 +632,37 @@ TEST_SUITE("Editor scripts")
                              doctest::Contains("'m.json': actions[0]: no widget 'Launch'"),
                              InvalidInputError);
     }
+
+    TEST_CASE(
+        "a preset runs its own steps, the strength takes the iterations from the noise "
+        "and a count puts them back")
+    {
+        const fs::path mesh = bunny_copy();
+        Editor e(mesh);
+        TestHost host(e);
+        play_script(parse_script(R"([{"noise": 0.3, "seed": 2}, {"preset": "denoise-organic"},
+                                     {"solver": {"strength": 2}}, {"click_widget": "Play"}])",
+                                 "organic.json"),
+                    e.session, host);
+        while (e.session.playing())
+            e.session.take_frame();
+        const SolverSettings& s = e.doc().solver;
+        REQUIRE(s.adaptive_smoothing);
+        CHECK(s.adaptive_smoothing->strength == 2);
+        CHECK(s.adaptive_smoothing->per_noise == 50); // the preset's rate
+        CHECK(s.steps_per_run == 12);                 // the preset's own iterations
+        CHECK(e.doc().steps_from_base == 12);
+        // The run says what it found, at the strength given.
+        const auto& notes = e.session.state().run_notes;
+        const auto found = std::find_if(notes.begin(), notes.end(), [](const std::string& n) {
+            return n.rfind("normal smoothing: noise of ", 0) == 0;
+        });
+        REQUIRE(found != notes.end());
+        CHECK(found->find("(strength 2)") != std::string::npos);
+        // A count replaces the iterations from the noise.
+        play_script(parse_script(R"([{"solver": {"normal_smoothing_iterations": 5}}])", "n.json"),
+                    e.session, host);
+        CHECK(!e.doc().solver.adaptive_smoothing);
+        CHECK(e.doc().solver.normal_smoothing_iterations == 5);
+    }
 }
