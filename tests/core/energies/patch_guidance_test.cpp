@@ -62,10 +62,10 @@ TEST_SUITE("PatchGuidance")
         "the guidance unit length and the same bits on one and two threads")
     {
         const test::ThreadCountGuard restore;
-        for (auto& [name, clean] : test::small_mesh_kinds())
+        for (const auto& kind : test::small_mesh_kinds())
         {
-            CAPTURE(name);
-            Mesh m = clean;
+            CAPTURE(kind.first); // (clang: CAPTURE cannot name a structured binding)
+            Mesh m = kind.second;
             test::perturb(m, 0.05, 3);
             const Topology t = build_topology(m);
             const std::vector<Scalar> u = face_normals(m, m.positions);
