@@ -3,7 +3,8 @@
 // Recipe JSON parser. The input is the JSON text, unchanged. An accepted recipe must
 // survive recipe_to_json -> parse_recipe -> recipe_to_json unchanged (the documented
 // round trip); a recipe that fits a small fixed mesh (check_recipe) then runs at most 3
-// steps (and 3 normal-smoothing iterations) on it, which must keep every coordinate
+// steps (and 3 normal-smoothing iterations, or those of at most 3 an edge length of the
+// noise found with "auto") on it, which must keep every coordinate
 // finite when all of the recipe's numbers are within +-1000 (per-element weights: mu times
 // weight within +-1e6).
 
@@ -58,7 +59,13 @@ int test_one_input(const std::uint8_t* data, size_t size)
     }
     recipe.iterations = std::min(recipe.iterations, 3);
     if (recipe.normal_smoothing)
+    {
         recipe.normal_smoothing->iterations = std::min(recipe.normal_smoothing->iterations, 3);
+        // "auto": a few iterations an edge length of noise (strength <= 10 by check_recipe).
+        if (recipe.normal_smoothing->adaptive)
+            recipe.normal_smoothing->adaptive->per_noise =
+                std::min<Scalar>(recipe.normal_smoothing->adaptive->per_noise, 3);
+    }
     std::vector<Scalar> x = mesh.positions;
     try
     {
