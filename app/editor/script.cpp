@@ -181,6 +181,11 @@ void play_script(const Script& script, EditorSession& session, ScriptHost& host)
                 while (session.playing())
                     session.take_frame();
                 host.run_frame();
+                // A run the recipe did not fit ends at once: the script stops with the
+                // reason, as the status line gives it to a person.
+                if (!session.state().solver.error.empty())
+                    script_error(script.name, a.where,
+                                 "cannot solve: " + session.state().solver.error);
                 break;
             case Kind::Frames:
                 for (int k = 0; k < a.count; ++k)

@@ -163,6 +163,16 @@ bool SolverController::update()
 {
     restart_if_needed();
     bool fresh = take_positions();
+    const SolverStatus st = solver_.status();
+    if (run_open_ && !st.playing && !st.ready && !st.preparing)
+    {
+        // The restart the run waited for failed (the recipe did not fit: status().error
+        // says why) or was cancelled: there is nothing to run, and the run ends with no
+        // step to record, rather than waiting for frames that never come.
+        run_open_ = false;
+        run_before_.reset();
+        return fresh;
+    }
     if (run_open_ && !solver_.status().playing && solver_.status().ready)
     {
         // The solver may have published the run's last frame after the take above (it
@@ -205,6 +215,14 @@ bool SolverController::play(int frames, std::string& why)
     if (!problems().empty())
     {
         why = "cannot solve: " + problems().front();
+        return false;
+    }
+    // The recipe's restart failed already: said now, where Space was pressed (one still
+    // preparing that fails ends the run at once, update()).
+    const SolverStatus st = solver_.status();
+    if (!st.ready && !st.preparing && !st.error.empty())
+    {
+        why = "cannot solve: " + st.error;
         return false;
     }
     run_before_ = capture(document_, kPositions);

@@ -633,6 +633,26 @@ TEST_SUITE("Editor scripts")
                              InvalidInputError);
     }
 
+    TEST_CASE("a run the recipe does not fit ends at once: the script stops with the reason")
+    {
+        const fs::path mesh = bunny_copy();
+        Editor e(mesh);
+        TestHost host(e);
+        // fair-region on the whole mesh: nothing holds the thin plate (the direct method
+        // refuses it). Play ends instead of waiting for frames that never come.
+        const Script script =
+            parse_script(R"([{"preset": "fair-region"}, {"play": 3}])", "refused.json");
+        CHECK_THROWS_WITH_AS(play_script(script, e.session, host),
+                             doctest::Contains("'refused.json': actions[1]: cannot solve: "),
+                             InvalidInputError);
+        CHECK(!e.session.playing());
+        CHECK(e.doc().steps_from_base == 0);
+        CHECK(e.session.state().message_is_error);
+        CAPTURE(e.session.state().message);
+        CHECK(e.session.state().message.find("is held by nothing") != std::string::npos);
+        CHECK(e.session.history().undo_label() == "preset"); // no empty run recorded
+    }
+
     TEST_CASE(
         "a preset runs its own steps, the strength takes the iterations from the noise "
         "and a count puts them back")
