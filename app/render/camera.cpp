@@ -347,6 +347,18 @@ Camera camera_from_json(const std::string& text, const std::string& name, const 
         else
             bad_field(name, "up", "must be \"y\" or \"z\"");
     }
+    if (scene != nullptr && !scene->empty() && (!j.contains("target") || !j.contains("distance")))
+    {
+        // A view that says how to look but not at what (written by hand: `{"up": "z"}`
+        // alone): the mesh framed, as Home frames it, for what the file leaves out; the
+        // default target and distance would put the eye anywhere, inside the mesh too.
+        Camera framed = c;
+        framed.frame(*scene, 1.0);
+        if (!j.contains("target"))
+            c.target = framed.target;
+        if (!j.contains("distance"))
+            c.distance = framed.distance;
+    }
     if (j.contains("scene_center"))
         c.scene_center = vector_field<3>(j["scene_center"], name, "scene_center");
     if (j.contains("scene_radius"))

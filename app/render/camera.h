@@ -134,7 +134,9 @@ std::string to_json(const Camera& camera);
 //! \brief Reads a camera written by to_json; `name` names the source in messages.
 //! \throw InvalidInputError naming the field at fault.
 //! \brief With `scene`, a view that gives no scene centre or radius (written by hand, or by
-//! another program) gets them from that box, so that near and far contain the mesh.
+//! another program) gets them from that box, so that near and far contain the mesh; one
+//! without a target or a distance gets those of the box framed (Camera::frame, aspect 1)
+//! with the view's own rotation, projection and field of view.
 Camera camera_from_json(const std::string& text, const std::string& name,
                         const Box3* scene = nullptr);
 

@@ -276,4 +276,30 @@ TEST_SUITE("Camera up axis")
         CHECK_THROWS_WITH(camera_from_json(R"({"up": "x"})", "v.json"),
                           "'v.json': view field 'up' must be \"y\" or \"z\"");
     }
+
+    TEST_CASE("a view file without a target or a distance frames the mesh")
+    {
+        Box3 box;
+        box.lo = {10, 20, 30};
+        box.hi = {14, 26, 42};
+        // `{"up": "z"}` alone: looking at the mesh's centre from outside it, as Home frames it.
+        const Camera up = camera_from_json(R"({"up": "z"})", "v.json", &box);
+        Camera framed;
+        framed.up_axis = UpAxis::Z;
+        framed.frame(box, 1.0);
+        CHECK(up.up_axis == UpAxis::Z);
+        CHECK(glm::length(up.target - box.center()) < 1e-12);
+        CHECK(up.distance == doctest::Approx(framed.distance));
+        CHECK(up.distance > box.radius()); // the eye outside the mesh's sphere
+        // What the file gives is kept: its target, with the framing distance, and the other way.
+        const Camera t = camera_from_json(R"({"target": [0, 0, 0]})", "v.json", &box);
+        CHECK(glm::length(t.target) == 0);
+        CHECK(t.distance == doctest::Approx(framed.distance));
+        const Camera d = camera_from_json(R"({"distance": 3})", "v.json", &box);
+        CHECK(d.distance == 3);
+        CHECK(glm::length(d.target - box.center()) < 1e-12);
+        // A narrower field of view frames from further away.
+        const Camera narrow = camera_from_json(R"({"fov_y_degrees": 20})", "v.json", &box);
+        CHECK(narrow.distance > up.distance);
+    }
 }
