@@ -229,9 +229,11 @@ std::optional<KeyChord> parse_key_chord(std::string_view text)
         chord.key = key::Digit0 + (rest[0] - '0');
     else if (rest.size() == 4 && rest.rfind("kp_", 0) == 0 && rest[3] >= '0' && rest[3] <= '9')
         chord.key = key::Keypad(rest[3] - '0');
-    else if (rest.size() >= 2 && rest[0] == 'f' &&
+    else if (rest.size() >= 2 && rest.size() <= 3 && rest[0] == 'f' &&
              rest.find_first_not_of("0123456789", 1) == std::string::npos)
     {
+        // F1 to F12: at most two digits (a longer run of digits, which std::stoi would
+        // throw on, names no key either).
         const int n = std::stoi(rest.substr(1));
         if (n < 1 || n > 12)
             return std::nullopt;

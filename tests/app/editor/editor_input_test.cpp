@@ -211,6 +211,12 @@ TEST_SUITE("Editor input")
         CHECK(std::holds_alternative<cmd::SetTool>(*command_for_key(*parse_key_chord("r"))));
         CHECK(std::holds_alternative<cmd::Solve>(*command_for_key(*parse_key_chord("enter"))));
         CHECK_FALSE(parse_key_chord("hyper+q").has_value());
+        // Function keys F1 to F12; a long run of digits names none (and does not throw).
+        CHECK(parse_key_chord("f12").has_value());
+        CHECK_FALSE(parse_key_chord("f13").has_value());
+        CHECK_FALSE(parse_key_chord("f0").has_value());
+        CHECK_FALSE(
+            parse_key_chord("f0000000000000000000000000000000000000000300000000001").has_value());
     }
 
     TEST_CASE("a click on a panel never reaches the view: the selection stays, the button acts")
