@@ -360,8 +360,7 @@ bool CommandExecutor::operator()(const cmd::ApplyPreset& c) const
     d.solver = with_pace(preset.settings, d.solver);
     // A run plays the preset's own steps: its settings were tuned for that many.
     d.solver.steps_per_run = std::max(1, preset.iterations);
-    const std::string description = preset_description(c.preset);
-    say("preset " + c.preset + (description.empty() ? "" : " (" + description + ")") +
+    say("preset " + c.preset + (preset.description.empty() ? "" : " (" + preset.description + ")") +
         ": its settings, with your regions and pins" +
         (s.problems().empty() ? std::string() : " (" + s.problems().front() + ")"));
     return true;

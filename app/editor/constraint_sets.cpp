@@ -579,6 +579,7 @@ ImportedRecipe sets_from_recipe(const Recipe& r, const Mesh& mesh)
 {
     ImportedRecipe out;
     out.iterations = r.iterations;
+    out.description = r.description;
     SolverSettings& s = out.settings;
     s.optimal_step = r.optimal_step;
     s.lambda = r.lambda;

@@ -197,6 +197,7 @@ struct ImportedRecipe
     std::vector<ConstraintSet> sets;
     SolverSettings settings;
     int iterations = 0;
+    std::string description; //!< the recipe's "description"
 };
 //! \pre check_recipe(recipe, mesh) holds.
 ImportedRecipe sets_from_recipe(const Recipe& recipe, const Mesh& mesh);

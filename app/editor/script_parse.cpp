@@ -499,7 +499,10 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             else if (key == "normal_smoothing_iterations")
                 s.normal_smoothing_iterations = r.integer(value, k, 0, 100000);
             else if (key == "strength")
-                s.adaptive_smoothing = AdaptiveIterations{50, r.number(value, k, 0, 10)};
+            {
+                s.adaptive_smoothing = AdaptiveIterations{};
+                s.adaptive_smoothing->strength = r.number(value, k, 0, 10);
+            }
             else if (key == "normal_smoothing_lambda")
                 s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
             else if (key == "joint")

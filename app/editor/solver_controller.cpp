@@ -173,7 +173,7 @@ bool SolverController::update()
         run_before_.reset();
         return fresh;
     }
-    if (run_open_ && !solver_.status().playing && solver_.status().ready)
+    if (run_open_ && !st.playing && st.ready)
     {
         // The solver may have published the run's last frame after the take above (it
         // publishes and stops in one step): those positions belong to this run's undo step.

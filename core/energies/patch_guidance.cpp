@@ -101,23 +101,24 @@ void PatchGuidance::compute(std::span<const Scalar> x, std::span<const Scalar> u
         Scalar spread2 = 0, jump_max = 0, jump_sum = 0; // D(P)^2: one root a patch
         // D(P) over every pair once. The patch's normals gathered first (most patches hold
         // a dozen faces): each is then read once from the mesh-wide array, not once a pair.
+        // (A patch too large to gather, which only a vertex of dozens of faces makes, is read
+        // in place.)
         constexpr size_t kGathered = 48;
-        if (ring.size() < kGathered)
+        std::array<Scalar, 3 * kGathered> gathered;
+        const bool gather = ring.size() < kGathered;
+        const auto normal = [&](size_t a) { // a = 0: f, else ring[a - 1]
+            return gather ? &gathered[3 * a]
+                          : &u[3 * static_cast<size_t>(a == 0 ? f : ring[a - 1])];
+        };
+        if (gather)
         {
-            std::array<Scalar, 3 * kGathered> n;
-            std::copy_n(&u[3 * static_cast<size_t>(f)], 3, n.data());
+            std::copy_n(&u[3 * static_cast<size_t>(f)], 3, gathered.data());
             for (size_t a = 0; a < ring.size(); ++a)
-                std::copy_n(&u[3 * static_cast<size_t>(ring[a])], 3, &n[3 * (a + 1)]);
-            for (size_t a = 0; a <= ring.size(); ++a)
-                for (size_t b = a + 1; b <= ring.size(); ++b)
-                    spread2 = std::max(spread2, squared_distance3(&n[3 * a], &n[3 * b]));
+                std::copy_n(&u[3 * static_cast<size_t>(ring[a])], 3, &gathered[3 * (a + 1)]);
         }
-        else
-            for (size_t a = 0; a <= ring.size(); ++a)
-                for (size_t b = a + 1; b <= ring.size(); ++b)
-                    spread2 = std::max(
-                        spread2,
-                        squared_distance3(&u[3 * (a == 0 ? f : ring[a - 1])], &u[3 * ring[b - 1]]));
+        for (size_t a = 0; a <= ring.size(); ++a)
+            for (size_t b = a + 1; b <= ring.size(); ++b)
+                spread2 = std::max(spread2, squared_distance3(normal(a), normal(b)));
         const auto visit = [&](Index i) {
             for (int k = 0; k < 3; ++k)
                 mean[k] += area_[i] * u[3 * static_cast<size_t>(i) + k];

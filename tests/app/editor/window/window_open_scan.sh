@@ -186,6 +186,16 @@ grep -q "\"strength\": $strength" "$work/organic-here.json" ||
 cmp "$work/cli-organic.obj" "$work/scan.obj" ||
     fail "meshfair-cli smooth with the exported organic recipe does not give the saved file"
 
+# The iterations from the noise off: the panel offers a count instead; on again: the
+# strength comes back.
+settings=$(count_lines "command solver settings: ok")
+click_widget "iterations from the noise"
+wait_line "command solver settings: ok" $((settings + 1))
+widget_at "normal iterations" >/dev/null
+click_widget "iterations from the noise"
+wait_line "command solver settings: ok" $((settings + 2))
+widget_at "strength" >/dev/null
+
 run_preset relax 4
 run_preset combined 5
 key ctrl+s
