@@ -114,7 +114,8 @@ enum class DisplayToggle
     SidePanel,
     Help,
     EnergyPlot,
-    EnergyLogScale
+    EnergyLogScale,
+    EnergyWholeMesh //!< the plot's energy of the whole mesh, or of what moves
 };
 struct Toggle
 {

@@ -171,6 +171,9 @@ bool CommandExecutor::operator()(const cmd::Toggle& c) const
         case cmd::DisplayToggle::EnergyLogScale:
             st.energy_log_scale = !st.energy_log_scale;
             break;
+        case cmd::DisplayToggle::EnergyWholeMesh:
+            st.energy_whole_mesh = !st.energy_whole_mesh;
+            break;
     }
     return true;
 }

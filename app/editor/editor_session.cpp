@@ -231,6 +231,13 @@ void EditorSession::settle_preparation()
 
 void EditorSession::update()
 {
+    // The plot's relative gradient costs a pass a frame where the step does not sum it:
+    // only while the plot is shown.
+    if (synced_.plot_gradient != state_.show_energy)
+    {
+        synced_.plot_gradient = state_.show_energy;
+        solver_.set_plot_gradient(state_.show_energy);
+    }
     const bool was_playing = solver_.playing();
     if (solver_.update())
     {

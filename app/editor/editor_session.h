@@ -178,6 +178,7 @@ private:
         std::optional<std::uint64_t> selection, glyphs_sets, glyphs_positions, positions, notes,
             border, counts;
         std::optional<std::uint64_t> energy;
+        std::optional<bool> plot_gradient; //!< asked of the solver (the plot shown)
         int restarts = 0;       //!< the solver's restarts whose notes the status bar has told
         bool preparing = false; //!< the solver was preparing at the last frame
         //! The weight map shown (the sets' version and the set painted), if any.

@@ -53,7 +53,10 @@ struct EditorState
     std::vector<std::pair<std::string, std::size_t>> region_holes;
     bool playing = false;          //!< refreshed likewise
     bool energy_log_scale = false; //!< the energy plot's vertical axis
-    bool show_energy = true;       //!< the energy plot window
+    //! The plot's energy: of the whole mesh, or (false) of what moves: the terms' parts
+    //! with a free vertex (EnergySample::held left out) and the relative gradient.
+    bool energy_whole_mesh = false;
+    bool show_energy = true; //!< the energy plot window
     //! The heat map shown: each vertex coloured by its share of a term (nullopt: none).
     std::optional<EnergyTerm> heat_map;
     //! When a crashed session of this mesh left recovery files: when they were saved.

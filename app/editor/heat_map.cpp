@@ -6,6 +6,7 @@
 #include <array>
 #include <utility>
 
+#include "app/render/palette.h"
 #include "core/recipe/energy_terms.h"
 
 namespace meshfair::app {
@@ -38,12 +39,13 @@ std::optional<EnergyTerm> heat_term_named(std::string_view name)
     return std::nullopt;
 }
 
-std::vector<float> heat_colors(std::span<const Scalar> shares)
+std::vector<float> heat_colors(std::span<const Scalar> shares, std::span<const char> shown)
 {
+    const auto is_shown = [&](size_t i) { return shown.empty() || shown[i] != 0; };
     std::vector<Scalar> positive;
-    for (const Scalar v : shares)
-        if (v > 0)
-            positive.push_back(v);
+    for (size_t i = 0; i < shares.size(); ++i)
+        if (shares[i] > 0 && is_shown(i))
+            positive.push_back(shares[i]);
     Scalar top = 0;
     if (!positive.empty())
     {
@@ -56,6 +58,11 @@ std::vector<float> heat_colors(std::span<const Scalar> shares)
     std::vector<float> rgb(3 * shares.size());
     for (size_t i = 0; i < shares.size(); ++i)
     {
+        if (!is_shown(i))
+        {
+            std::copy(palette::kHeatHidden.begin(), palette::kHeatHidden.end(), &rgb[3 * i]);
+            continue;
+        }
         const double t = top > 0 ? std::clamp(shares[i] / top, 0.0, 1.0) : 0.0;
         const double x = 3 * t;
         const int s = std::min(static_cast<int>(x), 2);

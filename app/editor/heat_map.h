@@ -22,6 +22,9 @@ std::optional<EnergyTerm> heat_term_named(std::string_view name);
 //! \brief Per-vertex colours (RGB in [0, 1], 3 per value) for each vertex's share of a term:
 //! dark blue for none, through teal and yellow, to red at the 99th percentile of the
 //! positive shares and above (so that a few extreme vertices do not wash out the rest).
-std::vector<float> heat_colors(std::span<const Scalar> shares);
+//! With `shown` (#V flags, or empty: all), only those vertices are coloured and count for
+//! the percentile; the others get the neutral grey kHeatHidden (a region's fixed vertices,
+//! whose energy no step changes).
+std::vector<float> heat_colors(std::span<const Scalar> shares, std::span<const char> shown = {});
 
 } // namespace meshfair::app

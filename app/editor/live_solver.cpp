@@ -208,6 +208,7 @@ void LiveSolver::place_pins(std::span<const Scalar> targets)
     session.move_pins(targets); // (the free vertices stay: the minimizer on record)
     known_energy_.reset();      // new positions at the same step count
     energy_due_ = false;
+    held_.reset();                    // the pins are fixed vertices that moved
     display_run_ = new_display_run(); // pins may move outside the changing part
     back_.assign(session.positions().begin(), session.positions().end());
     compute_display(back_, run_->mesh());
@@ -296,7 +297,25 @@ void LiveSolver::compute_heat(std::optional<EnergyTerm> term)
         return;
     shares_.resize(run_->session().positions().size() / 3);
     run_->session().vertex_energy(run_->session().positions(), *term, shares_);
-    heat_back_ = heat_colors(shares_); // the colours too: the interface only uploads them
+    // The colours too (the interface only uploads them), of the free vertices alone: the
+    // fixed ones' energy is the same whatever the run does.
+    heat_back_ = heat_colors(shares_, heat_free_);
+}
+
+void LiveSolver::set_plot_gradient(bool on)
+{
+    std::lock_guard lock(mutex_);
+    plot_gradient_ = on;
+}
+
+EnergySample LiveSolver::sample_now(int step, bool want_gradient, Scalar gradient)
+{
+    Session& session = run_->session();
+    if (!held_)
+        held_ = session.held_energy(session.positions());
+    if (gradient < 0 && want_gradient)
+        gradient = session.gradient(session.positions());
+    return EnergySample{step, run_->energy(), *held_, gradient};
 }
 
 SolverStatus LiveSolver::status() const
@@ -345,6 +364,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     std::optional<EnergySample> known = known_energy_;
     const std::optional<EnergyTerm> heat = heat_term_;
     const std::uint64_t rule_epoch = rule_epoch_;
+    const bool want_gradient = plot_gradient_;
     lock.unlock();
 
     // Outside the lock: the interface keeps drawing while the steps run.
@@ -354,11 +374,14 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     bool solve_goes_on = false; // a frame of a progressive solve: the next one is due
     Scalar relative_gradient = -1;
     Session& session = run_->session();
+    if (!held_) // (the steps move no fixed vertex: the same before and after them)
+        held_ = session.held_energy(session.positions());
     if (solves_for_minimizer(session.recipe().method))
     {
         // Each step solves for the minimizer from where it starts: the run stops by run()'s
         // rule on the gradient, after one step (two when rounding leaves some to refine).
         DirectConvergence rule(session.recipe().tolerance);
+        Scalar gradient_now = -1; // |r| where the frame ends, when the rule computed it
         // A pin drag: the minimizer follows the pins without a solve where it can.
         if (solving_ && session.follow_pins())
         {
@@ -380,15 +403,18 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
             done = 1;
             solve_goes_on = !finished;
             if (finished)
-                converged_now =
-                    rule.stop_after(info.gradient, session.gradient(session.positions()));
+            {
+                gradient_now = session.gradient(session.positions());
+                converged_now = rule.stop_after(info.gradient, gradient_now);
+            }
         }
         for (; done < n && !converged_now && !solve_goes_on; ++done)
         {
             const StepInfo info = run_->step();
-            converged_now = rule.stop_after(info.gradient, session.gradient(session.positions()));
+            gradient_now = session.gradient(session.positions());
+            converged_now = rule.stop_after(info.gradient, gradient_now);
         }
-        known = EnergySample{first + done, run_->energy()};
+        known = sample_now(first + done, want_gradient, gradient_now);
     }
     else
     {
@@ -405,13 +431,15 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         // Without the energy from the sweep nor a tolerance, the steps alone: the plot's
         // point is the frame's last positions' (below), not a pass per step.
         const bool per_step = session.fuses_energy() || tracked;
+        // The fused sweep sums the gradient at little cost: the plot's, when shown.
+        const bool step_gradient = tracked || (want_gradient && session.fuses_energy());
         for (; done < n && !per_step; ++done)
             session.step();
         for (; done < n && per_step; ++done)
         {
             TermEnergies start;
-            const StepInfo info = session.step(start, tracked);
-            known = EnergySample{first + done, start};
+            const StepInfo info = session.step(start, step_gradient);
+            known = EnergySample{first + done, start, *held_, step_gradient ? info.gradient : -1};
             if (tracked && step_rule_->converged_at(info.gradient))
             {
                 session.revert_step();
@@ -424,12 +452,12 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         // gradient is checked as run() checks it.
         if (!converged_now && done > 0 && last_frame)
         {
-            known = EnergySample{first + done, run_->energy()};
-            converged_now =
-                tracked && step_rule_->converged_at(session.gradient(session.positions()));
+            const Scalar gradient = tracked ? session.gradient(session.positions()) : -1;
+            known = sample_now(first + done, want_gradient, gradient);
+            converged_now = tracked && step_rule_->converged_at(gradient);
         }
         if (!per_step && done > 0)
-            known = EnergySample{first + done, run_->energy()};
+            known = sample_now(first + done, want_gradient);
         if (tracked)
             relative_gradient = step_rule_->relative();
     }
@@ -492,7 +520,8 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
 }
 
 LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun> previous,
-                                         const std::shared_ptr<PreparationProgress>& progress)
+                                         const std::shared_ptr<PreparationProgress>& progress,
+                                         bool want_gradient)
 {
     Prepared p;
     try
@@ -543,7 +572,11 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
         p.notes = p.run->session().notes();
         if (const SparseCholesky* f = p.run->session().factorization())
             p.factor_stats = f->stats();
-        p.energy = p.run->energy();
+        // The curve's first point: the held part as of now (the pins are placed).
+        Session& session = p.run->session();
+        p.start = EnergySample{0, p.run->energy(), session.held_energy(session.positions()),
+                               want_gradient ? session.gradient(session.positions()) : -1};
+        p.free = session.free_flags();
         vertex_faces_ = r.vertex_faces;
         // Frames of this run recompute and upload only what its steps move.
         display_run_ = new_display_run();
@@ -618,13 +651,15 @@ void LiveSolver::worker()
             // frame's steps and its publication).
             busy_ = true;
             const std::uint64_t generation = generation_;
+            const bool want_gradient = plot_gradient_;
+            const int steps = status_.steps;
             lock.unlock();
-            const TermEnergies energy = run_->energy();
+            const EnergySample sample = sample_now(steps, want_gradient);
             lock.lock();
             busy_ = false;
             if (generation == generation_ && energy_due_)
             {
-                known_energy_ = EnergySample{status_.steps, energy};
+                known_energy_ = sample;
                 energies_.push_back(*known_energy_);
                 ++status_.energy_version;
             }
@@ -665,10 +700,12 @@ void LiveSolver::worker()
             // the interface thread reads run_ (whether there is one) under it.
             std::unique_ptr<LocalityRun> previous = run_ ? std::move(run_) : std::move(superseded_);
             superseded_.reset();
+            held_.reset();
+            const bool want_gradient = plot_gradient_;
             lock.unlock();
 
             const auto t = std::chrono::steady_clock::now();
-            Prepared p = prepare(r, std::move(previous), progress);
+            Prepared p = prepare(r, std::move(previous), progress, want_gradient);
             const double ms =
                 std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t)
                     .count();
@@ -696,7 +733,9 @@ void LiveSolver::worker()
                 if (run_)
                 {
                     heat_dirty_ = heat_term_.has_value();
-                    energies_ = {{0, p.energy}};
+                    energies_ = {p.start};
+                    held_ = p.start.held;
+                    heat_free_ = std::move(p.free);
                     known_energy_ = energies_.back();
                     energy_due_ = false;
                     ++status_.energy_version;

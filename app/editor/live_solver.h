@@ -23,6 +23,13 @@ struct EnergySample
 {
     int step = 0;
     TermEnergies energy;
+    //! The part of `energy` no step changes: its elements without a free vertex
+    //! (Session::held_energy). energy - held is the energy of what moves, which the plot
+    //! shows for a region (the rest of the mesh's energy would flatten its curve).
+    TermEnergies held;
+    //! |r| over the free vertices at these positions, when the plot asked for it
+    //! (LiveSolver::set_plot_gradient) or the run's rule computed it; -1: not known.
+    Scalar gradient = -1;
 };
 
 //! What the solver has done, for the solver panel.
@@ -143,6 +150,10 @@ public:
     //! \brief Also publish each vertex's share of `term` with every frame (a heat map;
     //! nullopt: none). Computed on the worker, at once for the current positions.
     void set_heat(std::optional<EnergyTerm> term);
+    //! \brief Also give each point of the energy curve the gradient |r| (the plot's
+    //! relative gradient): free in the fused step's sweep, one pass a frame otherwise, so
+    //! asked for only while the plot is shown. From the next frame on.
+    void set_plot_gradient(bool on);
     //! The newest heat-map colours not yet taken (heat_colors of the shares), into `heat`.
     bool take_heat(std::vector<float>& heat);
     //! \brief The newest positions not yet taken, swapped into `positions`, with the
@@ -192,7 +203,8 @@ private:
         std::string error;
         bool cancelled = false;
         std::vector<std::string> notes;
-        TermEnergies energy;
+        EnergySample start; // the curve's first point
+        std::vector<char> free;
         bool moved = false;            // a pin moved: the start differs from what is shown
         std::vector<Scalar> published; // the start positions, when a pin moved
         FactorStats factor_stats;
@@ -200,7 +212,7 @@ private:
     };
     //! The restart's preparation, on the worker with the lock released.
     Prepared prepare(Restart& r, std::unique_ptr<LocalityRun> previous,
-                     const std::shared_ptr<PreparationProgress>& progress);
+                     const std::shared_ptr<PreparationProgress>& progress, bool want_gradient);
     std::optional<Restart> restart_;   // pending, for the worker
     std::unique_ptr<LocalityRun> run_; // touched by whoever holds `busy_`
     // A restart's run that a newer restart replaced before it was shown (a slider dragged
@@ -248,6 +260,14 @@ private:
     //! The newest energy known and the step count of the positions it is of: a step's
     //! sweep gives the energy of the positions it starts from, one step behind.
     std::optional<EnergySample> known_energy_;
+    //! The run's held energy at the current positions of its fixed vertices (none: to
+    //! compute, after a restart or a move of the pins); the worker's.
+    std::optional<TermEnergies> held_;
+    //! The energy at the run's positions now, as a point of the curve at `step` (the
+    //! held part and, when asked for or `gradient` >= 0 is given, the gradient); on the
+    //! worker, outside the lock.
+    EnergySample sample_now(int step, bool want_gradient, Scalar gradient = -1);
+    bool plot_gradient_ = false;
     bool energy_due_ = false; // the plot's last point is behind the positions (paused)
     // The direct method's run shows its minimizer by itself: solved on the worker after a
     // restart and after the pins move, without playing.
@@ -258,6 +278,7 @@ private:
     std::vector<float> heat_published_; // colours (heat_colors), newest
     std::vector<float> heat_back_;      // being written (while busy_)
     std::vector<Scalar> shares_;        // the shares behind heat_back_
+    std::vector<char> heat_free_;       // the run's free vertices (the map shows only them)
     bool heat_fresh_ = false;
     //! The shares and their colours into heat_back_ (outside the lock, while busy_).
     void compute_heat(std::optional<EnergyTerm> term);

@@ -66,6 +66,8 @@ public:
     const DisplayGeometry& display() const { return display_; }
 
     void set_heat(std::optional<EnergyTerm> term) { solver_.set_heat(term); }
+    //! The energy curve's points carry the gradient (LiveSolver::set_plot_gradient).
+    void set_plot_gradient(bool on) { solver_.set_plot_gradient(on); }
     bool take_heat(std::vector<float>& heat) { return solver_.take_heat(heat); }
     //! Waits for the solver's shares of the heat map's term (scripts).
     void wait_for_heat() { settle(); }

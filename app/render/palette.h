@@ -26,5 +26,7 @@ inline constexpr Rgb kCentroid{1.00f, 0.60f, 0.80f};    //!< pink
 inline constexpr Rgb kNormal{0.65f, 0.35f, 0.95f};      //!< violet
 inline constexpr Rgb kHardNormal{0.10f, 0.60f, 0.50f};  //!< dark teal
 inline constexpr Rgb kSoftNormal{0.70f, 0.95f, 0.60f};  //!< pale green
+//! A heat map's vertices left out (a region's fixed ones): grey, no value of the ramp.
+inline constexpr Rgb kHeatHidden{0.45f, 0.45f, 0.47f};
 
 } // namespace meshfair::app::palette

@@ -30,9 +30,10 @@ void RecordingRenderer::update_geometry(const DisplayGeometry& geometry)
     positions_.assign(geometry.positions.begin(), geometry.positions.end());
 }
 
-void RecordingRenderer::set_vertex_colors(std::span<const float>)
+void RecordingRenderer::set_vertex_colors(std::span<const float> rgb)
 {
     ++calls_.vertex_colors;
+    vertex_colors_.assign(rgb.begin(), rgb.end());
 }
 
 void RecordingRenderer::set_selection(std::span<const char> vertices, std::span<const char> faces)

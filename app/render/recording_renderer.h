@@ -40,6 +40,8 @@ public:
     const std::vector<char>& selected_faces() const { return selected_faces_; }
     const std::vector<GlyphGroup>& glyphs() const { return glyphs_; }
     const std::vector<float>& positions() const { return positions_; }
+    //! The last per-vertex colours (3 per vertex), as set_vertex_colors gave them.
+    const std::vector<float>& vertex_colors() const { return vertex_colors_; }
     const DisplayOptions& last_options() const { return options_; }
 
 private:
@@ -47,7 +49,7 @@ private:
     void rasterize(const Camera& camera, int width, int height);
     Calls calls_;
     std::vector<Index> face_offsets_, face_vertices_;
-    std::vector<float> positions_;
+    std::vector<float> positions_, vertex_colors_;
     std::vector<char> selected_vertices_, selected_faces_;
     std::vector<GlyphGroup> glyphs_;
     DisplayOptions options_;

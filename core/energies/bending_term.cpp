@@ -175,4 +175,23 @@ void BendingTerm::add_rhs(std::span<const Scalar> x, std::span<const Index> vert
     });
 }
 
+Scalar BendingTerm::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    Scalar sum = 0;
+    for (Index k = 0; k < topology_->vertex_count; ++k)
+    {
+        if (!has_row(k) || is_free[k])
+            continue;
+        bool held = true;
+        for (const Index j : topology_->neighbors(k))
+            held = held && !(is_free[j] && in_umbrella(k, j));
+        if (!held)
+            continue;
+        Scalar u[3];
+        umbrella(k, x.data(), u);
+        sum += u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    }
+    return mu_ * sum;
+}
+
 } // namespace meshfair

@@ -47,6 +47,8 @@ public:
     Scalar energy(std::span<const Scalar> x) const override;
     //! Adds mu |u_k|^2 to per_vertex[k] (#V): the shares sum to the energy.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    //! The umbrellas u_k whose centre k and members are all held.
+    Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const override;
     //! E_B(dx): E_B(x + dx) = E_B(x) - 2 r^T dx + quadratic(dx).
     Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx); }
     void add_diagonal(std::span<Scalar> diagonal) const override;

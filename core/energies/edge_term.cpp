@@ -64,4 +64,20 @@ void EdgeTerm::add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> pe
             }
 }
 
+Scalar EdgeTerm::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    Scalar sum = 0;
+    for (Index i = 0; i < topology_->vertex_count; ++i)
+        if (!is_free[i])
+            for (const Index j : topology_->neighbors(i))
+                if (j > i && !is_free[j])
+                {
+                    const Scalar* p = &x[3 * i];
+                    const Scalar* q = &x[3 * j];
+                    const Scalar d0 = q[0] - p[0], d1 = q[1] - p[1], d2 = q[2] - p[2];
+                    sum += d0 * d0 + d1 * d1 + d2 * d2;
+                }
+    return weight_ * sum;
+}
+
 } // namespace meshfair

@@ -38,6 +38,8 @@ public:
     //! \brief Adds each vertex's share of energy(x) to per_vertex (#V): half of each
     //! edge's |x_j - x_i|^2 to each end, so the shares sum to the energy.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    //! The edges with neither end free.
+    Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const override;
     //! E_L(dx): the quadratic part, so E_L(x + dx) = E_L(x) - 2 r^T dx + quadratic(dx).
     Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx); }
     //! diagonal[i] += n_i for every vertex.

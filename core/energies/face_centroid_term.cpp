@@ -150,4 +150,25 @@ void FaceCentroidTerm::add_vertex_energy(std::span<const Scalar> x,
     }
 }
 
+Scalar FaceCentroidTerm::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    Scalar sum = 0;
+    for (const Index f : faces_)
+    {
+        const auto face = mesh_->face(f);
+        if (std::any_of(face.begin(), face.end(), [&](Index v) { return is_free[v] != 0; }))
+            continue;
+        const Vec3 c = face_centroid(*mesh_, x, f);
+        const Vec3 t = target(f);
+        Scalar s = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar d = c[a] - t[a];
+            s += d * d;
+        }
+        sum += face_weight(f) * s;
+    }
+    return sum;
+}
+
 } // namespace meshfair

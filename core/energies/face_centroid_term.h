@@ -67,6 +67,8 @@ public:
     Scalar energy(std::span<const Scalar> x) const override;
     //! Adds each constrained face's mu_f |x_f - x0_f|^2 to per_vertex (#V), 1/n_f to each corner.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    //! The constrained faces without a free corner.
+    Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const override;
     Scalar quadratic(std::span<const Scalar> dx) const override;
     void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of the exact half Hessian: mu_f / n_f^2 between i and every vertex of each

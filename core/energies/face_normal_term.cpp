@@ -157,4 +157,25 @@ void FaceNormalTerm::add_vertex_energy(std::span<const Scalar> x, std::span<cons
     }
 }
 
+Scalar FaceNormalTerm::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    Scalar sum = 0;
+    for (const Index f : faces_)
+    {
+        const auto face = mesh_->face(f);
+        if (std::any_of(face.begin(), face.end(), [&](Index v) { return is_free[v] != 0; }))
+            continue;
+        const Scalar* u = &normals_[3 * f];
+        const Scalar w = face_weight(f);
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Scalar* p = &x[3 * face[k]];
+            const Scalar* q = &x[3 * face[(k + 1) % face.size()]];
+            const Scalar d = u[0] * (q[0] - p[0]) + u[1] * (q[1] - p[1]) + u[2] * (q[2] - p[2]);
+            sum += w * d * d;
+        }
+    }
+    return sum;
+}
+
 } // namespace meshfair

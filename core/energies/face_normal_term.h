@@ -57,6 +57,8 @@ public:
     {
         add_vertex_energy(x, normals_, per_vertex);
     }
+    //! The constrained faces without a free corner.
+    Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const override;
     Scalar quadratic(std::span<const Scalar> dx) const override { return energy(dx, normals_); }
     void add_diagonal(std::span<Scalar>) const override {}
     void add_hessian_column(Index i, HessianColumn& column) const override

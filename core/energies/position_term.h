@@ -91,6 +91,10 @@ public:
     //! Adds each vertex's share of energy(x) to per_vertex (#V); the shares sum to it.
     virtual void add_vertex_energy(std::span<const Scalar> x,
                                    std::span<Scalar> per_vertex) const = 0;
+    //! \brief The part of energy(x) over the term's elements (edges, anchors, faces,
+    //! umbrellas) none of whose vertices is free (is_free: #V flags): what no step can
+    //! change while the other vertices stay, left out of the editor's plot of what moves.
+    virtual Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const = 0;
     //! dx^T A_T dx, the exact line search's curvature along dx.
     virtual Scalar quadratic(std::span<const Scalar> dx) const = 0;
     //! diagonal[i] += the scalar part of A_T's diagonal block at i, for every vertex.

@@ -117,4 +117,22 @@ void SoftVertexTerm::add_vertex_energy(std::span<const Scalar> x,
     }
 }
 
+Scalar SoftVertexTerm::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    Scalar sum = 0;
+    for (const Index i : vertices_)
+    {
+        if (is_free[i])
+            continue;
+        Scalar s = 0;
+        for (int a = 0; a < 3; ++a)
+        {
+            const Scalar d = x[3 * i + a] - target_[3 * i + a];
+            s += d * d;
+        }
+        sum += weight(i) * s;
+    }
+    return sum;
+}
+
 } // namespace meshfair

@@ -57,6 +57,8 @@ public:
     Scalar energy(std::span<const Scalar> x) const override;
     //! Adds mu_i |x_i - x0_i|^2 to per_vertex[i] (#V) for each constrained vertex.
     void add_vertex_energy(std::span<const Scalar> x, std::span<Scalar> per_vertex) const override;
+    //! The constrained vertices that are not free.
+    Scalar held_energy(std::span<const Scalar> x, std::span<const char> is_free) const override;
     Scalar quadratic(std::span<const Scalar> dx) const override;
     void add_diagonal(std::span<Scalar> diagonal) const override;
     //! Column i of the half Hessian: mu_i at i (A_S = D_S, diagonal).

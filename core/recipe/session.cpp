@@ -363,4 +363,18 @@ void Session::vertex_energy(std::span<const Scalar> x, EnergyTerm term,
     terms_->vertex_energy(x, term, per_vertex);
 }
 
+std::vector<char> Session::free_flags() const
+{
+    std::vector<char> is_free(mesh_->vertex_count(), 0);
+    for (const Index i : free_)
+        is_free[i] = 1;
+    return is_free;
+}
+
+TermEnergies Session::held_energy(std::span<const Scalar> x) const
+{
+    check_size(x, "held_energy");
+    return terms_->held_energy(x, free_flags());
+}
+
 } // namespace meshfair

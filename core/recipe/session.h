@@ -134,6 +134,13 @@ public:
     //! vertex). Where constraints fight the smoothing, both shares are high.
     void vertex_energy(std::span<const Scalar> x, EnergyTerm term,
                        std::span<Scalar> per_vertex) const;
+    //! \brief The part of each position term's energy at x that no step changes: its elements
+    //! (edges, anchors, faces, umbrellas) without a free vertex. energy(x) minus it is the
+    //! energy of what moves, which a run lowers (the editor's plot of a region); it stays
+    //! the same while the fixed vertices do (a pin moved changes it).
+    TermEnergies held_energy(std::span<const Scalar> x) const;
+    //! The free vertices as #V flags (1: free), for per-vertex displays of what moves.
+    std::vector<char> free_flags() const;
 
     //! \brief Positions kept by the session, for callers that step many times (run(),
     //! the editor): step() then works on them without copying, alternating two buffers

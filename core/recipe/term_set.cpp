@@ -421,6 +421,14 @@ void TermSet::vertex_energy(std::span<const Scalar> x, EnergyTerm term,
             t->add_vertex_energy(x, per_vertex);
 }
 
+TermEnergies TermSet::held_energy(std::span<const Scalar> x, std::span<const char> is_free) const
+{
+    TermEnergies e;
+    for (const PositionTerm* t : position_terms_)
+        e.at(t->kind()) = t->held_energy(x, is_free);
+    return e;
+}
+
 void TermSet::add_diagonal(std::span<Scalar> diagonal) const
 {
     for (const PositionTerm* term : position_terms_)

@@ -94,6 +94,9 @@ public:
     //! Each vertex's share of one term's energy at x, or of every position term's (Total).
     void vertex_energy(std::span<const Scalar> x, EnergyTerm term,
                        std::span<Scalar> per_vertex) const;
+    //! Each position term's held_energy (PositionTerm::held_energy); the normals' terms of
+    //! joint mode are never held.
+    TermEnergies held_energy(std::span<const Scalar> x, std::span<const char> is_free) const;
     void add_diagonal(std::span<Scalar> diagonal) const;
     //! rhs_i += r_i = -1/2 dE/dx_i for every i in `free` (the vertices given to set_free).
     void add_rhs(std::span<const Scalar> x, std::span<const Index> free,

@@ -157,6 +157,63 @@ TEST_SUITE("core")
     }
 
     TEST_CASE(
+        "each term's held energy is none of it with every vertex free, all of it with none, "
+        "does not change as the free vertices move, and grows as vertices are held")
+    {
+        for (const auto& [label, mesh] : test::small_mesh_kinds())
+        {
+            const std::string name = label; // (CAPTURE's lambda cannot take a binding)
+            CAPTURE(name);
+            Built b = build(mesh);
+            // Away from the targets, so that every term has energy.
+            std::vector<Scalar> x = b.mesh.positions;
+            const std::vector<Scalar> away = random_vector(x.size(), 3);
+            for (size_t k = 0; k < x.size(); ++k)
+                x[k] += 0.2 * away[k];
+            const Index nv = b.mesh.vertex_count();
+            std::vector<char> all_free(nv, 1), none_free(nv, 0), some_free(nv, 0), fewer_free(nv);
+            std::mt19937 rng(5);
+            for (Index i = 0; i < nv; ++i)
+                some_free[i] = static_cast<char>(rng() % 2);
+            for (Index i = 0; i < nv; ++i)
+                fewer_free[i] = static_cast<char>(some_free[i] && rng() % 2);
+            // The free vertices moved, the others kept.
+            std::vector<Scalar> moved = x;
+            const std::vector<Scalar> dx = random_vector(x.size(), 17);
+            for (Index i = 0; i < nv; ++i)
+                if (some_free[i])
+                    for (int a = 0; a < 3; ++a)
+                        moved[3 * i + a] += 0.3 * dx[3 * i + a];
+            for (const PositionTerm* term : b.terms->position_terms())
+            {
+                CAPTURE(static_cast<int>(term->kind()));
+                const Scalar e = term->energy(x);
+                REQUIRE(e > 0);
+                CHECK(term->held_energy(x, all_free) == 0);
+                CHECK(term->held_energy(x, none_free) == doctest::Approx(e).epsilon(1e-12));
+                const Scalar held = term->held_energy(x, some_free);
+                CHECK(term->held_energy(moved, some_free) == held);
+                CHECK(term->held_energy(x, fewer_free) >= held);
+                // Held elements give all their shares to held vertices.
+                std::vector<Scalar> shares(nv, 0);
+                term->add_vertex_energy(x, shares);
+                Scalar held_shares = 0;
+                for (Index i = 0; i < nv; ++i)
+                    if (!some_free[i])
+                        held_shares += shares[i];
+                CHECK(held <= held_shares * (1 + 1e-12) + 1e-15);
+                // What moves changes with the free vertices, unless nothing of it is free.
+                if (held < e * (1 - 1e-9))
+                    CHECK(term->energy(moved) - held != doctest::Approx(e - held));
+            }
+            // The set's held energy is its terms', by kind.
+            const TermEnergies set = b.terms->held_energy(x, some_free);
+            for (const PositionTerm* term : b.terms->position_terms())
+                CHECK(TermEnergies(set).at(term->kind()) == term->held_energy(x, some_free));
+        }
+    }
+
+    TEST_CASE(
         "the set's energy, r and Hessian are the sums of its terms', and a session "
         "reads the same energy")
     {
