@@ -128,11 +128,14 @@ struct SetDisplay
 };
 
 // --- Constraint sets (each an undo step).
-//! A set of `kind` from the selection; empty name: numbered ("pin 2").
+//! \brief A set of `kind` from the selection; empty name: numbered ("pin 2"). A region
+//! also takes in, with `close_holes`, what it encloses but leaves out (region_holes: the
+//! pits a front-facing selection cannot see), in the same undo step, and says how many.
 struct CreateSet
 {
     ConstraintKind kind = ConstraintKind::Region;
     std::string name;
+    bool close_holes = true;
 };
 struct DeleteSet
 {

@@ -479,11 +479,15 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
     // the gesture's end instead, and those of its commands that fail.
     if (trace_ != nullptr && (!from_gesture || (!ok && state_.message_is_error)))
     {
+        // With what the command said of itself (the set made and its size, ...).
+        const std::string said = !ok && state_.message_is_error  ? state_.message
+                                 : ok && !state_.message.empty() ? " (" + state_.message + ")"
+                                                                 : "";
         std::fprintf(trace_, "command %s: %s%s\n", std::string(command_name(command)).c_str(),
                      ok                        ? "ok"
                      : state_.message_is_error ? "failed: "
                                                : "nothing to do",
-                     ok || !state_.message_is_error ? "" : state_.message.c_str());
+                     said.c_str());
         std::fflush(trace_);
     }
     return ok;

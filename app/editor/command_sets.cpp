@@ -46,8 +46,18 @@ bool CommandExecutor::operator()(const cmd::CreateSet& c) const
     else if (s.set_named(name))
         return fail("there is already a set named '" + name + "'");
     set.name = std::move(name);
-    say("set '" + set.name + "': " + std::to_string(set.vertices.size() + set.faces.size()) +
-        (set.vertices.empty() ? " faces" : " vertices"));
+    const size_t selected = set.vertices.size() + set.faces.size();
+    const size_t holes = set.kind == ConstraintKind::Region && c.close_holes
+                             ? close_region_holes(set, d.mesh, d.topology)
+                             : 0;
+    const std::string elements = set.vertices.empty() ? " faces" : " vertices";
+    if (holes > 0)
+        say("set '" + set.name + "': " + std::to_string(selected) + elements + " selected and " +
+            std::to_string(holes) +
+            " enclosed vertices left out of the selection (holes closed): " +
+            std::to_string(set.vertices.size() + set.faces.size()) + elements);
+    else
+        say("set '" + set.name + "': " + std::to_string(selected) + elements);
     d.sets.push_back(std::move(set));
     return true;
 }

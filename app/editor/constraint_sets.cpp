@@ -501,11 +501,63 @@ std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
         for (size_t k = 0; k < moving.size(); ++k)
             moving[k] = moving[k] || of_faces[k];
     }
-    const SelectionMask closed = shrink_vertices(topology, grow_vertices(topology, moving));
+    SelectionMask closed = shrink_vertices(topology, grow_vertices(topology, moving));
+    // The parts left out, and the mesh's components, by a walk over the edges.
+    const Index n = mesh.vertex_count();
+    const auto label = [&](auto&& within) {
+        std::vector<Index> part(static_cast<size_t>(n), kInvalidIndex);
+        std::vector<Index> stack;
+        Index parts = 0;
+        for (Index v = 0; v < n; ++v)
+        {
+            if (part[v] != kInvalidIndex || !within(v))
+                continue;
+            part[v] = parts;
+            stack.push_back(v);
+            while (!stack.empty())
+            {
+                const Index i = stack.back();
+                stack.pop_back();
+                for (const Index j : topology.neighbors(i))
+                    if (part[j] == kInvalidIndex && within(j))
+                    {
+                        part[j] = parts;
+                        stack.push_back(j);
+                    }
+            }
+            ++parts;
+        }
+        return std::pair{std::move(part), parts};
+    };
+    const auto [left_part, left_parts] = label([&](Index v) { return !moving[v]; });
+    const auto [component, components] = label([](Index) { return true; });
+    std::vector<size_t> part_size(static_cast<size_t>(left_parts), 0),
+        region_size(static_cast<size_t>(components), 0);
+    std::vector<Index> part_component(static_cast<size_t>(left_parts), 0);
+    for (Index v = 0; v < n; ++v)
+        if (moving[v])
+            ++region_size[component[v]];
+        else
+        {
+            ++part_size[left_part[v]];
+            part_component[left_part[v]] = component[v];
+        }
+    // Each component's largest part left out is the rest of the mesh (the first, on a tie).
+    std::vector<Index> rest(static_cast<size_t>(components), kInvalidIndex);
+    for (Index p = 0; p < left_parts; ++p)
+    {
+        Index& r = rest[part_component[p]];
+        if (r == kInvalidIndex || part_size[p] > part_size[r])
+            r = p;
+    }
+    std::vector<char> enclosed(static_cast<size_t>(left_parts), 0);
+    for (Index p = 0; p < left_parts; ++p)
+        enclosed[p] =
+            p != rest[part_component[p]] && 4 * part_size[p] <= region_size[part_component[p]];
     std::vector<Index> holes;
-    for (size_t k = 0; k < moving.size(); ++k)
-        if (closed[k] && !moving[k])
-            holes.push_back(static_cast<Index>(k));
+    for (Index v = 0; v < n; ++v)
+        if (!moving[v] && (closed[v] || enclosed[left_part[v]]))
+            holes.push_back(v);
     return holes;
 }
 

@@ -180,9 +180,14 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
               const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
               bool ignoring_pin_targets);
 
-//! \brief The elements a region set leaves out but encloses: what closing it (one ring grown,
-//! then one shrunk) adds. A front-facing selection of a noisy scan misses vertices hidden in
-//! pits; left out of a region they stay fixed among moving ones and become spikes.
+//! \brief The vertices a region set leaves out but encloses: what closing it (one ring grown,
+//! then one shrunk) adds, and each part of the vertices left out (connected through edges
+//! among them) that the region surrounds: not the largest such part of its mesh component
+//! (the rest of the mesh), and at most a quarter of the region's vertices in that
+//! component (so that a band around the middle does not take in a whole end). A
+//! front-facing selection of a noisy scan misses vertices hidden in pits (a nostril's
+//! inside, dozens of rings deep); left out of a region they stay fixed among moving ones
+//! and become spikes.
 //! \pre `set` is a region; topology has the neighbour, corner and edge parts.
 //! Returns the vertices.
 std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,

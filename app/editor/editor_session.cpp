@@ -8,6 +8,7 @@
 #include "app/editor/editor_ui.h"
 #include "app/editor/script.h"
 #include "app/editor/weight_paint.h"
+#include "app/tools/selection_gesture.h"
 #include "core/geometry/face_geometry.h"
 
 namespace meshfair::app {
@@ -140,8 +141,18 @@ void EditorSession::mouse_release(MouseButton button, double x, double y)
         end_interaction();
         if (trace_ != nullptr)
         {
-            std::fprintf(trace_, "gesture %s: %zu undo steps\n", tool->gesture_name(),
-                         history_.undo_count());
+            // What the gesture made: the selection it leaves, or its command's message;
+            // then the history's length (one step more per gesture).
+            const auto selected = [](const SelectionMask& m) {
+                return static_cast<size_t>(std::count(m.begin(), m.end(), 1));
+            };
+            const std::string made =
+                dynamic_cast<const SelectionGesture*>(tool) != nullptr
+                    ? std::to_string(selected(document_.selected_vertices)) + " vertices and " +
+                          std::to_string(selected(document_.selected_faces)) + " faces selected"
+                    : state_.message;
+            std::fprintf(trace_, "gesture %s: %s%shistory: %zu undo steps\n", tool->gesture_name(),
+                         made.c_str(), made.empty() ? "" : "; ", history_.undo_count());
             if (!stroke_.empty())
                 std::fprintf(trace_, "stroke %s\n", stroke_action(stroke_).c_str());
             std::fflush(trace_);

@@ -142,6 +142,7 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     // Options, and the actions each belongs to.
     static const std::pair<const char*, const char*> options[] = {
         {"name", "create_set rename_set"},
+        {"close_holes", "create_set"},
         {"offset", "move_pins"},
         {"direction", "normal_direction"},
         {"seed", "noise"},
@@ -359,7 +360,15 @@ ScriptAction parse_action(const Json& j, const Reader& r)
             r.bad(kind, "'" + k +
                             "' is not region, pin, anchor, centroid, normal, hard_normal or "
                             "soft_normal");
-        command(CreateSet{*kind_named(k), j.contains("name") ? r.text(j["name"], "name") : ""});
+        bool close_holes = true;
+        if (j.contains("close_holes"))
+        {
+            if (!j["close_holes"].is_boolean())
+                r.bad("close_holes", "must be true or false");
+            close_holes = j["close_holes"].get<bool>();
+        }
+        command(CreateSet{*kind_named(k), j.contains("name") ? r.text(j["name"], "name") : "",
+                          close_holes});
     }
     else if (kind == "delete_set")
         command(DeleteSet{r.text(v, kind)});

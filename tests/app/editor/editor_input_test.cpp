@@ -571,6 +571,86 @@ TEST_SUITE("Editor display")
 
 TEST_SUITE("Editor sets")
 {
+    TEST_CASE(
+        "a region's holes: a pit of any depth it surrounds, not the rest of the mesh, not an "
+        "end of a band, not another component")
+    {
+        // A 20 x 20 grid of vertices beside a second, untouched one.
+        Mesh grid = test::open_grid(19, 19);
+        const Mesh other = test::open_grid(3, 3);
+        const Index offset = grid.vertex_count();
+        for (Index v = 0; v < other.vertex_count(); ++v)
+            grid.add_vertex(other.positions[3 * v] + 30, other.positions[3 * v + 1], 0);
+        for (Index f = 0; f < other.face_count(); ++f)
+        {
+            std::vector<Index> face;
+            for (const Index v : other.face(f))
+                face.push_back(v + offset);
+            grid.add_face(face);
+        }
+        const Topology topology = build_topology(grid, TopologyParts::All);
+        const auto at = [](int i, int j) { return static_cast<Index>(j * 20 + i); };
+        // A square block of rows and columns 2..17 without a 5 x 5 pit inside it, deeper than
+        // one ring closes.
+        ConstraintSet block;
+        std::vector<Index> pit;
+        for (int j = 2; j <= 17; ++j)
+            for (int i = 2; i <= 17; ++i)
+                (i >= 7 && i <= 11 && j >= 7 && j <= 11 ? pit : block.vertices).push_back(at(i, j));
+        CHECK(region_holes(block, grid, topology) == pit);
+        ConstraintSet closed = block;
+        CHECK(close_region_holes(closed, grid, topology) == 25);
+        CHECK(closed.vertices.size() == 256);
+        CHECK(std::is_sorted(closed.vertices.begin(), closed.vertices.end()));
+        // A band across the middle leaves out both ends (each larger than a quarter of it).
+        ConstraintSet band;
+        for (int j = 9; j <= 10; ++j)
+            for (int i = 0; i < 20; ++i)
+                band.vertices.push_back(at(i, j));
+        CHECK(region_holes(band, grid, topology).empty());
+        // Everything but a patch: the patch is the rest of that component, kept out (but for
+        // its four corners, which one ring closes).
+        ConstraintSet most;
+        for (int j = 0; j < 20; ++j)
+            for (int i = 0; i < 20; ++i)
+                if (!(i >= 7 && i <= 11 && j >= 7 && j <= 11))
+                    most.vertices.push_back(at(i, j));
+        CHECK(region_holes(most, grid, topology) ==
+              std::vector<Index>{at(7, 7), at(11, 7), at(7, 11), at(11, 11)});
+        // A region of faces takes the faces around its pit.
+        ConstraintSet faces;
+        for (Index f = 0; f < 19 * 19; ++f)
+        {
+            const int i = static_cast<int>(f % 19), j = static_cast<int>(f / 19);
+            if (i >= 2 && i <= 16 && j >= 2 && j <= 16 && !(i >= 6 && i <= 11 && j >= 6 && j <= 11))
+                faces.faces.push_back(f);
+        }
+        CHECK(region_holes(faces, grid, topology).size() == 25);
+        CHECK(close_region_holes(faces, grid, topology) == 25);
+        CHECK(faces.faces.size() == 15 * 15);
+    }
+
+    TEST_CASE("a region made from a selection closes its holes, says how many, in one undo step")
+    {
+        const fs::path dir = test::temp_dir();
+        io::write_mesh(test::open_grid(6, 6), (dir / "grid.obj").string());
+        Editor e(dir / "grid.obj");
+        e.session.dispatch(cmd::RunSelection{SelectionCommand::All});
+        e.session.dispatch(cmd::ApplySelection{ElementKind::Vertices, SelectOp::Subtract, {24}});
+        const size_t steps = e.session.history().undo_count();
+        e.key("shift+r"); // the key's region, as the panel's button makes it
+        REQUIRE(e.doc().sets.size() == 1);
+        CHECK(e.doc().sets[0].vertices.size() == 49);
+        CHECK(e.session.state().message.find("48 vertices selected and 1 enclosed vertices") !=
+              std::string::npos);
+        CHECK(e.session.history().undo_count() == steps + 1);
+        e.key("ctrl+z");
+        CHECK(e.doc().sets.empty());
+        // Asked not to (a script's "close_holes": false), it keeps the selection as it is.
+        REQUIRE(e.session.dispatch(cmd::CreateSet{ConstraintKind::Region, "r", false}));
+        CHECK(e.doc().sets[0].vertices.size() == 48);
+    }
+
     TEST_CASE("a region that leaves out what it encloses says so, and closes its holes")
     {
         const fs::path dir = test::temp_dir();
@@ -579,7 +659,8 @@ TEST_SUITE("Editor sets")
         e.session.dispatch(cmd::RunSelection{SelectionCommand::All});
         // Vertex 3 + 3 * 7 = 24 sits inside the grid, as a vertex hidden in a pit does.
         e.session.dispatch(cmd::ApplySelection{ElementKind::Vertices, SelectOp::Subtract, {24}});
-        e.key("shift+r");
+        // (Made without closing its holes: an older file's, or a script's "close_holes": false.)
+        REQUIRE(e.session.dispatch(cmd::CreateSet{ConstraintKind::Region, {}, false}));
         e.run();
         REQUIRE(e.session.state().region_holes.size() == 1);
         CHECK(e.session.state().region_holes[0].second == 1);
