@@ -113,21 +113,13 @@ int count(const Json& j, const std::string& key)
     return static_cast<int>(v);
 }
 
+// The indices the recipe being parsed may still list (RecipeLimits::max_listed): set by
+// parse_recipe for its thread, taken from by every index list.
+thread_local std::int64_t listed_left = RecipeLimits{}.max_listed;
+
 std::vector<Index> indices(const Json& j, const std::string& key)
 {
-    if (!j.is_array())
-        throw RecipeError(key, "must be an array of indices");
-    std::vector<Index> out;
-    out.reserve(j.size());
-    for (size_t k = 0; k < j.size(); ++k)
-    {
-        const std::int64_t v = integer(j[k], recipe_item_key(key, k));
-        if (v < 0 || v > kMaxElements)
-            throw RecipeError(recipe_item_key(key, k),
-                              "index " + std::to_string(v) + " is out of range");
-        out.push_back(static_cast<Index>(v));
-    }
-    return out;
+    return parse_index_list(j, key, listed_left);
 }
 
 IndexSet index_set(const Json& j, const std::string& key)
@@ -436,9 +428,12 @@ Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
     expect_object(j, "",
-                  {"description", "iterations", "lambda", "tolerance", "method", "taubin_mu",
+                  {"description", "editor", "iterations", "lambda", "tolerance", "method",
+                   "taubin_mu",
                    "region", "hard", "soft", "centroid", "normal", "normal_smoothing", "joint",
                    "bending", "volume", "falloff", "prevent_flips", "factor_budget_mb", "time"});
+    if (j.contains("editor") && !j["editor"].is_object())
+        throw RecipeError("editor", "must be an object (the editor's sets and view)");
     if (j.contains("description"))
     {
         if (!j["description"].is_string())
@@ -600,10 +595,72 @@ Json points_json(const std::vector<Vec3>& v)
 
 Json set_json(const IndexSet& s)
 {
-    return s.all ? Json("all") : Json(s.indices);
+    return s.all ? Json("all") : index_list_json(s.indices);
 }
 
 } // namespace
+
+std::vector<Index> parse_index_list(const Json& j, const std::string& key, std::int64_t& budget)
+{
+    if (!j.is_array())
+        throw RecipeError(key, "must be an array of indices and [first, last] runs");
+    const auto index = [&](const Json& v, const std::string& at) {
+        const std::int64_t i = integer(v, at);
+        if (i < 0 || i > kMaxElements)
+            throw RecipeError(at, "index " + std::to_string(i) + " is out of range");
+        return i;
+    };
+    const auto take = [&](std::int64_t n, const std::string& at) {
+        if (n > budget)
+            throw RecipeError(at, "lists more indices than a recipe may (" +
+                                      std::to_string(budget) + " left)");
+        budget -= n;
+    };
+    std::vector<Index> out;
+    out.reserve(j.size());
+    for (size_t k = 0; k < j.size(); ++k)
+    {
+        const std::string at = recipe_item_key(key, k);
+        if (j[k].is_array())
+        {
+            if (j[k].size() != 2)
+                throw RecipeError(at, "a run must be [first, last]");
+            const std::int64_t first = index(j[k][0], at + "[0]");
+            const std::int64_t last = index(j[k][1], at + "[1]");
+            if (last < first)
+                throw RecipeError(at, "a run's last index must not be below its first (got [" +
+                                          std::to_string(first) + ", " + std::to_string(last) +
+                                          "])");
+            take(last - first + 1, at);
+            for (std::int64_t i = first; i <= last; ++i)
+                out.push_back(static_cast<Index>(i));
+        }
+        else
+        {
+            take(1, at);
+            out.push_back(static_cast<Index>(index(j[k], at)));
+        }
+    }
+    return out;
+}
+
+Json index_list_json(std::span<const Index> indices)
+{
+    Json out = Json::array();
+    for (size_t k = 0; k < indices.size();)
+    {
+        size_t end = k + 1;
+        while (end < indices.size() && indices[end] == indices[end - 1] + 1)
+            ++end;
+        if (end - k >= 3)
+            out.push_back({indices[k], indices[end - 1]});
+        else
+            for (size_t m = k; m < end; ++m)
+                out.push_back(indices[m]);
+        k = end;
+    }
+    return out;
+}
 
 InvalidInputError json_syntax_error(const std::string& name, const std::string& what)
 {
@@ -620,8 +677,10 @@ InvalidInputError json_syntax_error(const std::string& name, const std::string& 
                              ": not valid JSON: " + what.substr(why + 2));
 }
 
-Recipe parse_recipe(std::string_view json_text, const std::string& name)
+Recipe parse_recipe(std::string_view json_text, const std::string& name,
+                    const RecipeLimits& limits)
 {
+    listed_left = limits.max_listed;
     nlohmann::json j;
     try
     {
@@ -678,14 +737,14 @@ nlohmann::json recipe_to_json(const Recipe& r)
     {
         Json s = Json::object();
         if (!r.region->vertices.empty() || r.region->faces.empty())
-            s["vertices"] = r.region->vertices;
+            s["vertices"] = index_list_json(r.region->vertices);
         if (!r.region->faces.empty())
-            s["faces"] = r.region->faces;
+            s["faces"] = index_list_json(r.region->faces);
         j["region"] = s;
     }
     if (r.hard)
     {
-        j["hard"] = {{"vertices", r.hard->vertices}};
+        j["hard"] = {{"vertices", index_list_json(r.hard->vertices)}};
         if (!r.hard->targets.empty())
             j["hard"]["targets"] = points_json(r.hard->targets);
     }
@@ -739,13 +798,13 @@ nlohmann::json recipe_to_json(const Recipe& r)
         }
         if (!ns.hard.faces.empty())
         {
-            s["hard"] = {{"faces", ns.hard.faces}};
+            s["hard"] = {{"faces", index_list_json(ns.hard.faces)}};
             if (!ns.hard.normals.empty())
                 s["hard"]["normals"] = points_json(ns.hard.normals);
         }
         if (!ns.soft.faces.empty())
         {
-            s["soft"] = {{"faces", ns.soft.faces}, {"mu", ns.soft.mu}};
+            s["soft"] = {{"faces", index_list_json(ns.soft.faces)}, {"mu", ns.soft.mu}};
             if (!ns.soft.normals.empty())
                 s["soft"]["normals"] = points_json(ns.soft.normals);
             if (!ns.soft.weights.empty())

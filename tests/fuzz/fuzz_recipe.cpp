@@ -22,6 +22,8 @@
 namespace meshfair::fuzz {
 namespace {
 
+constexpr RecipeLimits kLimits{1 << 16};
+
 int test_one_input(const std::uint8_t* data, size_t size)
 {
     if (size > kMaxInput)
@@ -29,7 +31,9 @@ int test_one_input(const std::uint8_t* data, size_t size)
     Recipe recipe;
     try
     {
-        recipe = parse_recipe(as_text(data, size), "fuzz.json");
+        // (A run [0, 2147483647] is a few bytes: the budget keeps the lists within the
+        // fuzzer's memory.)
+        recipe = parse_recipe(as_text(data, size), "fuzz.json", kLimits);
     }
     catch (const InvalidInputError&)
     {
@@ -38,7 +42,7 @@ int test_one_input(const std::uint8_t* data, size_t size)
     const std::string json = recipe_to_json(recipe).dump();
     try
     {
-        if (recipe_to_json(parse_recipe(json, "again.json")).dump() != json)
+        if (recipe_to_json(parse_recipe(json, "again.json", kLimits)).dump() != json)
             fail("recipe_to_json -> parse_recipe changes the recipe: " + json);
     }
     catch (const InvalidInputError& e)

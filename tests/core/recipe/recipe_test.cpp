@@ -89,11 +89,55 @@ TEST_SUITE("Recipe")
         CHECK(back.bending == Bending{0.25, 2});
     }
 
+    TEST_CASE(
+        "index lists are written as runs where indices follow one another, read in either "
+        "form, in the same order, within the reader's budget")
+    {
+        const std::vector<Index> listed{7, 8, 9, 10, 2, 3, 5, 6, 7, 0, 40, 41, 42};
+        const nlohmann::json runs = index_list_json(listed);
+        CHECK(runs.dump() == "[[7,10],2,3,[5,7],0,[40,42]]");
+        std::int64_t budget = 100;
+        CHECK(parse_index_list(runs, "k", budget) == listed);
+        CHECK(budget == 100 - static_cast<std::int64_t>(listed.size()));
+        // The plain list reads the same.
+        budget = 100;
+        CHECK(parse_index_list(nlohmann::json(listed), "k", budget) == listed);
+        CHECK(index_list_json(std::vector<Index>{}).dump() == "[]");
+        CHECK(index_list_json(std::vector<Index>{4, 5}).dump() == "[4,5]");
+        // A recipe writes its lists so, and reads them back.
+        const Recipe r = parse_recipe(
+            R"({"region": {"vertices": [[0, 5], 7]}, "hard": {"vertices": [1, 2, 3, 4]},
+                "soft": {"vertices": [[6, 6], 7], "mu": 1}})",
+            "r.json");
+        CHECK(r.region->vertices == std::vector<Index>{0, 1, 2, 3, 4, 5, 7});
+        CHECK(r.soft->vertices.indices == std::vector<Index>{6, 7});
+        const nlohmann::json written = recipe_to_json(r);
+        CHECK(written["region"]["vertices"].dump() == "[[0,5],7]");
+        CHECK(written["hard"]["vertices"].dump() == "[[1,4]]");
+        CHECK(recipe_to_json(parse_recipe(written.dump(), "again.json")) == written);
+        // What is refused, naming the item.
+        CHECK(error_of(R"({"hard": {"vertices": [1, [5, 3]]}})") ==
+              "'r.json': hard.vertices[1]: a run's last index must not be below its first (got "
+              "[5, 3])");
+        CHECK(error_of(R"({"hard": {"vertices": [[1, 2, 3]]}})") ==
+              "'r.json': hard.vertices[0]: a run must be [first, last]");
+        CHECK(error_of(R"({"hard": {"vertices": [[-1, 2]]}})") ==
+              "'r.json': hard.vertices[0][0]: index -1 is out of range");
+        CHECK_THROWS_WITH_AS(
+            parse_recipe(R"({"region": {"vertices": [[0, 2147483647]]}})", "big.json",
+                         RecipeLimits{1000}),
+            "'big.json': region.vertices[0]: lists more indices than a recipe may (1000 left)",
+            RecipeError);
+        CHECK(error_of(R"({"editor": 3})") ==
+              "'r.json': editor: must be an object (the editor's sets and view)");
+        CHECK(parse_recipe(R"({"editor": {"anything": [1]}})", "r.json").iterations == 10);
+    }
+
     TEST_CASE("every malformed recipe is refused naming the key")
     {
         CHECK(error_of(R"({"iteratoins": 3})") ==
-              "'r.json': iteratoins: unknown key (allowed here: description, iterations, lambda, "
-              "tolerance, method, taubin_mu, region, hard, soft, centroid, normal, "
+              "'r.json': iteratoins: unknown key (allowed here: description, editor, iterations, "
+              "lambda, tolerance, method, taubin_mu, region, hard, soft, centroid, normal, "
               "normal_smoothing, joint, "
               "bending, volume, falloff, prevent_flips, factor_budget_mb, time)");
         CHECK(error_of(R"({"bending": {"stiffness": 1}})") ==
