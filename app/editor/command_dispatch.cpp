@@ -9,6 +9,7 @@
 #include "app/editor/command_executor.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/editor_ui.h"
+#include "app/editor/user_files.h"
 #include "core/errors.h"
 #include "core/geometry/noise.h"
 
@@ -131,12 +132,18 @@ bool CommandExecutor::operator()(const cmd::ToggleOrbit&) const
 
 bool CommandExecutor::operator()(const cmd::SetUpAxis& c) const
 {
-    s.camera_.up_axis = c.up;
-    s.camera_.set_view(StandardView::Front);
-    s.camera_.frame(d.box, s.aspect());
-    if (!st.offscreen)
-        save_up_axis(up_axes_path(), d.path, c.up);
+    s.apply_up_axis(c.up);
     return true;
+}
+
+void EditorSession::apply_up_axis(UpAxis up)
+{
+    camera_.up_axis = up;
+    document_.up_axis = up;
+    camera_.set_view(StandardView::Front);
+    camera_.frame(document_.box, aspect());
+    if (!state_.offscreen) // remembered for the file (an offscreen run is a test's)
+        save_up_axis(up_axes_path(), document_.path, up);
 }
 
 bool CommandExecutor::operator()(const cmd::Toggle& c) const
@@ -311,6 +318,7 @@ bool CommandExecutor::operator()(const cmd::OpenMesh& c) const
     s.reset_for_document();
     // The up axis this file was last seen with.
     s.camera_.up_axis = load_up_axis(up_axes_path(), c.path).value_or(s.camera_.up_axis);
+    d.up_axis = s.camera_.up_axis;
     s.camera_.set_view(StandardView::Front);
     s.camera_.frame(d.box, s.aspect());
     s.remember(c.path);
@@ -326,6 +334,8 @@ bool CommandExecutor::operator()(const cmd::SaveMesh& c) const
     const std::string path = c.path.empty() ? d.path : c.path;
     const std::vector<std::string> notes = save_document(d, path);
     s.remember(path);
+    if (!st.offscreen) // the copy opens as this one shows (Save As)
+        save_up_axis(up_axes_path(), path, s.camera_.up_axis);
     std::string message = "saved " + path;
     for (const std::string& note : notes) // what the format could not hold, never silent
         message += "; " + note;
@@ -349,9 +359,13 @@ bool CommandExecutor::operator()(const cmd::ImportRecipe& c) const
 {
     ImportedRecipe imported = import_recipe(d, c.path);
     d.sets = std::move(imported.sets);
-    d.solver = with_pace(imported.settings, d.solver); // the recipe says nothing of the pace
+    // A recipe says nothing of the pace; the editor's own settings do.
+    d.solver = imported.editor ? imported.settings : with_pace(imported.settings, d.solver);
+    if (imported.up && *imported.up != s.camera_.up_axis)
+        s.apply_up_axis(*imported.up);
     say("imported " + c.path + " (" + std::to_string(imported.iterations) +
-        " iterations in the file: Step runs them)");
+        " iterations in the file: Step runs them)" +
+        (imported.note.empty() ? std::string() : "; " + imported.note));
     return true;
 }
 
@@ -399,6 +413,8 @@ bool CommandExecutor::operator()(const cmd::QuitDiscarding&) const
 bool CommandExecutor::operator()(const cmd::Recover&) const
 {
     const RecoveryInfo info = s.autosaver_.recover(d);
+    if (s.camera_.up_axis != d.up_axis) // the session's up axis with it
+        s.apply_up_axis(d.up_axis);
     s.history_.clear();
     s.solver_.clear();
     d.versions.bump(kSelection | kSets | kSetMembers | kSettings | kPositions | kBasePositions);
@@ -426,6 +442,7 @@ bool EditorSession::dispatch(const Command& command, const Interaction& from)
 {
     const CommandSpec spec = spec_of(command);
     const bool from_gesture = from.key == kGesture.key;
+    document_.up_axis = camera_.up_axis; // (the file's, as the view shows it)
     if (gesture_ != nullptr && !from_gesture && spec.waits_for_gesture)
         return false;
     // A command that goes on with the open step of its interaction (a stroke's next dab)

@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/render/camera.h"
 #include "core/mesh/mesh.h"
 #include "core/recipe/recipe.h"
 #include "core/topology/topology.h"
@@ -203,6 +204,13 @@ struct ImportedRecipe
     SolverSettings settings;
     int iterations = 0;
     std::string description; //!< the recipe's "description"
+    //! The up axis the file was exported with (its "editor" object), if it says.
+    std::optional<UpAxis> up;
+    //! The sets and settings are the editor's own, as exported (its "editor" object): the
+    //! settings with their pace (steps per frame and per run), which a recipe has not.
+    bool editor = false;
+    //! What the import could not take as it was, for the status line; empty: all of it.
+    std::string note;
 };
 //! \pre check_recipe(recipe, mesh) holds.
 ImportedRecipe sets_from_recipe(const Recipe& recipe, const Mesh& mesh);

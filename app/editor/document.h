@@ -77,6 +77,10 @@ struct Document
     std::vector<ConstraintSet> sets; //!< the recipe's constraint sets
     SolverSettings solver;           //!< the recipe's weights and iteration settings
     bool modified = false;           //!< changed since it was read or saved
+    //! \brief The mesh's up axis, as the view shows it (the camera's, which the session
+    //! copies here before each command and frame): what travels with the file's edit state
+    //! (recovery, Save As, Export recipe).
+    UpAxis up_axis = UpAxis::Y;
     DocumentVersions versions;
 };
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/editor_session.h"
+#include "app/editor/user_files.h"
 
 #include <algorithm>
 #include <utility>
@@ -286,6 +287,7 @@ void EditorSession::update()
 
 void EditorSession::autosave(double interval_s)
 {
+    document_.up_axis = camera_.up_axis;
     // Not while playing: the run's start is saved, and writing the positions of a large
     // mesh every few seconds would stall the frames; the end of the run is saved after it.
     if (solver_.playing())

@@ -118,6 +118,9 @@ public:
     //! \brief Writes the recovery files when something changed since the last time and at
     //! least `interval_s` seconds went by (never while a run plays).
     void autosave(double interval_s = 3.0);
+    //! \brief The world's up axis for this mesh: the camera's and the document's, the front
+    //! view framed, remembered for the file (not offscreen). SetUpAxis and Recover call it.
+    void apply_up_axis(UpAxis up);
 
     //! Fills the state the interface shows: the tool's overlay, the history, the counts.
     void prepare_ui();

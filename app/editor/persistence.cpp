@@ -6,6 +6,7 @@
 #include <chrono>
 #include <filesystem>
 
+#include "app/editor/edit_state_json.h"
 #include "core/errors.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
@@ -27,23 +28,160 @@ Recipe current_recipe(const Document& d)
     return build_recipe(d.sets, d.solver, d.mesh, d.base_positions, d.steps_from_base);
 }
 
+namespace {
+
+// The sets with each one's elements in the order of their indices in the file (targets,
+// normals and weights following), still in the document's numbering: a set made from a
+// selection lists its elements ascending in the document's (locality) numbering, which the
+// file's numbering scatters; in the file's order the lists written are runs (a tenth of
+// the plain list's size, or less). Nothing a run computes depends on the order.
+std::vector<ConstraintSet> in_file_order(std::vector<ConstraintSet> sets,
+                                         const LocalityOrder& order)
+{
+    for (ConstraintSet& s : sets)
+    {
+        const auto sort_by = [](std::vector<Index>& elements, std::span<const Index> file_index,
+                                auto&... along) {
+            std::vector<size_t> k(elements.size());
+            for (size_t i = 0; i < k.size(); ++i)
+                k[i] = i;
+            std::stable_sort(k.begin(), k.end(), [&](size_t a, size_t b) {
+                return file_index[static_cast<size_t>(elements[a])] <
+                       file_index[static_cast<size_t>(elements[b])];
+            });
+            const auto permute = [&](auto& v) {
+                if (v.size() != k.size())
+                    return;
+                auto copy = v;
+                for (size_t i = 0; i < k.size(); ++i)
+                    v[i] = copy[k[i]];
+            };
+            (permute(along), ...);
+            permute(elements);
+        };
+        sort_by(s.vertices, order.vertex_order, s.targets, s.weights);
+        sort_by(s.faces, order.face_order, s.normals);
+    }
+    return sets;
+}
+
+} // namespace
+
 Recipe file_recipe(const Document& d)
 {
-    return renumber_recipe(current_recipe(d), d.order.vertex_order, d.order.face_order);
+    return renumber_recipe(build_recipe(in_file_order(d.sets, d.order), d.solver, d.mesh,
+                                        d.base_positions, d.steps_from_base),
+                           d.order.vertex_order, d.order.face_order);
 }
+
+namespace {
+
+// A set with its elements renumbered: vertex i becomes vertex_map[i], face f face_map[f]
+// (targets, normals and weights follow their elements).
+ConstraintSet renumbered(ConstraintSet set, std::span<const Index> vertex_map,
+                         std::span<const Index> face_map)
+{
+    for (Index& v : set.vertices)
+        v = vertex_map[static_cast<size_t>(v)];
+    for (Index& f : set.faces)
+        f = face_map[static_cast<size_t>(f)];
+    return set;
+}
+
+// The "editor" object of an exported recipe: the sets as the artist made them, in the
+// file's numbering, the settings and the up axis.
+nlohmann::json editor_json(const Document& d)
+{
+    nlohmann::json sets = nlohmann::json::array();
+    for (const ConstraintSet& s : in_file_order(d.sets, d.order))
+        sets.push_back(set_json(renumbered(s, d.order.vertex_order, d.order.face_order)));
+    return {{"up", std::string(up_axis_name(d.up_axis))},
+            {"sets", std::move(sets)},
+            {"solver", settings_json(d.solver)}};
+}
+
+// The sets of an "editor" object, checked against the mesh (in the file's numbering), in
+// the document's numbering; with its settings and up axis.
+// \throw std::invalid_argument, nlohmann::json::exception
+ImportedRecipe imported_editor(const nlohmann::json& j, const Document& d)
+{
+    ImportedRecipe out;
+    const Index nv = d.mesh.vertex_count(), nf = d.mesh.face_count();
+    const nlohmann::json& sets = j.at("sets");
+    if (!sets.is_array())
+        throw std::invalid_argument("sets must be a list");
+    for (size_t k = 0; k < sets.size(); ++k)
+    {
+        try
+        {
+            out.sets.push_back(
+                renumbered(set_of(sets[k], nv, nf), d.order.vertex_index, d.order.face_index));
+        }
+        catch (const std::exception& e)
+        {
+            throw std::invalid_argument("sets[" + std::to_string(k) + "]: " + e.what());
+        }
+    }
+    out.settings = settings_of(j.at("solver"));
+    const std::optional<UpAxis> up = up_axis_named(j.at("up").get<std::string>());
+    if (!up)
+        throw std::invalid_argument("up must be an axis such as \"+z\"");
+    out.up = *up;
+    out.editor = true;
+    return out;
+}
+
+} // namespace
 
 void export_recipe(const Document& document, const std::string& path)
 {
-    io::write_file_atomically(path, recipe_to_json(file_recipe(document)).dump(2) + "\n");
+    nlohmann::json j = recipe_to_json(file_recipe(document));
+    j["editor"] = editor_json(document);
+    io::write_file_atomically(path, j.dump(2) + "\n");
 }
 
 ImportedRecipe import_recipe(const Document& document, const std::string& path)
 {
-    const Recipe recipe = read_recipe(path);
+    const std::string text = io::read_file(path);
+    const Recipe recipe = parse_recipe(text, path);
     check_recipe(recipe, document.mesh); // the file's indices named in messages
     const Recipe internal =
         renumber_recipe(recipe, document.order.vertex_index, document.order.face_index);
-    return sets_from_recipe(internal, document.mesh);
+    ImportedRecipe from_sections = sets_from_recipe(internal, document.mesh);
+    const nlohmann::json j = nlohmann::json::parse(text); // (parse_recipe read it)
+    if (!j.contains("editor") || !j["editor"].contains("sets"))
+        return from_sections;
+    // The editor's own sets, names, colours and maps as they were; taken when they still
+    // make the recipe's sections (a file edited by hand since may not: its sections then).
+    ImportedRecipe editor;
+    try
+    {
+        editor = imported_editor(j["editor"], document);
+    }
+    catch (const std::exception& e)
+    {
+        throw InvalidInputError("'" + path + "': editor." + e.what());
+    }
+    editor.iterations = from_sections.iterations;
+    editor.description = from_sections.description;
+    Recipe rebuilt;
+    try
+    {
+        if (constraint_problems(editor.sets, editor.settings).empty())
+            rebuilt = build_recipe(editor.sets, editor.settings, document.mesh,
+                                   document.base_positions, internal.iterations);
+    }
+    catch (const std::exception&)
+    {
+        rebuilt = Recipe{};
+    }
+    rebuilt.description = internal.description;
+    if (recipe_to_json(rebuilt) == recipe_to_json(internal))
+        return editor;
+    from_sections.note =
+        "its sets were made from the recipe's sections: the editor's own (names, colours, "
+        "maps) no longer make them (the file was edited since it was exported)";
+    return from_sections;
 }
 
 std::vector<std::string> preset_names()

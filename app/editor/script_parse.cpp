@@ -340,10 +340,10 @@ ScriptAction parse_action(const Json& j, const Reader& r)
     }
     else if (kind == "up_axis")
     {
-        const std::string up = r.text(v, kind);
-        if (up != "y" && up != "z")
-            r.bad(kind, "must be \"y\" or \"z\"");
-        command(SetUpAxis{up == "z" ? UpAxis::Z : UpAxis::Y});
+        const std::optional<UpAxis> up = up_axis_named(r.text(v, kind));
+        if (!up)
+            r.bad(kind, "must be \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"");
+        command(SetUpAxis{*up});
     }
     else if (kind == "projection")
     {

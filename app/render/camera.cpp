@@ -135,9 +135,51 @@ void Camera::frame(const Box3& part, const Box3& scene, double aspect)
     scene_radius = scene.radius();
 }
 
+std::string_view up_axis_name(UpAxis axis)
+{
+    static constexpr std::string_view names[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    return names[static_cast<int>(axis)];
+}
+
+std::optional<UpAxis> up_axis_named(std::string_view name)
+{
+    for (const UpAxis a : kUpAxes)
+        if (name == up_axis_name(a) ||
+            (!name.empty() && name[0] != '-' && "+" + std::string(name) == up_axis_name(a)))
+            return a;
+    return std::nullopt;
+}
+
+namespace {
+
+// The turn that takes world +y to the up axis: the standard views of a +y-up world, turned
+// so (for +z, a quarter about x: the front view then looks along +y, as Blender's does).
+glm::dquat up_turn(UpAxis axis)
+{
+    const glm::dvec3 x{1, 0, 0}, z{0, 0, 1};
+    switch (axis)
+    {
+        case UpAxis::X:
+            return glm::angleAxis(-0.5 * kPi, z);
+        case UpAxis::NegX:
+            return glm::angleAxis(0.5 * kPi, z);
+        case UpAxis::Y:
+            break;
+        case UpAxis::NegY:
+            return glm::angleAxis(kPi, z);
+        case UpAxis::Z:
+            return glm::angleAxis(0.5 * kPi, x);
+        case UpAxis::NegZ:
+            return glm::angleAxis(-0.5 * kPi, x);
+    }
+    return glm::dquat(1, 0, 0, 0);
+}
+
+} // namespace
+
 glm::dvec3 Camera::world_up() const
 {
-    return up_axis == UpAxis::Z ? glm::dvec3(0, 0, 1) : glm::dvec3(0, 1, 0);
+    return up_turn(up_axis) * glm::dvec3(0, 1, 0);
 }
 
 void Camera::set_view(StandardView view)
@@ -164,10 +206,8 @@ void Camera::set_view(StandardView view)
             rotation = glm::angleAxis(0.5 * kPi, x);
             break;
     }
-    // With +z up, the same views of a world turned a quarter about x (+y goes to +z): the
-    // front view looks along +y with +z up, as Blender's does.
-    if (up_axis == UpAxis::Z)
-        rotation = glm::angleAxis(0.5 * kPi, x) * rotation;
+    // With another axis up, the same views of the world turned to it.
+    rotation = up_turn(up_axis) * rotation;
 }
 
 void Camera::orbit(OrbitStyle style, double x0, double y0, double x1, double y1, int width,
@@ -243,7 +283,7 @@ std::string to_json(const Camera& c)
         {"fov_y_degrees", c.fov_y_degrees},
         {"scene_center", {c.scene_center.x, c.scene_center.y, c.scene_center.z}},
         {"scene_radius", c.scene_radius},
-        {"up", c.up_axis == UpAxis::Z ? "z" : "y"},
+        {"up", std::string(up_axis_name(c.up_axis))},
     };
     return j.dump(2) + "\n";
 }
@@ -340,12 +380,11 @@ Camera camera_from_json(const std::string& text, const std::string& name, const 
     }
     if (j.contains("up"))
     {
-        if (j["up"] == "y")
-            c.up_axis = UpAxis::Y;
-        else if (j["up"] == "z")
-            c.up_axis = UpAxis::Z;
-        else
-            bad_field(name, "up", "must be \"y\" or \"z\"");
+        const std::optional<UpAxis> up =
+            j["up"].is_string() ? up_axis_named(j["up"].get<std::string>()) : std::nullopt;
+        if (!up)
+            bad_field(name, "up", "must be \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"");
+        c.up_axis = *up;
     }
     if (scene != nullptr && !scene->empty() && (!j.contains("target") || !j.contains("distance")))
     {

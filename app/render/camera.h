@@ -2,8 +2,10 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -34,12 +36,24 @@ enum class Projection
     Orthographic
 };
 
-//! Which world axis is up: +y (most viewers), or +z (scanners, CAD, Blender).
+//! \brief Which world direction is up: +y (most viewers), +z (scanners, CAD, Blender), or
+//! any other axis either way (a scan made lying down, or upside down).
 enum class UpAxis
 {
+    X,
+    NegX,
     Y,
-    Z
+    NegY,
+    Z,
+    NegZ
 };
+//! Every up axis, in menu order.
+inline constexpr UpAxis kUpAxes[] = {UpAxis::X,    UpAxis::NegX, UpAxis::Y,
+                                     UpAxis::NegY, UpAxis::Z,    UpAxis::NegZ};
+//! "+x", "-x", "+y", "-y", "+z", "-z": files' and scripts' word.
+std::string_view up_axis_name(UpAxis axis);
+//! The axis of a name (also "x", "y", "z" for the + directions); nullopt for another word.
+std::optional<UpAxis> up_axis_named(std::string_view name);
 
 enum class OrbitStyle
 {
@@ -64,9 +78,9 @@ enum class StandardView
 //! (pixel sizes are passed in). Pure maths, no GL; saved and loaded as JSON (to_json,
 //! camera_from_json) for reproducible screenshots.
 //!
-//! Conventions: world +y is up, or +z with UpAxis::Z; the camera looks along its local -z; window
-//! coordinates are pixels with (0, 0) at the top-left corner and y down; depth is 0 at the near
-//! plane and 1 at the far plane, as OpenGL's default depth range writes it.
+//! Conventions: world +y is up, or another axis (up_axis); the camera looks along its local -z;
+//! window coordinates are pixels with (0, 0) at the top-left corner and y down; depth is 0 at the
+//! near plane and 1 at the far plane, as OpenGL's default depth range writes it.
 struct Camera
 {
     glm::dvec3 target{0.0};          //!< the point orbited about

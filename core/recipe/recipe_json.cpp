@@ -427,11 +427,11 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
 Recipe parse_recipe_json(const Json& j)
 {
     Recipe r;
-    expect_object(j, "",
-                  {"description", "editor", "iterations", "lambda", "tolerance", "method",
-                   "taubin_mu",
-                   "region", "hard", "soft", "centroid", "normal", "normal_smoothing", "joint",
-                   "bending", "volume", "falloff", "prevent_flips", "factor_budget_mb", "time"});
+    expect_object(
+        j, "", {"description",      "editor", "iterations", "lambda", "tolerance", "method",
+                "taubin_mu",        "region", "hard",       "soft",   "centroid",  "normal",
+                "normal_smoothing", "joint",  "bending",    "volume", "falloff",   "prevent_flips",
+                "factor_budget_mb", "time"});
     if (j.contains("editor") && !j["editor"].is_object())
         throw RecipeError("editor", "must be an object (the editor's sets and view)");
     if (j.contains("description"))
@@ -612,8 +612,8 @@ std::vector<Index> parse_index_list(const Json& j, const std::string& key, std::
     };
     const auto take = [&](std::int64_t n, const std::string& at) {
         if (n > budget)
-            throw RecipeError(at, "lists more indices than a recipe may (" +
-                                      std::to_string(budget) + " left)");
+            throw RecipeError(
+                at, "lists more indices than a recipe may (" + std::to_string(budget) + " left)");
         budget -= n;
     };
     std::vector<Index> out;
@@ -677,8 +677,7 @@ InvalidInputError json_syntax_error(const std::string& name, const std::string& 
                              ": not valid JSON: " + what.substr(why + 2));
 }
 
-Recipe parse_recipe(std::string_view json_text, const std::string& name,
-                    const RecipeLimits& limits)
+Recipe parse_recipe(std::string_view json_text, const std::string& name, const RecipeLimits& limits)
 {
     listed_left = limits.max_listed;
     nlohmann::json j;

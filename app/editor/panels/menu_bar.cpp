@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
+#include <cctype>
+#include <string>
+
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
@@ -111,10 +114,13 @@ void menu_bar(const PanelContext& ui)
             ui.give(ToggleProjection{});
         if (item(ui, "View", "Trackball orbit", "T", state.orbit == OrbitStyle::Trackball))
             ui.give(ToggleOrbit{});
-        if (item(ui, "View", "Up axis +Y", nullptr, ui.camera.up_axis == UpAxis::Y))
-            ui.give(SetUpAxis{UpAxis::Y});
-        if (item(ui, "View", "Up axis +Z", nullptr, ui.camera.up_axis == UpAxis::Z))
-            ui.give(SetUpAxis{UpAxis::Z});
+        for (const UpAxis up : kUpAxes)
+        {
+            std::string name(up_axis_name(up));
+            name[1] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[1])));
+            if (item(ui, "View", ("Up axis " + name).c_str(), nullptr, ui.camera.up_axis == up))
+                ui.give(SetUpAxis{up});
+        }
         if (item(ui, "View", "Side panel", "Tab", state.show_side_panel))
             ui.give(Toggle{DisplayToggle::SidePanel});
         if (item(ui, "View", "Energy plot", "E", state.show_energy))

@@ -3,6 +3,9 @@
 // The side panel's Mesh, Display and Camera sections.
 #include <filesystem>
 
+#include <cctype>
+#include <string>
+
 #include <imgui.h>
 
 #include "app/editor/panels/panel_context.h"
@@ -104,11 +107,17 @@ void camera_panel(const PanelContext& ui)
     ImGui::SameLine();
     if (ui.radio("orthographic", ui.camera.projection == Projection::Orthographic))
         ui.give(SetProjection{Projection::Orthographic});
-    if (ui.radio("+Y up", ui.camera.up_axis == UpAxis::Y))
-        ui.give(SetUpAxis{UpAxis::Y});
-    ImGui::SameLine();
-    if (ui.radio("+Z up", ui.camera.up_axis == UpAxis::Z))
-        ui.give(SetUpAxis{UpAxis::Z});
+    // The up axis, three a row: +X -X +Y, then -Y +Z -Z.
+    int up_column = 0;
+    for (const UpAxis up : kUpAxes)
+    {
+        std::string name(up_axis_name(up));
+        name[1] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[1])));
+        if (up_column++ % 3 != 0)
+            ImGui::SameLine();
+        if (ui.radio((name + " up").c_str(), ui.camera.up_axis == up))
+            ui.give(SetUpAxis{up});
+    }
     if (ui.radio("turntable", ui.state.orbit == OrbitStyle::Turntable))
         ui.give(SetOrbit{OrbitStyle::Turntable});
     ImGui::SameLine();

@@ -17,6 +17,7 @@
 #include "app/editor/interface_context.h"
 #include "app/editor/key_map.h"
 #include "app/editor/script.h"
+#include "app/editor/user_files.h"
 #include "app/render/image.h"
 #include "app/render/recording_renderer.h"
 #include "core/errors.h"

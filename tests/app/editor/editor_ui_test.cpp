@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/editor_ui.h"
+#include "app/editor/user_files.h"
 
 #include <doctest/doctest.h>
 

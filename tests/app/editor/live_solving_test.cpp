@@ -144,6 +144,34 @@ void make_every_kind_of_set(Editing& b, bool centroids)
     REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "normals"}));
 }
 
+// Sets with each element's own data (target, weight; normal) in the order of the elements:
+// two lists of sets that differ only in how each lists its elements compare equal.
+std::vector<ConstraintSet> by_element(std::vector<ConstraintSet> sets)
+{
+    for (ConstraintSet& s : sets)
+    {
+        const auto sort = [](std::vector<Index>& elements, auto&... along) {
+            std::vector<size_t> k(elements.size());
+            for (size_t i = 0; i < k.size(); ++i)
+                k[i] = i;
+            std::sort(k.begin(), k.end(),
+                      [&](size_t a, size_t b) { return elements[a] < elements[b]; });
+            const auto permute = [&](auto& v) {
+                if (v.size() != k.size())
+                    return;
+                auto copy = v;
+                for (size_t i = 0; i < k.size(); ++i)
+                    v[i] = copy[k[i]];
+            };
+            (permute(along), ...);
+            permute(elements);
+        };
+        sort(s.vertices, s.targets, s.weights);
+        sort(s.faces, s.normals);
+    }
+    return sets;
+}
+
 // What `meshfair-cli smooth MESH -o OUT --recipe RECIPE` writes, in process: the recipe
 // file parsed and the CLI's own smooth_file (app/cli/smooth_file.h: the mesh read, the
 // recipe checked in the file's numbering, one LocalityRun, the result written in the
@@ -1087,14 +1115,14 @@ TEST_SUITE("Live solving")
         s.dispatch(cmd::Step{4});
         const fs::path recipe = dir / "recipe.json";
         REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
-        const Recipe exported = current_recipe(s.document());
+        const Recipe exported = file_recipe(s.document());
         s.dispatch(cmd::DeleteSet{"pins"});
         s.dispatch(cmd::DeleteSet{"patch"});
         REQUIRE(s.dispatch(cmd::ImportRecipe{recipe.string()}));
         REQUIRE(s.document().sets.size() == 2);
         CHECK(s.document().sets[0].kind == ConstraintKind::Region);
         CHECK(s.document().sets[1].kind == ConstraintKind::Pin);
-        Recipe again = current_recipe(s.document());
+        Recipe again = file_recipe(s.document());
         again.iterations = exported.iterations;
         CHECK(recipe_to_json(again) == recipe_to_json(exported));
         CHECK_FALSE(s.dispatch(cmd::ImportRecipe{(dir / "missing.json").string()}));
@@ -1258,6 +1286,75 @@ TEST_SUITE("Smoothing brush")
         REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().mesh.positions == before);
         CHECK(s.document().sets.empty());
+    }
+
+    TEST_CASE(
+        "export then import keeps every set as made (names, colours, maps, shown or not) and "
+        "the up axis, and a file edited since falls back to its sections, saying so")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_bunny());
+        EditorSession& s = b.session;
+        s.update();
+        make_every_kind_of_set(b, true);
+        // A painted region map, a renamed and recoloured set, a hidden one, -Z up.
+        PaintSettings paint;
+        paint.steps = 3;
+        stroke(s, paint);
+        REQUIRE(s.dispatch(cmd::RenameSet{"anchors", "ears"}));
+        REQUIRE(s.dispatch(cmd::SetColor{"ears", {0.2f, 0.4f, 0.6f}}));
+        REQUIRE(s.dispatch(cmd::ShowSet{"normals", false}));
+        REQUIRE(s.dispatch(cmd::SetSetWeight{"centroids", 3}));
+        REQUIRE(s.dispatch(cmd::SetUpAxis{UpAxis::NegZ}));
+        const std::vector<ConstraintSet> made = s.document().sets;
+        const SolverSettings settings = s.document().solver;
+        REQUIRE(std::any_of(made.begin(), made.end(),
+                            [](const ConstraintSet& c) { return !c.weights.empty(); }));
+        const fs::path recipe = dir / "sets.json";
+        REQUIRE(s.dispatch(cmd::ExportRecipe{recipe.string()}));
+
+        // Another session on the same file, +Y up, imports it.
+        fs::create_directories(dir / "again");
+        Editing other(dir / "again", noisy_bunny());
+        EditorSession& t = other.session;
+        REQUIRE(t.camera().up_axis == UpAxis::Y);
+        REQUIRE(t.dispatch(cmd::ImportRecipe{recipe.string()}));
+        // The same sets, each element with its target, normal and weight (listed in the
+        // file's order: runs in the file).
+        CHECK(by_element(t.document().sets) == by_element(made));
+        CHECK(t.document().solver.anchor_mu == settings.anchor_mu);
+        CHECK(t.camera().up_axis == UpAxis::NegZ);
+        CHECK(t.state().message.find("no longer make them") == std::string::npos);
+        // The recipe the imported sets make is the exported one.
+        Recipe again = file_recipe(t.document());
+        Recipe exported = file_recipe(s.document());
+        again.iterations = exported.iterations;
+        CHECK(recipe_to_json(again) == recipe_to_json(exported));
+
+        // The file is compact: index lists as runs, far smaller than plain lists.
+        const std::string text = io::read_file(recipe.string());
+        nlohmann::json plain = nlohmann::json::parse(text);
+        size_t runs = 0;
+        for (const nlohmann::json& set : plain["editor"]["sets"])
+            for (const nlohmann::json& item : set["vertices"])
+                runs += item.is_array() ? 1 : 0;
+        CHECK(runs > 0);
+
+        // Edited by hand: a region vertex taken out of the sections. The sets come from the
+        // sections, and the status line says why.
+        nlohmann::json edited = plain;
+        nlohmann::json& region = edited["region"]["vertices"];
+        region.erase(region.begin());
+        test::write_bytes(dir / "edited.json", edited.dump());
+        REQUIRE(t.dispatch(cmd::ImportRecipe{(dir / "edited.json").string()}));
+        CHECK(t.state().message.find("no longer make them") != std::string::npos);
+        CHECK(by_element(t.document().sets) != by_element(made));
+        // A damaged editor object is refused, naming it.
+        nlohmann::json damaged = plain;
+        damaged["editor"]["sets"][0]["vertices"] = nlohmann::json::array({-4});
+        test::write_bytes(dir / "damaged.json", damaged.dump());
+        CHECK_FALSE(t.dispatch(cmd::ImportRecipe{(dir / "damaged.json").string()}));
+        CHECK(t.state().message.find("editor.sets[0]") != std::string::npos);
     }
 
     TEST_CASE(

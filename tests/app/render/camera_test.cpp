@@ -273,8 +273,47 @@ TEST_SUITE("Camera up axis")
         const Camera e =
             camera_from_json(R"({"scene_center": [1, 2, 3], "scene_radius": 5})", "v.json", &box);
         CHECK(e.scene_radius == 5);
-        CHECK_THROWS_WITH(camera_from_json(R"({"up": "x"})", "v.json"),
-                          "'v.json': view field 'up' must be \"y\" or \"z\"");
+        CHECK_THROWS_WITH(camera_from_json(R"({"up": "w"})", "v.json"),
+                          "'v.json': view field 'up' must be \"+x\", \"-x\", \"+y\", \"-y\", "
+                          "\"+z\" or \"-z\"");
+    }
+
+    TEST_CASE(
+        "every axis either way can be up: the turntable turns about it, the front view "
+        "stands on it, a view file keeps it")
+    {
+        for (const UpAxis up : kUpAxes)
+        {
+            const std::string name(up_axis_name(up));
+            CAPTURE(name);
+            CHECK(up_axis_named(name) == up);
+            Camera c;
+            c.up_axis = up;
+            const int axis = static_cast<int>(up) / 2;
+            const double sign = static_cast<int>(up) % 2 == 0 ? 1 : -1;
+            glm::dvec3 expected(0.0);
+            expected[axis] = sign;
+            CHECK(glm::length(c.world_up() - expected) < 1e-12);
+            // The front view: the screen's up is the world's, the view across it.
+            c.set_view(StandardView::Front);
+            const glm::dmat3 to_world = glm::mat3_cast(c.rotation);
+            CHECK(glm::length(to_world * glm::dvec3(0, 1, 0) - expected) < 1e-12);
+            CHECK(std::abs(glm::dot(c.forward(), expected)) < 1e-12);
+            // The top view looks down it.
+            c.set_view(StandardView::Top);
+            CHECK(glm::length(c.forward() + expected) < 1e-12);
+            // A turntable orbit keeps the world's up in the view's vertical plane.
+            c.set_view(StandardView::Front);
+            c.orbit(OrbitStyle::Turntable, 0, 0, 37, 0, 800, 600);
+            CHECK(std::abs(glm::dot(glm::mat3_cast(c.rotation) * glm::dvec3(1, 0, 0), expected)) <
+                  1e-12);
+            CHECK(camera_from_json(to_json(c), "v.json").up_axis == up);
+        }
+        CHECK(up_axis_named("z") == UpAxis::Z); // (the words of older files)
+        CHECK(up_axis_named("y") == UpAxis::Y);
+        CHECK_FALSE(up_axis_named("-").has_value());
+        CHECK_FALSE(up_axis_named("").has_value());
+        CHECK_FALSE(up_axis_named("+w").has_value());
     }
 
     TEST_CASE("a view file without a target or a distance frames the mesh")

@@ -182,12 +182,22 @@ saved, cli = read(f"{work}/scan.obj")[0], read(f"{work}/cli.obj")[0]
 plate_still = read(f"{work}/plate-still.obj")[0]
 membrane, membrane_still = read(f"{work}/membrane.obj")[0], read(f"{work}/membrane-still.obj")[0]
 recipe = json.load(open(f"{work}/solve-recipe.json"))
+
+
+def indices(listed):
+    # A recipe's index list: indices and runs [first, last] (docs/recipe.md).
+    out = []
+    for item in listed:
+        out.extend(range(item[0], item[1] + 1) if isinstance(item, list) else [item])
+    return out
+
+
 diagonal = math.dist([min(p[a] for p in base) for a in range(3)],
                      [max(p[a] for p in base) for a in range(3)])
 gap = max(abs(s - c) for ps, pc in zip(saved, cli) for s, c in zip(ps, pc))
 if gap > 1e-9 * diagonal:
     sys.exit(f"the saved shape is {gap / diagonal:.3g} of the diagonal from the command line's")
-pins = recipe["hard"]["vertices"]
+pins = indices(recipe["hard"]["vertices"])
 targets = recipe["hard"]["targets"]
 lift = [sum(targets[k][a] - base[v][a] for k, v in enumerate(pins)) / len(pins) for a in range(3)]
 length = math.hypot(*lift)
@@ -195,7 +205,7 @@ if length < 0.01 * diagonal:
     sys.exit(f"the pins were hardly moved ({length / diagonal:.3g} of the diagonal)")
 direction = [c / length for c in lift]
 centre = [sum(base[v][a] for v in pins) / len(pins) for a in range(3)]
-region = sorted(set(recipe["region"]["vertices"]) - set(pins),
+region = sorted(set(indices(recipe["region"]["vertices"])) - set(pins),
                 key=lambda i: math.dist(base[i], centre))
 
 
