@@ -1,5 +1,5 @@
 #version 330 core
-// Edges (wireframe, boundary, singular): expanded to screen-space quads by lines.geom,
+// Edges (boundary, singular, glyph segments): expanded to screen-space quads by lines.geom,
 // since core profiles draw no lines wider than one pixel.
 layout(location = 0) in vec3 a_position;
 

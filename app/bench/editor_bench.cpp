@@ -10,9 +10,13 @@
 // (editor_drag.h). See docs/performance.md ("Editor").
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -55,11 +59,102 @@ void print(const Series& s)
     std::printf("| %s | %zu | %.2f | %.2f |\n", s.name.c_str(), s.ms.size(), s.median(), s.max());
 }
 
+//! The CPU time of the process so far (all its threads), in milliseconds.
+double process_cpu_ms()
+{
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
+}
+
 double timed(const std::function<void()>& f)
 {
     const auto t = Clock::now();
     f();
     return ms_since(t);
+}
+
+//! A torus of nu x nv vertices (R = 1, r = 0.4): quads, or each quad split into two
+//! triangles (three edges a vertex, as a scan).
+Mesh torus(int nu, int nv, bool quads)
+{
+    Mesh m;
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i)
+        {
+            const double u = 2 * std::numbers::pi * i / nu, v = 2 * std::numbers::pi * j / nv;
+            m.add_vertex((1 + 0.4 * std::cos(v)) * std::cos(u),
+                         (1 + 0.4 * std::cos(v)) * std::sin(u), 0.4 * std::sin(v));
+        }
+    const auto at = [&](int i, int j) { return static_cast<Index>((j % nv) * nu + (i % nu)); };
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i)
+        {
+            const Index a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
+            if (quads)
+                m.add_face(std::array<Index, 4>{a, b, c, d});
+            else
+            {
+                m.add_face(std::array<Index, 3>{a, b, c});
+                m.add_face(std::array<Index, 3>{a, c, d});
+            }
+        }
+    return m;
+}
+
+//! The view's frames while the camera orbits (2 pixels between frames): the draw call and
+//! its wait, for plain shading, with the wireframe and flat-shaded, interleaved so that a
+//! busy moment of the machine falls on all three alike. Prints a row per mode and the
+//! ratio of the wireframe's median to plain shading's.
+void view_frames(const std::string& name, EditorSession& session, GlRenderer& renderer, int frames,
+                 int width, int height)
+{
+    const DisplayOptions base = session.state().display;
+    DisplayOptions wire = base, flat = base;
+    wire.wireframe = true;
+    flat.shading = Shading::Flat;
+    const std::pair<const char*, DisplayOptions> modes[3] = {
+        {"shading", base}, {"shading + wireframe", wire}, {"flat shading", flat}};
+    // Wall clock, and the CPU time of the whole process (the caller's and llvmpipe's
+    // threads): on a shared machine the second tells the frame's own work from the wait
+    // for a core.
+    std::vector<double> ms[3], cpu[3];
+    for (int f = -1; f < frames; ++f) // frame -1: each mode's programs made, not timed
+        for (int m = 0; m < 3; ++m)
+        {
+            session.camera().orbit(OrbitStyle::Turntable, 0, 0, 2, 0, width, height);
+            session.state().display = modes[m].second;
+            const double cpu_start = process_cpu_ms();
+            const double t = timed([&] {
+                session.draw();
+                (void)renderer.read_pixels(1, 1); // waits for the frame
+            });
+            if (f >= 0)
+            {
+                ms[m].push_back(t);
+                cpu[m].push_back(process_cpu_ms() - cpu_start);
+            }
+        }
+    session.state().display = base;
+    for (int m = 0; m < 3; ++m)
+        std::printf("| %s | %s | %d | %.1f | %.1f | %.1f |\n", name.c_str(), modes[m].first, frames,
+                    bench::median(ms[m]), *std::min_element(ms[m].begin(), ms[m].end()),
+                    bench::median(cpu[m]));
+    std::printf("| %s | wireframe / shading | | %.2fx | | %.2fx |\n", name.c_str(),
+                bench::median(ms[1]) / bench::median(ms[0]),
+                bench::median(cpu[1]) / bench::median(cpu[0]));
+}
+
+//! view_frames on a mesh of its own (a renderer and a session of its own, framed as the
+//! bench's).
+void view_frames_of(const std::string& name, Mesh mesh, int frames, int width, int height)
+{
+    GlRenderer renderer;
+    EditorSession session(make_document(std::move(mesh), name), renderer);
+    session.state().offscreen = true;
+    session.set_view_rect(ViewRect::whole(width, height));
+    session.camera().frame(session.document().box, session.aspect());
+    view_frames(name, session, renderer, frames, width, height);
 }
 
 } // namespace
@@ -80,7 +175,8 @@ int main(int argc, char** argv)
     app.add_option("--threads", threads, "threads (default: all cores)")
         ->check(CLI::Range(0, 1024));
     bench::DragOptions drag;
-    bool drag_only = false;
+    bool drag_only = false, frames_only = false;
+    int view_frame_count = 10;
     app.add_option("--drag-moves", drag.moves,
                    "pin drag: mouse moves timed after the first (0: no drag)")
         ->check(CLI::Range(0, 10000));
@@ -99,6 +195,12 @@ int main(int argc, char** argv)
                  "pin drag: by conjugate gradients (no factor), not the direct method");
     app.add_flag("--drag-only", drag_only,
                  "only the pin drag (not the selection and live solving)");
+    app.add_option("--view-frames", view_frame_count,
+                   "view frames timed per display mode while the camera orbits (0: none)")
+        ->check(CLI::Range(0, 10000));
+    app.add_flag("--frames-only", frames_only,
+                 "only the view's frames (shading, wireframe, flat) at the bench's size and "
+                 "on the bunny and 60k tori");
     CLI11_PARSE(app, argc, argv);
     if (threads > 0)
         set_thread_count(threads);
@@ -131,6 +233,28 @@ int main(int argc, char** argv)
     session.set_view_rect(ViewRect::whole(width, height));
     session.camera().frame(session.document().box, session.aspect());
     session.draw();
+    if (view_frame_count > 0 && !drag_only)
+    {
+        // The draw call alone (rasterization and its wait), the camera orbiting: at the
+        // bench's size, on the bunny as it is and on 60,000-vertex tori of triangles (three
+        // edges a vertex) and of quads (the fan's diagonals hidden from the wireframe).
+        std::printf("view frames while orbiting (%s):\n\n", context.renderer_name().c_str());
+        std::printf(
+            "| mesh | display | frames | median ms | min ms | median CPU ms (all threads) "
+            "|\n|---|---|---|---|---|---|\n");
+        view_frames(std::to_string(n) + " vertices", session, renderer, view_frame_count, width,
+                    height);
+        view_frames_of("the mesh as read (" + std::to_string(base.vertex_count()) + " vertices)",
+                       base, view_frame_count, width, height);
+        view_frames_of("torus, 60,000 vertices, triangles", torus(300, 200, false),
+                       view_frame_count, width, height);
+        view_frames_of("torus, 60,000 vertices, quads", torus(300, 200, true), view_frame_count,
+                       width, height);
+        std::printf("\n");
+        session.draw();
+        if (frames_only)
+            return 0;
+    }
     if (drag_only)
     {
         bench::drag_case(session, width, height, drag);

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/render/gl_program.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "app/render/render_error.h"
@@ -21,15 +22,22 @@ std::string info_log(GLuint object, GetParameter get_parameter, GetLog get_log)
     return log.data();
 }
 
-GLuint compile(const std::string& file, GLenum stage)
+GLuint compile(const std::string& file, GLenum stage, std::string_view defines)
 {
     const std::string_view source = shader_source(file);
     if (source.empty())
         throw app::RenderError("no embedded shader '" + file + "'");
+    // The defines go after the first line, the #version directive.
+    const size_t first_line = std::min(source.find('\n'), source.size());
+    const std::string_view version = source.substr(0, first_line);
+    const std::string_view rest = source.substr(first_line);
+    const std::string newline = "\n";
+    const char* texts[] = {version.data(), newline.data(), defines.empty() ? "" : defines.data(),
+                           rest.data()};
+    const GLint lengths[] = {static_cast<GLint>(version.size()), 1,
+                             static_cast<GLint>(defines.size()), static_cast<GLint>(rest.size())};
     const GLuint shader = glCreateShader(stage);
-    const char* text = source.data();
-    const auto length = static_cast<GLint>(source.size());
-    glShaderSource(shader, 1, &text, &length);
+    glShaderSource(shader, 4, texts, lengths);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -46,12 +54,18 @@ GLuint compile(const std::string& file, GLenum stage)
 
 Program::Program(std::string_view name, bool with_geometry,
                  std::initializer_list<const char*> uniforms)
+    : Program(name, with_geometry, std::vector<const char*>(uniforms), {})
+{
+}
+
+Program::Program(std::string_view name, bool with_geometry,
+                 const std::vector<const char*>& uniforms, std::string_view defines)
     : name_(name)
 {
-    std::vector<GLuint> shaders{compile(name_ + ".vert", GL_VERTEX_SHADER)};
+    std::vector<GLuint> shaders{compile(name_ + ".vert", GL_VERTEX_SHADER, defines)};
     if (with_geometry)
-        shaders.push_back(compile(name_ + ".geom", GL_GEOMETRY_SHADER));
-    shaders.push_back(compile(name_ + ".frag", GL_FRAGMENT_SHADER));
+        shaders.push_back(compile(name_ + ".geom", GL_GEOMETRY_SHADER, defines));
+    shaders.push_back(compile(name_ + ".frag", GL_FRAGMENT_SHADER, defines));
     id_ = glCreateProgram();
     for (const GLuint s : shaders)
         glAttachShader(id_, s);

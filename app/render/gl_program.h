@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <vector>
 
 #include "app/render/gl_functions.h"
 
@@ -20,6 +21,10 @@ public:
     //! links them and checks that every name in `uniforms` is an active uniform.
     //! \throw RenderError with the compiler's or linker's log, or the missing uniform.
     Program(std::string_view name, bool with_geometry, std::initializer_list<const char*> uniforms);
+    //! \brief The same with `defines` (lines of `#define NAME`) put after each file's
+    //! #version line: one of the variants a file's #ifdef blocks make.
+    Program(std::string_view name, bool with_geometry, const std::vector<const char*>& uniforms,
+            std::string_view defines);
     ~Program();
     Program(const Program&) = delete;
     Program& operator=(const Program&) = delete;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include <glm/gtc/type_ptr.hpp>
@@ -115,15 +116,96 @@ struct RenderTarget
     }
 };
 
+// The surface program's variants (shaders/mesh.frag): each reads and interpolates only
+// what the frame shows. On llvmpipe every vertex output costs every vertex and triangle,
+// and reading gl_PrimitiveID makes it copy each triangle's vertices apart (at 1.25 M
+// vertices the two together doubled a frame); a GPU minds neither.
+enum SurfaceVariant : unsigned
+{
+    kFlat = 1,            // flat shading
+    kTrianglesOnly = 2,   // every face a triangle: the triangle drawn is its face
+    kVertexColors = 4,    // the per-vertex colour overlay
+    kVertexSelection = 8, // some vertex selected (the tint around it)
+    kFaceSelection = 16,  // some face selected
+    kWireframe = 32,      // the polygon edges, drawn by the surface's fragments
+    kTriangleId = 64      // unindexed triangles, each fragment knowing its own
+};
+
+//! Whether a variant's fragments need their triangle: its face's flag, the polygon's area
+//! vector, the corners of the wireframe.
+unsigned with_triangle_id(unsigned variant)
+{
+    const bool needs = (variant & (kWireframe | kFaceSelection)) != 0 ||
+                       ((variant & kFlat) != 0 && (variant & kTrianglesOnly) == 0);
+    return needs ? variant | kTriangleId : variant;
+}
+
+std::unique_ptr<gl::Program> surface_program(unsigned variant)
+{
+    std::string defines;
+    std::vector<const char*> uniforms{"u_view", "u_projection", "u_back_tint", "u_eye_ray",
+                                      "u_back_face_color"};
+    const bool polygons = (variant & kTrianglesOnly) == 0;
+    const auto define = [&](unsigned bit, const char* name) {
+        if (variant & bit)
+            defines += std::string("#define ") + name + "\n";
+    };
+    define(kFlat, "FLAT");
+    define(kTrianglesOnly, "TRIANGLES");
+    define(kVertexColors, "VERTEX_COLORS");
+    define(kVertexSelection, "VERTEX_SELECTION");
+    define(kFaceSelection, "FACE_SELECTION");
+    define(kWireframe, "WIREFRAME");
+    define(kTriangleId, "TRIANGLE_ID");
+    if (!(variant & kVertexColors))
+        uniforms.push_back("u_surface_color");
+    if (variant & (kVertexSelection | kFaceSelection))
+        uniforms.push_back("u_selection_color");
+    if (polygons && (variant & (kFlat | kFaceSelection)))
+        uniforms.push_back("u_triangle_face");
+    if (polygons && (variant & kFlat))
+        uniforms.push_back("u_face_area");
+    if (variant & kFaceSelection)
+        uniforms.push_back("u_face_selected");
+    if (variant & kWireframe)
+        for (const char* u : {"u_edge_width_px", "u_edge_color"})
+            uniforms.push_back(u);
+    if (polygons && (variant & kWireframe))
+        uniforms.push_back("u_triangle_edges");
+    if (variant & kTriangleId)
+    {
+        uniforms.push_back("u_triangle_corners");
+        uniforms.push_back("u_positions");
+        if (!(variant & kFlat))
+            uniforms.push_back("u_normals");
+        if (variant & kVertexColors)
+            uniforms.push_back("u_colors");
+        if (variant & kVertexSelection)
+            uniforms.push_back("u_vertex_selected");
+    }
+    return std::make_unique<gl::Program>("mesh", false, uniforms, defines);
+}
+
+// Texture units of the buffers the surface's and the ID buffer's shaders read.
+enum TextureUnit : GLint
+{
+    kTriangleFaceUnit = 0,
+    kFaceAreaUnit = 1,
+    kFaceSelectedUnit = 2,
+    kTriangleCornersUnit = 3,
+    kPositionsUnit = 4,
+    kNormalsUnit = 5,
+    kColorsUnit = 6,
+    kVertexSelectedUnit = 7,
+    kTriangleEdgesUnit = 8
+};
+
 } // namespace
 
 struct GlRenderer::Gl
 {
-    gl::Program surface{
-        "mesh",
-        false,
-        {"u_view", "u_projection", "u_flat", "u_back_tint", "u_orthographic", "u_triangle_face",
-         "u_face_area", "u_face_selected", "u_selection_color", "u_back_face_color"}};
+    // The surface's programs, made when a frame first needs them (by SurfaceVariant bits).
+    std::map<unsigned, std::unique_ptr<gl::Program>> surface;
     gl::Program lines{
         "lines",
         true,
@@ -135,9 +217,15 @@ struct GlRenderer::Gl
     gl::Program ids{"pick", true, {"u_view", "u_projection", "u_triangle_face", "u_viewport_px"}};
     GLuint surface_vao = 0, lines_vao = 0;
     GLuint positions = 0, normals = 0, colors = 0, triangles = 0;
-    GLuint edges = 0, boundary = 0, singular = 0;
+    GLuint boundary = 0, singular = 0;
     GLuint triangle_face = 0, face_area = 0; // buffers behind the textures
     GLuint triangle_face_texture = 0, face_area_texture = 0;
+    // The unindexed surface's (TRIANGLE_ID): no vertex arrays, the index buffer a corner a
+    // texel, the vertices' attributes, and for the wireframe which sides of each triangle
+    // are polygon edges (one byte a triangle).
+    GLuint pulled_vao = 0, triangle_corners_texture = 0, positions_texture = 0;
+    GLuint normals_texture = 0, colors_texture = 0, vertex_selected_texture = 0;
+    GLuint triangle_edges = 0, triangle_edges_texture = 0;
     GLuint face_selected = 0, face_selected_texture = 0; // one byte per face
     GLuint selected_points = 0;                          // indices of the selected vertices
     GLuint vertex_selected = 0;                          // one byte per vertex (the tint)
@@ -153,11 +241,12 @@ struct GlRenderer::Gl
     {
         glGenVertexArrays(1, &surface_vao);
         glGenVertexArrays(1, &lines_vao);
-        GLuint* buffers[] = {&positions, &normals,  &colors,        &triangles, &edges,
+        GLuint* buffers[] = {&positions, &normals,  &colors,        &triangles,
                              &boundary,  &singular, &triangle_face, &face_area};
         for (GLuint* b : buffers)
             glGenBuffers(1, b);
         glGenBuffers(1, &face_selected);
+        glGenBuffers(1, &triangle_edges);
         glGenBuffers(1, &selected_points);
         glGenBuffers(1, &vertex_selected);
         glGenVertexArrays(1, &glyph_vao);
@@ -170,6 +259,12 @@ struct GlRenderer::Gl
         glGenTextures(1, &triangle_face_texture);
         glGenTextures(1, &face_area_texture);
         glGenTextures(1, &face_selected_texture);
+        glGenTextures(1, &triangle_edges_texture);
+        glGenTextures(1, &positions_texture);
+        for (GLuint* t : {&triangle_corners_texture, &normals_texture, &colors_texture,
+                          &vertex_selected_texture})
+            glGenTextures(1, t);
+        glGenVertexArrays(1, &pulled_vao);
         glBindVertexArray(surface_vao);
         glBindBuffer(GL_ARRAY_BUFFER, positions);
         glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
@@ -190,8 +285,8 @@ struct GlRenderer::Gl
         glEnableVertexAttribArray(kPosition);
         glBindVertexArray(0);
         // A buffer name exists only once bound; the textures need existing buffers.
-        for (GLuint b :
-             {triangle_face, face_area, face_selected, edges, boundary, singular, selected_points})
+        for (GLuint b : {triangle_face, face_area, face_selected, boundary, singular,
+                         selected_points, triangle_edges})
             glBindBuffer(GL_TEXTURE_BUFFER, b);
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
         glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
@@ -200,6 +295,18 @@ struct GlRenderer::Gl
         glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, face_area);
         glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
         glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, face_selected);
+        glBindTexture(GL_TEXTURE_BUFFER, triangle_edges_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, triangle_edges);
+        glBindTexture(GL_TEXTURE_BUFFER, positions_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, positions);
+        glBindTexture(GL_TEXTURE_BUFFER, triangle_corners_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, triangles);
+        glBindTexture(GL_TEXTURE_BUFFER, normals_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, normals);
+        glBindTexture(GL_TEXTURE_BUFFER, colors_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, colors);
+        glBindTexture(GL_TEXTURE_BUFFER, vertex_selected_texture);
+        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, vertex_selected);
         glBindTexture(GL_TEXTURE_BUFFER, 0);
     }
 
@@ -207,10 +314,11 @@ struct GlRenderer::Gl
     {
         glDeleteVertexArrays(1, &surface_vao);
         glDeleteVertexArrays(1, &lines_vao);
-        const GLuint buffers[] = {positions, normals,  colors,        triangles, edges,
+        const GLuint buffers[] = {positions, normals,  colors,        triangles,
                                   boundary,  singular, triangle_face, face_area};
-        glDeleteBuffers(9, buffers);
+        glDeleteBuffers(8, buffers);
         glDeleteBuffers(1, &face_selected);
+        glDeleteBuffers(1, &triangle_edges);
         glDeleteBuffers(1, &selected_points);
         glDeleteBuffers(1, &vertex_selected);
         glDeleteVertexArrays(1, &glyph_vao);
@@ -218,17 +326,41 @@ struct GlRenderer::Gl
         glDeleteTextures(1, &triangle_face_texture);
         glDeleteTextures(1, &face_area_texture);
         glDeleteTextures(1, &face_selected_texture);
+        glDeleteTextures(1, &triangle_edges_texture);
+        glDeleteTextures(1, &positions_texture);
+        for (GLuint t :
+             {triangle_corners_texture, normals_texture, colors_texture, vertex_selected_texture})
+            glDeleteTextures(1, &t);
+        glDeleteVertexArrays(1, &pulled_vao);
     }
 
     void bind_face_textures() const
     {
+        const std::pair<TextureUnit, GLuint> textures[] = {
+            {kTriangleFaceUnit, triangle_face_texture},
+            {kFaceAreaUnit, face_area_texture},
+            {kFaceSelectedUnit, face_selected_texture},
+            {kPositionsUnit, positions_texture},
+            {kTriangleEdgesUnit, triangle_edges_texture},
+            {kNormalsUnit, normals_texture},
+            {kColorsUnit, colors_texture},
+            {kVertexSelectedUnit, vertex_selected_texture},
+            {kTriangleCornersUnit, triangle_corners_texture}};
+        for (const auto& [unit, texture] : textures)
+        {
+            glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+            glBindTexture(GL_TEXTURE_BUFFER, texture);
+        }
         glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
-        glActiveTexture(GL_TEXTURE2);
-        glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
-        glActiveTexture(GL_TEXTURE0);
+    }
+
+    //! The surface's program of `variant`, made at its first use.
+    const gl::Program& surface_variant(unsigned variant)
+    {
+        std::unique_ptr<gl::Program>& p = surface[variant];
+        if (!p)
+            p = surface_program(variant);
+        return *p;
     }
 };
 
@@ -252,7 +384,6 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     vertex_face_offsets_ = data.vertex_face_offsets;
     vertex_faces_ = data.vertex_faces;
     triangle_indices_ = static_cast<GLsizei>(data.triangles.size());
-    edge_indices_ = static_cast<GLsizei>(data.edges.size());
     boundary_indices_ = static_cast<GLsizei>(data.boundary_edges.size());
     singular_indices_ = static_cast<GLsizei>(data.singular_edges.size());
     positions_.assign(3 * static_cast<size_t>(mesh.vertex_count()), 0.0f);
@@ -263,12 +394,17 @@ void GlRenderer::set_mesh(const Mesh& mesh, const MeshDrawData& data)
     upload<float>(GL_ARRAY_BUFFER, gl_->normals, normals_, n);
     upload<float>(GL_TEXTURE_BUFFER, gl_->face_area, face_areas_, n);
     upload<std::uint32_t>(GL_TEXTURE_BUFFER, gl_->triangle_face, data.triangle_face, n);
+    upload<std::uint8_t>(GL_TEXTURE_BUFFER, gl_->triangle_edges, data.triangle_edges, n);
+    // A mesh of triangles only: each triangle drawn is its face, and all its sides edges.
+    triangles_only_ = data.triangle_face.size() == face_count_;
+    for (size_t t = 0; triangles_only_ && t < data.triangle_face.size(); ++t)
+        triangles_only_ = data.triangle_face[t] == t;
+    any_vertex_selected_ = any_face_selected_ = false;
     upload<std::uint8_t>(GL_TEXTURE_BUFFER, gl_->face_selected,
                          std::vector<std::uint8_t>(static_cast<size_t>(face_count_), 0), n);
     gl_->selected_point_count = 0;
     upload<std::uint8_t>(GL_ARRAY_BUFFER, gl_->vertex_selected,
                          std::vector<std::uint8_t>(static_cast<size_t>(vertex_count_), 0), n);
-    upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->edges, data.edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->boundary, data.boundary_edges, n);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->singular, data.singular_edges, n);
     // The triangles' index buffer belongs to the surface's vertex array.
@@ -409,6 +545,8 @@ void GlRenderer::set_selection(std::span<const char> vertices, std::span<const c
     for (size_t i = 0; i < vertices.size(); ++i)
         if (vertices[i])
             selected.push_back(static_cast<std::uint32_t>(i));
+    any_vertex_selected_ = !selected.empty();
+    any_face_selected_ = std::any_of(faces.begin(), faces.end(), [](char c) { return c != 0; });
     glBindVertexArray(gl_->lines_vao);
     upload<std::uint32_t>(GL_ELEMENT_ARRAY_BUFFER, gl_->selected_points, selected,
                           buffer_allocations_);
@@ -489,38 +627,86 @@ void GlRenderer::render_view(const glm::mat4& view, const glm::mat4& projection,
     glDisable(GL_BLEND);
     glDisable(GL_SCISSOR_TEST);
 
-    // The surface, pushed back a little so that edges and points drawn on it win.
-    gl_->surface.use();
-    set_matrices(gl_->surface, view, projection);
-    flat_drawn_ = o.shading == Shading::Flat;
+    // The surface, pushed back a little so that edges and points drawn on it win; the
+    // wireframe with it.
+    const bool flat = o.shading == Shading::Flat;
+    // Flat shading reads the area vectors of polygons; a triangle's plane is its own.
+    flat_drawn_ = flat && !triangles_only_;
+    const bool colors = o.vertex_colors && has_colors_;
+    const unsigned variant = with_triangle_id(
+        (flat ? kFlat : 0u) | (triangles_only_ ? kTrianglesOnly : 0u) |
+        (colors ? kVertexColors : 0u) | (any_vertex_selected_ ? kVertexSelection : 0u) |
+        (any_face_selected_ ? kFaceSelection : 0u) | (o.wireframe ? kWireframe : 0u));
+    const bool pulled = (variant & kTriangleId) != 0;
     if (flat_drawn_ && !face_areas_current_)
     {
-        // Flat shading turned on after updates that left the area vectors out: from the
-        // positions the GPU has, once.
+        // Flat shading of polygons turned on after updates that left the area vectors out:
+        // from the positions the GPU has, once.
         face_area_vectors(positions_, connectivity_, face_areas_);
         upload_face_areas(face_areas_);
     }
-    glUniform1i(gl_->surface["u_flat"], flat_drawn_);
-    glUniform1i(gl_->surface["u_back_tint"], o.back_face_tint);
-    glUniform1i(gl_->surface["u_orthographic"], camera.projection == Projection::Orthographic);
-    glUniform1i(gl_->surface["u_triangle_face"], 0);
-    glUniform1i(gl_->surface["u_face_area"], 1);
-    glUniform1i(gl_->surface["u_face_selected"], 2);
-    const palette::Rgb &sel = palette::kSelection, &back = palette::kBackFace;
-    glUniform3f(gl_->surface["u_selection_color"], sel[0], sel[1], sel[2]);
-    glUniform3f(gl_->surface["u_back_face_color"], back[0], back[1], back[2]);
-    gl_->bind_face_textures();
-    glBindVertexArray(gl_->surface_vao);
-    if (o.vertex_colors && has_colors_)
-        glEnableVertexAttribArray(kColor);
+    const gl::Program& surface = gl_->surface_variant(variant);
+    surface.use();
+    set_matrices(surface, view, projection);
+    glUniform1i(surface["u_back_tint"], o.back_face_tint);
+    // The direction to the eye at a pixel's centre, from its window coordinates: the ray
+    // through it, x / -z = x_ndc / P00 (the same for y), in a perspective view.
+    if (camera.projection == Projection::Perspective)
+        glUniform4f(surface["u_eye_ray"], 2.0f / (float(width) * projection[0][0]),
+                    2.0f / (float(height) * projection[1][1]), -1.0f / projection[0][0],
+                    -1.0f / projection[1][1]);
     else
+        glUniform4f(surface["u_eye_ray"], 0, 0, 0, 0);
+    const palette::Rgb &sel = palette::kSelection, &back = palette::kBackFace;
+    glUniform3f(surface["u_back_face_color"], back[0], back[1], back[2]);
+    if (!colors)
+        glUniform3f(surface["u_surface_color"], o.surface_color[0], o.surface_color[1],
+                    o.surface_color[2]);
+    if (variant & (kVertexSelection | kFaceSelection))
+        glUniform3f(surface["u_selection_color"], sel[0], sel[1], sel[2]);
+    const bool polygons = !triangles_only_;
+    if (polygons && (variant & (kFlat | kFaceSelection)))
+        glUniform1i(surface["u_triangle_face"], kTriangleFaceUnit);
+    if (polygons && flat_drawn_)
+        glUniform1i(surface["u_face_area"], kFaceAreaUnit);
+    if (any_face_selected_)
+        glUniform1i(surface["u_face_selected"], kFaceSelectedUnit);
+    if (pulled)
     {
-        glDisableVertexAttribArray(kColor);
-        glVertexAttrib3f(kColor, o.surface_color[0], o.surface_color[1], o.surface_color[2]);
+        glUniform1i(surface["u_triangle_corners"], kTriangleCornersUnit);
+        glUniform1i(surface["u_positions"], kPositionsUnit);
+        if (!flat)
+            glUniform1i(surface["u_normals"], kNormalsUnit);
+        if (colors)
+            glUniform1i(surface["u_colors"], kColorsUnit);
+        if (any_vertex_selected_)
+            glUniform1i(surface["u_vertex_selected"], kVertexSelectedUnit);
     }
+    if (o.wireframe)
+    {
+        if (polygons)
+            glUniform1i(surface["u_triangle_edges"], kTriangleEdgesUnit);
+        glUniform1f(surface["u_edge_width_px"], o.edge_width_px);
+        glUniform3f(surface["u_edge_color"], 0.08f, 0.08f, 0.10f);
+    }
+    gl_->bind_face_textures();
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
+    if (pulled)
+    {
+        // Three vertices a triangle, each reading its corner (mesh.vert).
+        glBindVertexArray(gl_->pulled_vao);
+        glDrawArrays(GL_TRIANGLES, 0, triangle_indices_);
+    }
+    else
+    {
+        glBindVertexArray(gl_->surface_vao);
+        if (colors)
+            glEnableVertexAttribArray(kColor);
+        else
+            glDisableVertexAttribArray(kColor);
+        glDrawElements(GL_TRIANGLES, triangle_indices_, GL_UNSIGNED_INT, nullptr);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
 
     glBindVertexArray(gl_->lines_vao);
@@ -537,8 +723,6 @@ void GlRenderer::render_view(const glm::mat4& view, const glm::mat4& projection,
     set_matrices(gl_->lines, view, projection);
     glUniform2f(gl_->lines["u_viewport_px"], float(width), float(height));
     glUniform1f(gl_->lines["u_depth_bias"], 2e-5f);
-    if (o.wireframe)
-        draw_edges(gl_->edges, edge_indices_, o.edge_width_px, {0.08f, 0.08f, 0.10f, 1});
     if (o.boundary_edges)
     {
         const palette::Rgb& b = palette::kBoundary;
@@ -621,7 +805,7 @@ void GlRenderer::render_ids(const Camera& camera, int width, int height)
     gl_->ids.use();
     set_matrices(gl_->ids, glm::mat4(camera.view_matrix()),
                  glm::mat4(camera.projection_matrix(aspect)));
-    glUniform1i(gl_->ids["u_triangle_face"], 0);
+    glUniform1i(gl_->ids["u_triangle_face"], kTriangleFaceUnit);
     glUniform2f(gl_->ids["u_viewport_px"], float(width), float(height));
     gl_->bind_face_textures();
     glBindVertexArray(gl_->surface_vao);

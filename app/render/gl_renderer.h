@@ -13,9 +13,12 @@ namespace meshfair::app {
 //! window or an OSMesa buffer): the same shaders and draw calls in both.
 //!
 //! Buffers: positions, normals and colours (one vertex buffer each), the fan's triangles,
-//! the polygon, boundary and singular edges (index buffers), and two texture buffers read
-//! by the shaders: each triangle's face and each face's area vector. Every entry point
-//! checks glGetError and throws RenderError naming itself.
+//! the boundary and singular edges (index buffers), and texture buffers read by the
+//! shaders: each triangle's face and polygon sides, each face's area vector and selection
+//! flag, and the vertex buffers and triangles again, read by the surface's unindexed
+//! variants. The wireframe is drawn by the surface's fragments (shaders/mesh.frag); the
+//! surface's program is the variant of what a frame shows, made at its first use. Every
+//! entry point checks glGetError and throws RenderError naming itself.
 class GlRenderer final : public Renderer
 {
 public:
@@ -64,9 +67,12 @@ private:
     Mesh connectivity_; // the faces of the mesh set last (positions not kept)
     std::uint32_t vertex_count_ = 0, face_count_ = 0;
     std::vector<Index> vertex_face_offsets_, vertex_faces_; // the faces around each vertex
-    int triangle_indices_ = 0, edge_indices_ = 0, boundary_indices_ = 0, singular_indices_ = 0;
+    int triangle_indices_ = 0, boundary_indices_ = 0, singular_indices_ = 0;
     std::vector<float> positions_, normals_, face_areas_; // staging, sized by set_mesh
     bool has_colors_ = false;
+    // Every face a triangle (the triangle drawn is its face); some vertex, some face
+    // selected: which surface program a frame takes.
+    bool triangles_only_ = false, any_vertex_selected_ = false, any_face_selected_ = false;
     struct GlyphRange
     {
         GlyphGroup::Shape shape;
@@ -76,8 +82,9 @@ private:
     };
     std::vector<GlyphRange> glyphs_;
     int buffer_allocations_ = 0, face_area_uploads_ = 0;
-    // Whether the last draw was flat-shaded (update_geometry then uploads the face area
-    // vectors), and whether the GPU's area vectors belong to its positions.
+    // Whether the last draw read the face area vectors (flat-shaded polygons:
+    // update_geometry then uploads them), and whether the GPU's area vectors belong to its
+    // positions.
     bool flat_drawn_ = false, face_areas_current_ = true;
     // The display run whose frame the GPU's positions and normals are (0: another source),
     // and the bytes update_geometry uploaded.

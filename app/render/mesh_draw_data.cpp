@@ -19,6 +19,7 @@ MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology)
     const Index nf = mesh.face_count();
     d.triangles.reserve(3 * static_cast<size_t>(mesh.corner_count() - 2 * nf));
     d.triangle_face.reserve(static_cast<size_t>(mesh.corner_count() - 2 * nf));
+    d.triangle_edges.reserve(static_cast<size_t>(mesh.corner_count() - 2 * nf));
     for (Index f = 0; f < nf; ++f)
     {
         const std::span<const Index> face = mesh.face(f);
@@ -28,6 +29,10 @@ MeshDrawData mesh_draw_data(const Mesh& mesh, const Topology& topology)
                                                    static_cast<std::uint32_t>(face[k]),
                                                    static_cast<std::uint32_t>(face[k + 1])});
             d.triangle_face.push_back(static_cast<std::uint32_t>(f));
+            // (c0, ck) is the polygon's first edge for k = 1, (ck, ck+1) always one of its
+            // edges, (ck+1, c0) its last for the last triangle; the others are diagonals.
+            d.triangle_edges.push_back(
+                static_cast<std::uint8_t>((k == 1 ? 1 : 0) | 2 | (k + 2 == face.size() ? 4 : 0)));
         }
     }
     for (Index e = 0; e < topology.edge_count(); ++e)

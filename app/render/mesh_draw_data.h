@@ -17,14 +17,17 @@ namespace meshfair::app {
 //! Polygons are fan-triangulated for drawing only: face f with corners c0 .. c(n-1) gives
 //! the triangles (c0, ck, ck+1), k = 1 .. n-2, and triangle_face maps each back to f (the
 //! ID buffer and flat shading read it). The wireframe draws the polygon edges, never the
-//! fan's diagonals. Boundary (n_e = 1) and singular (n_e >= 3) edges are listed apart for
-//! their highlight.
+//! fan's diagonals (triangle_edges tells them apart). Boundary (n_e = 1) and singular (n_e >= 3)
+//! edges are listed apart for their highlight.
 struct MeshDrawData
 {
     std::uint32_t vertex_count = 0;
     std::uint32_t face_count = 0;
-    std::vector<std::uint32_t> triangles;      //!< 3 vertex indices per triangle
-    std::vector<std::uint32_t> triangle_face;  //!< the face of each triangle
+    std::vector<std::uint32_t> triangles;     //!< 3 vertex indices per triangle
+    std::vector<std::uint32_t> triangle_face; //!< the face of each triangle
+    //! Per triangle (c0, c1, c2), bit k set when its side from ck to ck+1 (mod 3) is an
+    //! edge of its polygon, not a diagonal of the fan (what the wireframe draws).
+    std::vector<std::uint8_t> triangle_edges;
     std::vector<std::uint32_t> edges;          //!< 2 vertex indices per polygon edge
     std::vector<std::uint32_t> boundary_edges; //!< 2 per boundary edge
     std::vector<std::uint32_t> singular_edges; //!< 2 per singular edge

@@ -185,7 +185,8 @@ TEST_SUITE("GlRenderer")
         GlRenderer r;
         r.set_mesh(s.document.mesh, s.document.draw_data);
         // One allocation per buffer of a mesh: positions, normals, area vectors, triangle
-        // faces, face and vertex selection flags, edges, boundary, singular edges, triangles.
+        // faces and sides, face and vertex selection flags, boundary, singular edges,
+        // triangles.
         const int allocations = r.buffer_allocations();
         CHECK(allocations == 10);
         const DisplayOptions o;

@@ -113,6 +113,27 @@ TEST_SUITE("MeshDrawData")
         CHECK(d.singular_edges.empty());
     }
 
+    TEST_CASE("each triangle's sides that are polygon edges are those the edge list holds")
+    {
+        // The wireframe drawn by the surface's fragments marks these sides, and must draw
+        // exactly the edges of the list: every polygon edge once, no fan diagonal.
+        for (const Mesh& m : {test::mixed_polygons(), test::quad_cube(), test::open_grid(4, 3)})
+        {
+            const MeshDrawData d = draw_data(m);
+            REQUIRE(d.triangle_edges.size() == d.triangle_face.size());
+            std::set<std::pair<std::uint32_t, std::uint32_t>> marked;
+            for (size_t t = 0; t < d.triangle_edges.size(); ++t)
+            {
+                CHECK(d.triangle_edges[t] < 8);
+                for (size_t k = 0; k < 3; ++k)
+                    if (d.triangle_edges[t] & (1u << k))
+                        marked.insert(
+                            std::minmax(d.triangles[3 * t + k], d.triangles[3 * t + (k + 1) % 3]));
+            }
+            CHECK(marked == edge_set(d.edges));
+        }
+    }
+
     TEST_CASE("an open grid's boundary edges are its perimeter, a fan's shared edge is singular")
     {
         const MeshDrawData grid = draw_data(test::open_grid(5, 3));
