@@ -273,6 +273,17 @@ void EditorSession::update()
         else
             std::fprintf(trace_, "run stopped: %d steps from the base\n",
                          document_.steps_from_base);
+        // What the plot shows of the run: the energy of what moves and the whole mesh's.
+        const std::vector<EnergySample> e = solver_.energies();
+        if (e.size() >= 2)
+        {
+            const auto moving = [](const EnergySample& s) {
+                return s.energy.total() - s.held.total();
+            };
+            std::fprintf(trace_, "energy of what moves: %.6g -> %.6g; whole mesh: %.6g -> %.6g\n",
+                         moving(e.front()), moving(e.back()), e.front().energy.total(),
+                         e.back().energy.total());
+        }
         std::fflush(trace_);
     }
     if (trace_ != nullptr && solver_.solves_shown() > solves_traced_)

@@ -67,11 +67,30 @@ std::vector<ConstraintSet> in_file_order(std::vector<ConstraintSet> sets,
 
 } // namespace
 
+namespace {
+
+// The recipe of `sets` and `settings` in the file's numbering, each list in the file's order
+// (the region's too: the union of the region sets, which build_recipe lists in the
+// document's numbering).
+Recipe file_recipe_of(const Document& d, const std::vector<ConstraintSet>& sets,
+                      const SolverSettings& settings, int iterations)
+{
+    Recipe r = renumber_recipe(
+        build_recipe(in_file_order(sets, d.order), settings, d.mesh, d.base_positions, iterations),
+        d.order.vertex_order, d.order.face_order);
+    if (r.region)
+    {
+        std::sort(r.region->vertices.begin(), r.region->vertices.end());
+        std::sort(r.region->faces.begin(), r.region->faces.end());
+    }
+    return r;
+}
+
+} // namespace
+
 Recipe file_recipe(const Document& d)
 {
-    return renumber_recipe(build_recipe(in_file_order(d.sets, d.order), d.solver, d.mesh,
-                                        d.base_positions, d.steps_from_base),
-                           d.order.vertex_order, d.order.face_order);
+    return file_recipe_of(d, d.sets, d.solver, d.steps_from_base);
 }
 
 namespace {
@@ -164,19 +183,19 @@ ImportedRecipe import_recipe(const Document& document, const std::string& path)
     }
     editor.iterations = from_sections.iterations;
     editor.description = from_sections.description;
+    // Compared as written: in the file's numbering and order.
     Recipe rebuilt;
     try
     {
         if (constraint_problems(editor.sets, editor.settings).empty())
-            rebuilt = build_recipe(editor.sets, editor.settings, document.mesh,
-                                   document.base_positions, internal.iterations);
+            rebuilt = file_recipe_of(document, editor.sets, editor.settings, recipe.iterations);
     }
     catch (const std::exception&)
     {
         rebuilt = Recipe{};
     }
-    rebuilt.description = internal.description;
-    if (recipe_to_json(rebuilt) == recipe_to_json(internal))
+    rebuilt.description = recipe.description;
+    if (recipe_to_json(rebuilt) == recipe_to_json(recipe))
         return editor;
     from_sections.note =
         "its sets were made from the recipe's sections: the editor's own (names, colours, "

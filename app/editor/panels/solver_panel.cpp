@@ -347,25 +347,29 @@ void solver_panel(const PanelContext& ui)
             ImGui::TextWrapped("prepared in %.0f ms: analysed %.0f ms, factored %.0f ms",
                                st.precompute_ms, st.analyse_ms, st.factor_ms);
     }
-    // "off", then the heat map's terms in their order.
+    // "off", then the heat map's terms in their order, each item named for the widget map.
     const std::span<const EnergyTerm> terms = heat_terms();
-    std::vector<std::string> heat_names{"off"};
-    for (const EnergyTerm t : terms)
-        heat_names.emplace_back(heat_term_name(t));
-    std::vector<const char*> heat_items;
-    for (const std::string& n : heat_names)
-        heat_items.push_back(n.c_str());
-    int heat = 0;
-    for (size_t k = 0; k < terms.size(); ++k)
-        if (state.heat_map == terms[k])
-            heat = static_cast<int>(k) + 1;
     ImGui::SetNextItemWidth(120);
-    if (ImGui::Combo("heat map: energy share", &heat, heat_items.data(),
-                     static_cast<int>(heat_items.size())))
-        ui.give(SetHeatMap{heat == 0
-                               ? std::nullopt
-                               : std::optional<EnergyTerm>(terms[static_cast<size_t>(heat) - 1])});
+    // (The label apart: a click at the widget's centre lands on the box, not the label.)
+    if (ImGui::BeginCombo("##heat map", state.heat_map
+                                            ? std::string(heat_term_name(*state.heat_map)).c_str()
+                                            : "off"))
+    {
+        if (ImGui::Selectable("off", !state.heat_map) && state.heat_map)
+            ui.give(SetHeatMap{std::nullopt});
+        ui.track("heat map/off");
+        for (const EnergyTerm t : terms)
+        {
+            const std::string name(heat_term_name(t));
+            if (ImGui::Selectable(name.c_str(), state.heat_map == t) && state.heat_map != t)
+                ui.give(SetHeatMap{t});
+            ui.track("heat map/" + name);
+        }
+        ImGui::EndCombo();
+    }
     ui.track("heat map");
+    ImGui::SameLine();
+    ImGui::TextUnformatted("heat map: energy share");
     ImGui::SetNextItemWidth(100);
     ImGui::SliderFloat("##sigma", &ui.state.noise_sigma, 0.0f, 1.0f, "sigma %.2f");
     ui.track("noise sigma");

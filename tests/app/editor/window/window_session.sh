@@ -101,13 +101,52 @@ awk -v g="$gradient" 'BEGIN { exit !(g <= 1e-6) }' ||
     fail "the run stopped at a relative gradient of $gradient, above 1e-6"
 [ "$second" -gt "$first" ] ||
     fail "the run after the slider's change made no step ($first, then $second steps from the base)"
+# The plot of a region's run: the energy of what moves falls by far more of itself than the
+# whole mesh's, whose fixed rest is most of it (the trace says what the plot shows).
+python3 - "$log" <<'PY' || fail "the plot's energy of what moves is not the region's: $(grep 'energy of what moves' "$log" | head -1)"
+import re, sys
+line = next(l for l in open(sys.argv[1]) if l.startswith("energy of what moves"))
+a, b, c, d = map(float, re.findall(r"[-+0-9.e]+(?= ->|;|$)|(?<=-> )[-+0-9.e]+", line)[:4])
+assert 0 < b < a and 0 < d < c and b < d, line
+assert (a - b) / a > 5 * (c - d) / c, line
+PY
+xwd -root -silent | convert xwd:- "$work/plot-moves.png"
+click_widget "whole mesh"
+wait_line "command toggle: ok"
+next_frame
+xwd -root -silent | convert xwd:- "$work/plot-whole.png"
+click_widget "whole mesh"
+wait_line "command toggle: ok" 2
+# The heat map of the total: the region coloured, the fixed rest grey.
+click_widget "heat map"
+click_widget "heat map/total"
+wait_line "command heat map: ok"
+next_frame
+next_frame
+xwd -root -silent | convert xwd:- "$work/heat-total.png"
+click_widget "heat map"
+click_widget "heat map/off"
+wait_line "command heat map: ok" 2
 # Undo the run after the change and the change: the shape the slider moved on.
 key ctrl+z
 key ctrl+z
 wait_line "command undo: ok" 2
 key ctrl+s
 wait_line "command save: ok"
+# The scan lies on its back: -Z up, which the exported recipe carries.
+click_widget "View"
+click_widget "View/Up axis -Z"
+wait_line "command up axis: ok"
 export_recipe "session-recipe.json"
+python3 - "$work/session-recipe.json" <<'PY' || fail "the exported recipe lacks the editor's sets or the up axis, or lists no run"
+import json, sys
+r = json.load(open(sys.argv[1]))
+e = r["editor"]
+assert e["up"] == "-z", e["up"]
+names = [s["name"] for s in e["sets"]]
+assert names[:2] == ["region 1", "pin 1"], names
+assert any(isinstance(i, list) for i in r["region"]["vertices"]), "no run in the region's list"
+PY
 grep -q reproduces "$log" || true
 
 # Reopen the mesh as it was read (a copy of the base), import the recipe, export it again.
@@ -117,6 +156,10 @@ key ctrl+a
 type_text "base.obj"
 key Return
 wait_line "command open: ok"
+# +Y up again before the import, which brings back the recipe's -Z.
+click_widget "View"
+click_widget "View/Up axis +Y"
+wait_line "command up axis: ok" 2
 click_widget "File"
 click_widget "File/Import recipe..."
 wait_dialog
