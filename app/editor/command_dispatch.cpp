@@ -377,6 +377,7 @@ bool CommandExecutor::operator()(const cmd::ApplyPreset& c) const
     d.solver = with_pace(preset.settings, d.solver);
     // A run plays the preset's own steps: its settings were tuned for that many.
     d.solver.steps_per_run = std::max(1, preset.iterations);
+    st.preset_applied = {c.preset, d.solver};
     say("preset " + c.preset + (preset.description.empty() ? "" : " (" + preset.description + ")") +
         ": its settings, with your regions and pins" +
         (s.problems().empty() ? std::string() : " (" + s.problems().front() + ")"));

@@ -47,6 +47,10 @@ bool CommandExecutor::operator()(const cmd::PaintDab& c) const
         set.color = default_color(ConstraintKind::Region);
         d.sets.push_back(std::move(set));
         k = d.sets.size() - 1;
+        // Never made behind the artist's back: from now on only what is painted moves.
+        say("the stroke made region '" + c.set +
+            "': the smoothing brush paints its freedom, and runs move only what it frees "
+            "(delete the set to smooth the whole mesh again)");
     }
     ConstraintSet& set = d.sets[*k];
     if (!takes_weight_map(set.kind) || !set.faces.empty())

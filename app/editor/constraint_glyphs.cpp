@@ -49,6 +49,47 @@ SelectionMask region_vertices(const Document& d)
 
 } // namespace
 
+std::vector<NormalArrow> normal_arrows(const Document& d, const ConstraintSet& s, Scalar length)
+{
+    std::vector<NormalArrow> arrows;
+    const bool normal = s.kind == ConstraintKind::Normal || s.kind == ConstraintKind::HardNormal ||
+                        s.kind == ConstraintKind::SoftNormal;
+    if (!normal || s.faces.empty())
+        return arrows;
+    const Mesh& mesh = d.mesh;
+    if (length < 0)
+        length = 6 * mean_edge_length(d.topology, mesh.positions);
+    const size_t step = std::max<size_t>(1, (s.faces.size() + 23) / 24);
+    for (size_t k = 0; k < s.faces.size(); k += step)
+    {
+        const Vec3 c = face_centroid(mesh, mesh.positions, s.faces[k]);
+        const Vec3 n =
+            s.normals.empty() ? face_normal(mesh, mesh.positions, s.faces[k]) : s.normals[k];
+        arrows.push_back({c, {c[0] + length * n[0], c[1] + length * n[1], c[2] + length * n[2]}});
+    }
+    return arrows;
+}
+
+Vec3 set_mean_normal(const Mesh& mesh, std::span<const Scalar> positions, const ConstraintSet& s)
+{
+    Vec3 sum{0, 0, 0};
+    for (size_t k = 0; k < s.faces.size(); ++k)
+    {
+        const Vec3 area = face_area_vector(mesh, positions, s.faces[k]);
+        const Scalar a = std::sqrt(area[0] * area[0] + area[1] * area[1] + area[2] * area[2]);
+        // Each face by its area: its own normal, or its normal now.
+        const Vec3 n = s.normals.empty()
+                           ? area
+                           : Vec3{a * s.normals[k][0], a * s.normals[k][1], a * s.normals[k][2]};
+        for (int c = 0; c < 3; ++c)
+            sum[c] += n[c];
+    }
+    const Scalar len = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    if (!(len > 0) || !std::isfinite(len))
+        return {0, 0, 1};
+    return {sum[0] / len, sum[1] / len, sum[2] / len};
+}
+
 RegionBorder region_border(const Document& d)
 {
     RegionBorder border;
@@ -114,18 +155,12 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
             case ConstraintKind::HardNormal:
             case ConstraintKind::SoftNormal:
             {
-                // A few long arrows show a direction better than one per face.
                 g.shape = GlyphGroup::Shape::Segments;
                 g.size_px = 2.0f;
-                const size_t step = std::max<size_t>(1, (s.faces.size() + 23) / 24);
-                for (size_t k = 0; k < s.faces.size(); k += step)
+                for (const NormalArrow& a : normal_arrows(d, s, arrow))
                 {
-                    const Vec3 c = face_centroid(mesh, mesh.positions, s.faces[k]);
-                    const Vec3 n = s.normals.empty() ? face_normal(mesh, mesh.positions, s.faces[k])
-                                                     : s.normals[k];
-                    add_point(g.points, c);
-                    add_point(g.points,
-                              {c[0] + arrow * n[0], c[1] + arrow * n[1], c[2] + arrow * n[2]});
+                    add_point(g.points, a.base);
+                    add_point(g.points, a.tip);
                 }
                 break;
             }

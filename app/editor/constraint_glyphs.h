@@ -31,6 +31,22 @@ struct RegionBorder
 };
 RegionBorder region_border(const Document& document);
 
+//! One arrow of a normal set as drawn: from a face centroid, along the face's normal (the
+//! set's own, or the face's now), six mean edge lengths long.
+struct NormalArrow
+{
+    Vec3 base, tip;
+};
+//! \brief The arrows of a normal set (none for another kind): up to 24, from evenly spread
+//! faces, so that a few long arrows show a direction better than one per face. `length`:
+//! the arrows' length (negative: six mean edge lengths of the mesh now). The glyphs draw
+//! them and the D tool grabs them, anywhere along.
+std::vector<NormalArrow> normal_arrows(const Document& document, const ConstraintSet& set,
+                                       Scalar length = -1);
+//! \brief The unit area-weighted mean of a set's normals (its own, or its faces' now): the
+//! direction its row shows and a drag of the D tool starts from; +z when they cancel.
+Vec3 set_mean_normal(const Mesh& mesh, std::span<const Scalar> positions, const ConstraintSet& set);
+
 //! `hidden`: a set whose glyphs are left out (the set whose weight map the Paint tool shows
 //! in colour: its dots would cover the colours).
 std::vector<GlyphGroup> constraint_glyphs(const Document& document, const RegionBorder& border,

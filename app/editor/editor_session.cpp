@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "app/editor/constraint_glyphs.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/script.h"
 #include "app/editor/weight_paint.h"
@@ -59,7 +60,8 @@ std::vector<GrabHandle> EditorSession::pin_handles() const
                                s.targets.empty()
                                    ? glm::dvec3(x[i], x[i + 1], x[i + 2])
                                    : glm::dvec3(s.targets[v][0], s.targets[v][1], s.targets[v][2]),
-                               {0, 0, 1}});
+                               {0, 0, 1},
+                               std::nullopt});
         }
     }
     return handles;
@@ -67,24 +69,22 @@ std::vector<GrabHandle> EditorSession::pin_handles() const
 
 std::vector<GrabHandle> EditorSession::normal_handles() const
 {
-    // The bases of the arrows the glyphs show: up to 24 face centroids per set.
+    // The arrows the glyphs show, whole (normal_arrows), each with its set's mean normal: the
+    // direction a drag turns.
     std::vector<GrabHandle> handles;
-    const Mesh& mesh = document_.mesh;
     for (const ConstraintSet& s : document_.sets)
     {
-        const bool normal = s.kind == ConstraintKind::Normal ||
-                            s.kind == ConstraintKind::HardNormal ||
-                            s.kind == ConstraintKind::SoftNormal;
-        if (!normal || !s.visible || s.faces.empty())
+        if (!s.visible)
             continue;
-        const Vec3 direction =
-            s.normals.empty() ? face_normal(mesh, mesh.positions, s.faces[0]) : s.normals[0];
-        const size_t step = std::max<size_t>(1, (s.faces.size() + 23) / 24);
-        for (size_t f = 0; f < s.faces.size(); f += step)
-        {
-            const Vec3 c = face_centroid(mesh, mesh.positions, s.faces[f]);
-            handles.push_back({s.name, {c[0], c[1], c[2]}, direction});
-        }
+        const std::vector<NormalArrow> arrows = normal_arrows(document_, s);
+        if (arrows.empty())
+            continue;
+        const Vec3 direction = set_mean_normal(document_.mesh, document_.mesh.positions, s);
+        for (const NormalArrow& a : arrows)
+            handles.push_back({s.name,
+                               {a.base[0], a.base[1], a.base[2]},
+                               direction,
+                               glm::dvec3(a.tip[0], a.tip[1], a.tip[2])});
     }
     return handles;
 }

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/editor/command.h"
@@ -56,6 +57,9 @@ struct EditorState
     //! The plot's energy: of the whole mesh, or (false) of what moves: the terms' parts
     //! with a free vertex (EnergySample::held left out) and the relative gradient.
     bool energy_whole_mesh = false;
+    //! The preset applied last and the settings it left: the preset menu names it while
+    //! the settings are still those (not after a slider moved, nor after Undo).
+    std::optional<std::pair<std::string, SolverSettings>> preset_applied;
     bool show_energy = true; //!< the energy plot window
     //! The heat map shown: each vertex coloured by its share of a term (nullopt: none).
     std::optional<EnergyTerm> heat_map;

@@ -89,6 +89,7 @@ UiOutput EditorUi::build(const Document& document, EditorState& state, const Cam
     status_bar(ui);
     energy_window(ui);
     preparation_toast(ui); // (over the energy window)
+    error_toast(ui, toast_dismissed_, toast_expanded_);
     tool_overlay(state);
     help_overlay(ui);
 

@@ -65,7 +65,9 @@ private:
     cmd::Dialog browser_purpose_ = cmd::Dialog::OpenMesh;
     std::string rename_buffer_;
     std::string renaming_;
-    bool was_editing_ = false; // a widget was active in the last frame
+    bool was_editing_ = false;    // a widget was active in the last frame
+    std::string toast_dismissed_; // the error message whose box was closed
+    bool toast_expanded_ = false; // the error box shows the whole text
     WidgetMap widgets_, drawing_;
 };
 

@@ -107,15 +107,20 @@ void InputRouter::feed_interface(bool with_interface)
 
 void InputRouter::route(EditorSession& session, bool with_interface)
 {
-    bool mouse_captured = false, keys_captured = false;
+    bool mouse_captured = false, keys_captured = false, chords_pass = false;
     if (with_interface)
     {
         const ImGuiIO& io = ImGui::GetIO();
         mouse_captured = io.WantCaptureMouse;
         // A dialog or prompt open takes the keys too, as a modal window does.
-        keys_captured =
-            io.WantCaptureKeyboard || io.WantTextInput ||
+        const bool popup =
             ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId | ImGuiPopupFlags_AnyPopupLevel);
+        keys_captured = io.WantCaptureKeyboard || io.WantTextInput || popup;
+        // An open menu takes the letters, but not the Ctrl chords (Ctrl+Q quits with a menu
+        // open), unless text is being typed or a dialog or prompt asks.
+        const EditorState& st = session.state();
+        chords_pass = popup && !io.WantTextInput && !st.dialog && !st.quit_prompt &&
+                      !st.recovery_saved_at.has_value();
     }
     const ViewRect& view = session.view_rect();
     for (const InputEvent& e : batch_)
@@ -154,7 +159,7 @@ void InputRouter::route(EditorSession& session, bool with_interface)
                     session.scroll(e.amount, vx, vy);
                 break;
             case InputEvent::Type::KeyPress:
-                if (!keys_captured && !is_modifier(e.key))
+                if ((!keys_captured || (e.mods.ctrl && chords_pass)) && !is_modifier(e.key))
                     if (const std::optional<Command> c = command_for_key({e.key, e.mods}))
                         session.dispatch(*c);
                 break;

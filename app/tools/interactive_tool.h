@@ -15,13 +15,16 @@
 
 namespace meshfair::app {
 
-//! \brief Something a tool can grab in the view: a pin of a pin set (at its target), or the
-//! base of one of a normal set's arrows (a face centroid) with the set's direction.
+//! \brief Something a tool can grab in the view: a pin of a pin set (at its target), or one
+//! of a normal set's arrows as drawn (from a face centroid to its tip), with the set's
+//! direction.
 struct GrabHandle
 {
     std::string set;         //!< the set's name
     glm::dvec3 point{0};     //!< in the world
-    Vec3 direction{0, 0, 1}; //!< normal sets: the set's direction now
+    Vec3 direction{0, 0, 1}; //!< normal sets: the set's direction now (its mean normal)
+    //! An arrow's tip (the handle is the segment from point to it); none: a point.
+    std::optional<glm::dvec3> tip;
 };
 
 //! What a tool reads of the editor when its gesture starts. The camera does not move
@@ -61,7 +64,8 @@ public:
 //! How far from a handle (in pixels) a press still grabs it.
 inline constexpr double kGrabRadiusPx = 12;
 
-//! The handle nearest to `at` on screen within kGrabRadiusPx, and its window depth.
+//! \brief The handle nearest to `at` on screen within kGrabRadiusPx (an arrow anywhere
+//! along it, from base to tip), and its window depth there.
 struct Grabbed
 {
     const GrabHandle* handle = nullptr;

@@ -2,6 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/tools/tool_registry.h"
 
+#include <algorithm>
+
 #include "app/tools/aim_normals_tool.h"
 #include "app/tools/brush_tool.h"
 #include "app/tools/click_tool.h"
@@ -40,7 +42,18 @@ Grabbed nearest_handle(std::span<const GrabHandle> handles, const Camera& camera
     double best = kGrabRadiusPx * kGrabRadiusPx;
     for (const GrabHandle& h : handles)
     {
-        const glm::dvec3 w = camera.project(h.point, view.width, view.height);
+        const glm::dvec3 a = camera.project(h.point, view.width, view.height);
+        // The nearest point of the arrow's drawn segment (of the point itself for a pin).
+        glm::dvec3 w = a;
+        if (h.tip)
+        {
+            const glm::dvec3 b = camera.project(*h.tip, view.width, view.height);
+            const glm::dvec2 ab(b.x - a.x, b.y - a.y), ap(at.x - a.x, at.y - a.y);
+            const double len2 = glm::dot(ab, ab);
+            const double t = len2 > 0 ? std::clamp(glm::dot(ap, ab) / len2, 0.0, 1.0) : 0.0;
+            if (b.z >= 0 && b.z <= 1)
+                w = a + t * (b - a);
+        }
         const double d2 = (w.x - at.x) * (w.x - at.x) + (w.y - at.y) * (w.y - at.y);
         if (w.z >= 0 && w.z <= 1 && d2 < best)
         {

@@ -24,6 +24,9 @@ bool menu(const PanelContext& ui, const char* label, bool enabled = true)
 {
     const bool open = ImGui::BeginMenu(label, enabled);
     ui.track(label);
+    // Escape closes an open menu, as every other program's does.
+    if (open && ImGui::IsKeyPressed(ImGui::GetIO().KeyMap[ImGuiKey_Escape]))
+        ImGui::CloseCurrentPopup();
     return open;
 }
 

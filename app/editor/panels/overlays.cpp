@@ -88,6 +88,15 @@ void status_bar(const PanelContext& ui)
         ImGui::TextColored(
             state.message_is_error ? ImVec4(1, 0.45f, 0.35f, 1) : ImVec4(0.85f, 0.85f, 0.85f, 1),
             "|  %s", state.message.c_str());
+        // A long message runs past the window's edge: the whole of it, wrapped, on hover.
+        if (ImGui::IsItemHovered())
+        {
+            ImGui::BeginTooltip();
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40);
+            ImGui::TextUnformatted(state.message.c_str());
+            ImGui::PopTextWrapPos();
+            ImGui::EndTooltip();
+        }
     }
     else
         // No newer message: what the run does besides the settings' letter (an open scan's
@@ -123,6 +132,42 @@ void preparation_toast(const PanelContext& ui)
     ImGui::SameLine();
     if (ui.button("Cancel (Esc)###cancel preparation", "cancel preparation"))
         ui.give(cmd::CancelPreparation{});
+    ImGui::End();
+}
+
+void error_toast(const PanelContext& ui, std::string& dismissed, bool& expanded)
+{
+    const EditorState& state = ui.state;
+    if (!state.message_is_error || state.message.empty() || state.message == dismissed)
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float view_width = io.DisplaySize.x - (state.show_side_panel ? kSidePanelWidth : 0.0f);
+    const float width = std::min(480.0f, view_width - 20);
+    // Below the menu bar, beside the preparation's box when it shows.
+    const float top = ImGui::GetFrameHeight() + 12 + (state.solver.preparing ? 90.0f : 0.0f);
+    ImGui::SetNextWindowPos(ImVec2(view_width * 0.5f, top), ImGuiCond_Always, ImVec2(0.5f, 0));
+    ImGui::SetNextWindowBgAlpha(0.92f);
+    // Fitted to its text at once (the whole text shown grows it in the same frame).
+    ImGui::Begin("##refused", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoScrollbar |
+                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGui::Dummy(ImVec2(width - 2 * ImGui::GetStyle().WindowPadding.x, 0));
+    ImGui::TextColored(ImVec4(1, 0.45f, 0.35f, 1), "Not done");
+    ImGui::SameLine(width - 34);
+    if (ui.small_button("x##toast", "toast/close"))
+        dismissed = state.message;
+    // The first lines, wrapped; the whole text a click away.
+    constexpr size_t kShort = 220;
+    const bool long_text = state.message.size() > kShort;
+    const std::string text =
+        long_text && !expanded ? state.message.substr(0, kShort) + " ..." : state.message;
+    ImGui::PushTextWrapPos(width - ImGui::GetStyle().WindowPadding.x);
+    ImGui::TextUnformatted(text.c_str());
+    ImGui::PopTextWrapPos();
+    ui.track("toast/text");
+    if (long_text && ui.small_button(expanded ? "less" : "the whole text", "toast/whole text"))
+        expanded = !expanded;
     ImGui::End();
 }
 

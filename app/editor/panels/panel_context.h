@@ -53,6 +53,10 @@ void status_bar(const PanelContext& ui);
 //! expected length and Cancel, over the top of the view, where the artist looks.
 void preparation_toast(const PanelContext& ui);
 void help_overlay(const PanelContext& ui);
+//! \brief The newest error (a refused command, preset or run: why), wrapped in a box over
+//! the top of the view where the artist looks, its first lines and the whole text a click
+//! away, until closed (`dismissed` keeps the message closed) or another message comes.
+void error_toast(const PanelContext& ui, std::string& dismissed, bool& expanded);
 //! The active tool's ring, rectangle or lasso line, over the view.
 void tool_overlay(const EditorState& state);
 

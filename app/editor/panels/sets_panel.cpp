@@ -4,6 +4,7 @@
 
 #include <imgui.h>
 
+#include "app/editor/constraint_glyphs.h"
 #include "app/editor/panels/panel_context.h"
 
 namespace meshfair::app {
@@ -95,7 +96,8 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         if (set.kind == ConstraintKind::Normal || set.kind == ConstraintKind::HardNormal ||
             set.kind == ConstraintKind::SoftNormal)
         {
-            const Vec3 d = set.normals.empty() ? Vec3{0, 0, 1} : set.normals.front();
+            // The set's mean normal: what its arrows average, and where a drag starts.
+            const Vec3 d = set_mean_normal(ui.document.mesh, ui.document.mesh.positions, set);
             float direction[3] = {float(d[0]), float(d[1]), float(d[2])};
             ImGui::SetNextItemWidth(180);
             if (ImGui::DragFloat3("direction", direction, 0.01f, -1.0f, 1.0f, "%.2f"))

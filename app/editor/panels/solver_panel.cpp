@@ -46,7 +46,10 @@ void solver_panel(const PanelContext& ui)
         return out;
     }();
     ImGui::SetNextItemWidth(160);
-    if (ImGui::BeginCombo("preset", "choose...", ImGuiComboFlags_None))
+    const bool applied =
+        ui.state.preset_applied && ui.state.preset_applied->second == document.solver;
+    if (ImGui::BeginCombo("preset", applied ? ui.state.preset_applied->first.c_str() : "choose...",
+                          ImGuiComboFlags_None))
     {
         for (size_t k = 0; k < presets.size(); ++k)
         {

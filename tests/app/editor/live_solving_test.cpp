@@ -20,6 +20,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "app/cli/smooth_file.h"
+#include "app/editor/constraint_glyphs.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/live_solver.h"
 #include "app/editor/offscreen.h"
@@ -987,6 +988,60 @@ TEST_SUITE("Live solving")
         // The drag is one undo step.
         REQUIRE(s.dispatch(cmd::Undo{}));
         CHECK(s.document().sets[0].normals.front() == Vec3{0, 0, 1});
+    }
+
+    TEST_CASE(
+        "the D tool grabs a normal set's arrow anywhere along it, and turns from the set's mean "
+        "normal")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        s.dispatch(cmd::SetElements{ElementKind::Faces});
+        b.rectangle(180, 120, 230, 170);
+        REQUIRE(s.dispatch(cmd::CreateSet{ConstraintKind::Normal, "faces"}));
+        const ConstraintSet& set = s.document().sets[0];
+        REQUIRE(set.normals.empty()); // each face's own normal, noisy
+        const Vec3 mean = set_mean_normal(s.document().mesh, s.document().mesh.positions, set);
+        const std::vector<NormalArrow> arrows = normal_arrows(s.document(), set);
+        REQUIRE(arrows.size() > 1);
+        // Pressed near an arrow's tip, far from its base, beyond the grab radius of any base.
+        const auto screen = [&](const Vec3& p) {
+            return s.camera().project({p[0], p[1], p[2]}, kSessionWidth, kSessionHeight);
+        };
+        const NormalArrow* far_arrow = nullptr;
+        glm::dvec3 tip{0.0};
+        for (const NormalArrow& a : arrows)
+        {
+            const glm::dvec3 t = screen(a.tip);
+            bool clear = true;
+            for (const NormalArrow& other : arrows)
+                clear =
+                    clear && glm::length(glm::dvec2(screen(other.base) - t)) > 2 * kGrabRadiusPx;
+            if (clear)
+            {
+                far_arrow = &a;
+                tip = t;
+                break;
+            }
+        }
+        REQUIRE(far_arrow != nullptr);
+        s.dispatch(cmd::SetTool{ToolKind::AimNormals});
+        s.mouse_press(MouseButton::Left, {}, tip.x, tip.y);
+        s.mouse_move(tip.x + 50, tip.y); // half a radian
+        s.mouse_release(MouseButton::Left, tip.x + 50, tip.y);
+        REQUIRE(s.history().undo_label() == "normal direction");
+        const Vec3 d = s.document().sets[0].normals.front();
+        // The mean normal turned half a radian about the view's vertical axis.
+        const glm::dvec3 up = s.camera().rotation * glm::dvec3(0, 1, 0);
+        const glm::dvec3 expected =
+            glm::angleAxis(0.5, glm::normalize(up)) * glm::dvec3(mean[0], mean[1], mean[2]);
+        CHECK(glm::length(glm::dvec3(d[0], d[1], d[2]) - expected) < 1e-9);
+        // A press on empty space beside the arrows grabs nothing: the view orbits.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        s.mouse_press(MouseButton::Left, {}, 5, 5);
+        s.mouse_release(MouseButton::Left, 5, 5);
+        CHECK(s.history().undo_label() != "normal direction");
     }
 
     TEST_CASE("a recipe changed during a run is reported as not reproducing the shape")

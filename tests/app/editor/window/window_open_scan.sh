@@ -6,7 +6,8 @@
 #  0. nothing holds the whole scan: "until converged" greyed with the reason (a click on it
 #     changes nothing; a screenshot); fair-region chosen in the solver panel's menu on the
 #     whole scan: Space refused with the reason (the play command fails with it, no run
-#     is left waiting), the preset undone;
+#     is left waiting; the reason in a box over the view, its whole text a click away,
+#     closed by its x), the preset undone;
 #  1. denoise chosen in the solver panel's menu runs (Space) to its end, the run's note
 #     saying how the open scan's volume is kept; saved (Ctrl+S) and its recipe exported:
 #     meshfair-cli smooth of the scan with that recipe gives the saved file byte for byte; a
@@ -110,6 +111,21 @@ wait_line "solver failed: .*is held by nothing"
 # when the verdict comes after it: no run is left waiting for frames that never come.
 next_frame
 refusals=$(count_lines "command play/pause: failed: cannot solve: .*is held by nothing")
+# The reason stands in a box over the view, where the artist looks: its first lines, the
+# whole text a click away; closed, it goes.
+next_frame
+[ -n "$(widget_centre "toast/text")" ] || fail "no box over the view says why the run was refused"
+xwd -root -silent | convert xwd:- "$work/refused.png"
+if [ -n "$(widget_centre "toast/whole text")" ]; then
+    click_widget "toast/whole text"
+    next_frame
+    next_frame # (the box fits its new text from the frame after)
+    xwd -root -silent | convert xwd:- "$work/refused-whole.png"
+fi
+click_widget "toast/close"
+next_frame
+next_frame
+[ -z "$(widget_centre "toast/text")" ] || fail "the refusal's box did not close"
 key ctrl+z
 wait_line "command undo: ok"
 

@@ -168,6 +168,15 @@ type_text "session-recipe.json"
 key Return
 wait_line "command import recipe: ok"
 export_recipe "reimported.json" 2
+# Escape closes an open menu; Ctrl+Q quits with one open.
+click_widget "File"
+[ -n "$(widget_centre "File/Open...")" ] || fail "the File menu did not open"
+key Escape
+next_frame
+next_frame
+[ -z "$(widget_centre "File/Open...")" ] || fail "Escape did not close the File menu"
+click_widget "File"
+[ -n "$(widget_centre "File/Open...")" ] || fail "the File menu did not open again"
 key ctrl+q # the imported pins moved to their targets: unsaved changes, it asks
 click_widget "Discard and quit"
 wait_exit "$pid" "$log" "$name" "Discard and quit after the import"
