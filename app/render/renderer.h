@@ -112,8 +112,9 @@ public:
     virtual void update_geometry(const DisplayGeometry& geometry) = 0;
     //! RGB in [0, 1], 3 #V floats; empty clears the overlay.
     virtual void set_vertex_colors(std::span<const float> rgb) = 0;
-    //! \brief Shows a selection: selected faces tinted orange, selected vertices as orange
-    //! dots; one flag per vertex and per face (all 0 hides it).
+    //! \brief Shows a selection: selected faces and the surface around selected vertices
+    //! tinted in the selection's colour (palette::kSelection); one flag per vertex and per
+    //! face (all 0 hides it).
     virtual void set_selection(std::span<const char> vertices, std::span<const char> faces) = 0;
     //! Replaces the glyphs drawn over the surface (none: empty).
     virtual void set_glyphs(std::span<const GlyphGroup> groups) = 0;

@@ -3,8 +3,8 @@
 # Writes the adversarial input files of tests/adversarial/ (maintainer tool; the files
 # are committed, so neither CI nor the tests run this). Each file is built here per its
 # format's rules, byte for byte, so binary files are reviewable as code. The expected
-# outcome of every file lives in expected.json, recorded by record.sh and reviewed by
-# hand; this script only writes inputs.
+# outcome of every file (exit code and message, or the output's hash) lives in
+# expected.tsv, reviewed by hand; this script only writes inputs.
 import os
 import struct
 
