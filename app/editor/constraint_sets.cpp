@@ -486,6 +486,32 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
     return true;
 }
 
+ConstraintSet ordered_by(ConstraintSet set, std::span<const Index> vertex_key,
+                         std::span<const Index> face_key)
+{
+    const auto order = [](std::vector<Index>& elements, std::span<const Index> key,
+                          auto&... along) {
+        std::vector<size_t> k(elements.size());
+        for (size_t i = 0; i < k.size(); ++i)
+            k[i] = i;
+        std::stable_sort(k.begin(), k.end(), [&](size_t a, size_t b) {
+            return key[static_cast<size_t>(elements[a])] < key[static_cast<size_t>(elements[b])];
+        });
+        const auto permute = [&](auto& v) {
+            if (v.size() != k.size())
+                return; // (no targets, weights or normals of its own)
+            auto copy = v;
+            for (size_t i = 0; i < k.size(); ++i)
+                v[i] = copy[k[i]];
+        };
+        (permute(along), ...);
+        permute(elements);
+    };
+    order(set.vertices, vertex_key, set.targets, set.weights);
+    order(set.faces, face_key, set.normals);
+    return set;
+}
+
 std::vector<Index> region_holes(const ConstraintSet& set, const Mesh& mesh,
                                 const Topology& topology)
 {

@@ -181,6 +181,11 @@ bool same_run(const std::vector<ConstraintSet>& a, const SolverSettings& a_setti
               const std::vector<ConstraintSet>& b, const SolverSettings& b_settings,
               bool ignoring_pin_targets);
 
+//! \brief The set with its vertices listed in increasing vertex_key[v], its faces in
+//! increasing face_key[f] (ties kept in order), each with its target, weight or normal.
+ConstraintSet ordered_by(ConstraintSet set, std::span<const Index> vertex_key,
+                         std::span<const Index> face_key);
+
 //! \brief The vertices a region set leaves out but encloses: what closing it (one ring grown,
 //! then one shrunk) adds, and each part of the vertices left out (connected through edges
 //! among them) that the region surrounds: not the largest such part of its mesh component

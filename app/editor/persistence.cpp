@@ -39,29 +39,7 @@ std::vector<ConstraintSet> in_file_order(std::vector<ConstraintSet> sets,
                                          const LocalityOrder& order)
 {
     for (ConstraintSet& s : sets)
-    {
-        const auto sort_by = [](std::vector<Index>& elements, std::span<const Index> file_index,
-                                auto&... along) {
-            std::vector<size_t> k(elements.size());
-            for (size_t i = 0; i < k.size(); ++i)
-                k[i] = i;
-            std::stable_sort(k.begin(), k.end(), [&](size_t a, size_t b) {
-                return file_index[static_cast<size_t>(elements[a])] <
-                       file_index[static_cast<size_t>(elements[b])];
-            });
-            const auto permute = [&](auto& v) {
-                if (v.size() != k.size())
-                    return;
-                auto copy = v;
-                for (size_t i = 0; i < k.size(); ++i)
-                    v[i] = copy[k[i]];
-            };
-            (permute(along), ...);
-            permute(elements);
-        };
-        sort_by(s.vertices, order.vertex_order, s.targets, s.weights);
-        sort_by(s.faces, order.face_order, s.normals);
-    }
+        s = ordered_by(std::move(s), order.vertex_order, order.face_order);
     return sets;
 }
 

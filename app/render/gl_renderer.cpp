@@ -256,13 +256,9 @@ struct GlRenderer::Gl
         glVertexAttribPointer(kPosition, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
         glEnableVertexAttribArray(kPosition);
         glBindVertexArray(0);
-        glGenTextures(1, &triangle_face_texture);
-        glGenTextures(1, &face_area_texture);
-        glGenTextures(1, &face_selected_texture);
-        glGenTextures(1, &triangle_edges_texture);
-        glGenTextures(1, &positions_texture);
-        for (GLuint* t : {&triangle_corners_texture, &normals_texture, &colors_texture,
-                          &vertex_selected_texture})
+        for (GLuint* t : {&triangle_face_texture, &face_area_texture, &face_selected_texture,
+                          &triangle_edges_texture, &positions_texture, &triangle_corners_texture,
+                          &normals_texture, &colors_texture, &vertex_selected_texture})
             glGenTextures(1, t);
         glGenVertexArrays(1, &pulled_vao);
         glBindVertexArray(surface_vao);
@@ -289,24 +285,26 @@ struct GlRenderer::Gl
                          selected_points, triangle_edges})
             glBindBuffer(GL_TEXTURE_BUFFER, b);
         glBindBuffer(GL_TEXTURE_BUFFER, 0);
-        glBindTexture(GL_TEXTURE_BUFFER, triangle_face_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, triangle_face);
-        glBindTexture(GL_TEXTURE_BUFFER, face_area_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, face_area);
-        glBindTexture(GL_TEXTURE_BUFFER, face_selected_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, face_selected);
-        glBindTexture(GL_TEXTURE_BUFFER, triangle_edges_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, triangle_edges);
-        glBindTexture(GL_TEXTURE_BUFFER, positions_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, positions);
-        glBindTexture(GL_TEXTURE_BUFFER, triangle_corners_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R32UI, triangles);
-        glBindTexture(GL_TEXTURE_BUFFER, normals_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, normals);
-        glBindTexture(GL_TEXTURE_BUFFER, colors_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_RGB32F, colors);
-        glBindTexture(GL_TEXTURE_BUFFER, vertex_selected_texture);
-        glTexBuffer(GL_TEXTURE_BUFFER, GL_R8UI, vertex_selected);
+        // Each texture views its buffer as the shaders read it.
+        const struct
+        {
+            GLuint texture;
+            GLenum format;
+            GLuint buffer;
+        } views[] = {{triangle_face_texture, GL_R32UI, triangle_face},
+                     {face_area_texture, GL_RGB32F, face_area},
+                     {face_selected_texture, GL_R8UI, face_selected},
+                     {triangle_edges_texture, GL_R8UI, triangle_edges},
+                     {positions_texture, GL_RGB32F, positions},
+                     {triangle_corners_texture, GL_R32UI, triangles},
+                     {normals_texture, GL_RGB32F, normals},
+                     {colors_texture, GL_RGB32F, colors},
+                     {vertex_selected_texture, GL_R8UI, vertex_selected}};
+        for (const auto& v : views)
+        {
+            glBindTexture(GL_TEXTURE_BUFFER, v.texture);
+            glTexBuffer(GL_TEXTURE_BUFFER, v.format, v.buffer);
+        }
         glBindTexture(GL_TEXTURE_BUFFER, 0);
     }
 

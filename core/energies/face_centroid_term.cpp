@@ -79,14 +79,7 @@ Scalar FaceCentroidTerm::energy(std::span<const Scalar> x) const
 {
     const Scalar sum = deterministic_sum(static_cast<Index>(faces_.size()), [&](Index k) {
         const Index f = faces_[k];
-        const Vec3 c = face_centroid(*mesh_, x, f);
-        const Vec3 t = target(f);
-        Scalar s = 0;
-        for (int a = 0; a < 3; ++a)
-        {
-            const Scalar d = c[a] - t[a];
-            s += d * d;
-        }
+        const Scalar s = squared_residual(x, f);
         return face_weight_.empty() ? s : face_weight_[f] * s;
     });
     // One weight: mu times the sum, the arithmetic of the paper's single mu.
@@ -131,20 +124,25 @@ void FaceCentroidTerm::add_rhs(std::span<const Scalar> x, std::span<const Index>
                  [&](Index k) { add_vertex_rhs(vertices[k], x.data(), &rhs[3 * vertices[k]]); });
 }
 
+Scalar FaceCentroidTerm::squared_residual(std::span<const Scalar> x, Index f) const
+{
+    const Vec3 c = face_centroid(*mesh_, x, f);
+    const Vec3 t = target(f);
+    Scalar s = 0;
+    for (int a = 0; a < 3; ++a)
+    {
+        const Scalar d = c[a] - t[a];
+        s += d * d;
+    }
+    return s;
+}
+
 void FaceCentroidTerm::add_vertex_energy(std::span<const Scalar> x,
                                          std::span<Scalar> per_vertex) const
 {
     for (const Index f : faces_)
     {
-        const Vec3 c = face_centroid(*mesh_, x, f);
-        const Vec3 t = target(f);
-        Scalar s = 0;
-        for (int a = 0; a < 3; ++a)
-        {
-            const Scalar d = c[a] - t[a];
-            s += d * d;
-        }
-        const Scalar share = face_weight(f) * s / Scalar(mesh_->face_size(f));
+        const Scalar share = face_weight(f) * squared_residual(x, f) / Scalar(mesh_->face_size(f));
         for (const Index v : mesh_->face(f))
             per_vertex[v] += share;
     }
@@ -158,15 +156,7 @@ Scalar FaceCentroidTerm::held_energy(std::span<const Scalar> x, std::span<const 
         const auto face = mesh_->face(f);
         if (std::any_of(face.begin(), face.end(), [&](Index v) { return is_free[v] != 0; }))
             continue;
-        const Vec3 c = face_centroid(*mesh_, x, f);
-        const Vec3 t = target(f);
-        Scalar s = 0;
-        for (int a = 0; a < 3; ++a)
-        {
-            const Scalar d = c[a] - t[a];
-            s += d * d;
-        }
-        sum += face_weight(f) * s;
+        sum += face_weight(f) * squared_residual(x, f);
     }
     return sum;
 }

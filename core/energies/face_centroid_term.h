@@ -140,6 +140,8 @@ public:
 private:
     //! Targets of their own (3 #F), stored from here on: before set_targets writes them.
     void store_targets();
+    //! |x_f - x0_f|^2: face f's centroid at x from its target.
+    Scalar squared_residual(std::span<const Scalar> x, Index f) const;
     template <bool FromSource, typename Also>
     Scalar face_residuals_from(const Scalar* x, const Index* faces, Index begin, Index end,
                                Scalar* residual, Also& also) const

@@ -151,24 +151,13 @@ std::vector<ConstraintSet> by_element(std::vector<ConstraintSet> sets)
 {
     for (ConstraintSet& s : sets)
     {
-        const auto sort = [](std::vector<Index>& elements, auto&... along) {
-            std::vector<size_t> k(elements.size());
-            for (size_t i = 0; i < k.size(); ++i)
-                k[i] = i;
-            std::sort(k.begin(), k.end(),
-                      [&](size_t a, size_t b) { return elements[a] < elements[b]; });
-            const auto permute = [&](auto& v) {
-                if (v.size() != k.size())
-                    return;
-                auto copy = v;
-                for (size_t i = 0; i < k.size(); ++i)
-                    v[i] = copy[k[i]];
-            };
-            (permute(along), ...);
-            permute(elements);
-        };
-        sort(s.vertices, s.targets, s.weights);
-        sort(s.faces, s.normals);
+        Index most = 0;
+        for (const Index i : s.vertices)
+            most = std::max(most, i);
+        for (const Index f : s.faces)
+            most = std::max(most, f);
+        const std::vector<Index> identity = test::all_indices(most + 1);
+        s = ordered_by(std::move(s), identity, identity);
     }
     return sets;
 }
