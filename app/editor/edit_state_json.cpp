@@ -12,9 +12,9 @@
 
 namespace meshfair::app {
 
-using Json = nlohmann::json;
-
 namespace {
+
+using Json = nlohmann::json;
 
 Scalar finite_of(const Json& j)
 {
