@@ -489,7 +489,8 @@ void EditorSession::sync_renderer()
         {
             const std::optional<size_t> k = set_named(name);
             renderer_.set_vertex_colors(weight_colors(k ? document_.sets[*k] : ConstraintSet{},
-                                                      document_.mesh.vertex_count()));
+                                                      document_.mesh.vertex_count(),
+                                                      state_.display.surface_color));
             state_.display.vertex_colors = true;
             synced_.weights = key;
         }

@@ -111,7 +111,8 @@ size_t paint_weights(ConstraintSet& set, const ConstraintSet* stroke_start,
     return changed;
 }
 
-std::vector<float> weight_colors(const ConstraintSet& set, Index vertex_count)
+std::vector<float> weight_colors(const ConstraintSet& set, Index vertex_count,
+                                 const std::array<float, 3>& surface, float opacity)
 {
     // Blender's weight colours: blue, cyan, green, yellow, red at 0, 1/4, 1/2, 3/4, 1.
     static constexpr std::array<std::array<float, 3>, 5> ramp = {
@@ -127,12 +128,16 @@ std::vector<float> weight_colors(const ConstraintSet& set, Index vertex_count)
         return c;
     };
     std::vector<float> rgb(3 * static_cast<size_t>(vertex_count));
-    const std::array<float, 3> zero = color(0);
     for (size_t i = 0; i < static_cast<size_t>(vertex_count); ++i)
-        std::copy(zero.begin(), zero.end(), rgb.begin() + static_cast<std::ptrdiff_t>(3 * i));
+        std::copy(surface.begin(), surface.end(), rgb.begin() + static_cast<std::ptrdiff_t>(3 * i));
     for (size_t k = 0; k < set.vertices.size(); ++k)
     {
-        const std::array<float, 3> c = color(map_value(set, k));
+        const Scalar w = map_value(set, k);
+        if (!(w > 0))
+            continue; // the surface as it is
+        std::array<float, 3> c = color(w);
+        for (size_t a = 0; a < 3; ++a)
+            c[a] = (1 - opacity) * surface[a] + opacity * c[a];
         std::copy(
             c.begin(), c.end(),
             rgb.begin() + static_cast<std::ptrdiff_t>(3 * static_cast<size_t>(set.vertices[k])));

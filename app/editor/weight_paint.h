@@ -38,8 +38,11 @@ size_t paint_weights(ConstraintSet& set, const ConstraintSet* stroke_start,
                      const Topology& topology, const DabReach& reach, PaintMode mode);
 
 //! \brief Per-vertex colours of a weight map over the mesh (RGB in [0, 1], 3 #V), as
-//! weight painting shows them: blue at 0 (and outside the set), through cyan, green and
-//! yellow, to red at 1.
-std::vector<float> weight_colors(const ConstraintSet& set, Index vertex_count);
+//! weight painting shows them: a translucent overlay over the surface's own colour
+//! (`surface`), so that the shape a smoothing stroke makes stays readable under it: the
+//! surface where the weight is 0 or the vertex is outside the set, and above 0 the
+//! surface mixed, `opacity` of it, with Blender's ramp (cyan, green, yellow, red at 1).
+std::vector<float> weight_colors(const ConstraintSet& set, Index vertex_count,
+                                 const std::array<float, 3>& surface, float opacity = 0.5f);
 
 } // namespace meshfair::app

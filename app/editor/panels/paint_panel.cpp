@@ -78,7 +78,8 @@ void paint_panel(const PanelContext& ui)
         ImGui::EndCombo();
     }
     ui.track("paint set");
-    ImGui::TextDisabled("weights show in colour (blue 0, red 1)\nwhile the paint tool (O) is on");
+    ImGui::TextDisabled(
+        "while painting (O), weights tint the\nsurface: blue low, green 1/2, red 1");
     if (changed && !(p == state.tools.paint))
         ui.give(SetPaintSettings{p});
 }

@@ -109,19 +109,27 @@ TEST_SUITE("Weight maps")
         CHECK(anchors.weights[1] == doctest::Approx(0.25));
     }
 
-    TEST_CASE("the colours run from blue at 0 (and outside the set) to red at 1")
+    TEST_CASE(
+        "the colours: the surface's own at 0 and outside the set, the ramp from green to red "
+        "over it, translucent")
     {
         const ConstraintSet s = vertex_set(ConstraintKind::Anchor, {1, 2, 3}, {0, 0.5, 1});
-        const std::vector<float> rgb = weight_colors(s, 5);
+        const std::array<float, 3> surface{0.8f, 0.6f, 0.4f};
+        const std::vector<float> rgb = weight_colors(s, 5, surface, 0.5f);
         REQUIRE(rgb.size() == 15);
         const auto at = [&](size_t v) {
             return std::vector<float>(rgb.begin() + 3 * v, rgb.begin() + 3 * v + 3);
         };
-        CHECK(at(0) == std::vector<float>{0, 0, 1});
-        CHECK(at(1) == std::vector<float>{0, 0, 1});
-        CHECK(at(2) == std::vector<float>{0, 1, 0});
-        CHECK(at(3) == std::vector<float>{1, 0, 0});
-        CHECK(at(4) == std::vector<float>{0, 0, 1});
+        const std::vector<float> own{0.8f, 0.6f, 0.4f};
+        CHECK(at(0) == own);
+        CHECK(at(1) == own);                                  // weight 0
+        CHECK(at(2) == std::vector<float>{0.4f, 0.8f, 0.2f}); // half green
+        CHECK(at(3) == std::vector<float>{0.9f, 0.3f, 0.2f}); // half red
+        CHECK(at(4) == own);
+        // Opaque, the ramp itself.
+        const std::vector<float> solid = weight_colors(s, 5, surface, 1.0f);
+        CHECK(std::vector<float>(solid.begin() + 9, solid.begin() + 12) ==
+              std::vector<float>{1, 0, 0});
     }
 
     TEST_CASE("a region's map: freedom 0 stays out, between 0 and 1 held by (1 - w) / w")
