@@ -104,12 +104,23 @@ RegionBorder region_border(const Document& d)
         if (on[i])
             border.vertices.push_back(static_cast<Index>(i));
     }
-    for (Index e = 0; e < d.topology.edge_count(); ++e)
+    // The line between the moving part and the ring: in each face with corners on both
+    // sides, its crossing edges (in order around it) joined in pairs at their midpoints.
+    std::vector<Index> crossing;
+    for (Index f = 0; f < d.mesh.face_count(); ++f)
     {
-        const Index a = d.topology.edge_vertices[2 * static_cast<size_t>(e)];
-        const Index b = d.topology.edge_vertices[2 * static_cast<size_t>(e) + 1];
-        if (on[static_cast<size_t>(a)] && on[static_cast<size_t>(b)])
-            border.edges.insert(border.edges.end(), {a, b});
+        const std::span<const Index> face = d.mesh.face(f);
+        crossing.clear();
+        for (size_t k = 0; k < face.size(); ++k)
+        {
+            const Index a = face[k], b = face[(k + 1) % face.size()];
+            if (in[static_cast<size_t>(a)] != in[static_cast<size_t>(b)])
+                crossing.insert(crossing.end(), {a, b});
+        }
+        // (Two crossings in a triangle; a polygon's 4 or more are paired as they come.)
+        for (size_t k = 0; k + 4 <= crossing.size(); k += 4)
+            border.crossings.insert(border.crossings.end(), crossing.begin() + k,
+                                    crossing.begin() + k + 4);
     }
     return border;
 }
@@ -174,8 +185,15 @@ std::vector<GlyphGroup> constraint_glyphs(const Document& d, const RegionBorder&
         ring.shape = GlyphGroup::Shape::Segments;
         ring.color = region_shown->color; // as the region's swatch in the list
         ring.size_px = 2.0f;
-        for (const Index v : border.edges)
-            add_point(ring.points, position(d, v));
+        const auto midpoint = [&](Index a, Index b) {
+            const Vec3 p = position(d, a), q = position(d, b);
+            return Vec3{0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2])};
+        };
+        for (size_t k = 0; k + 4 <= border.crossings.size(); k += 4)
+        {
+            add_point(ring.points, midpoint(border.crossings[k], border.crossings[k + 1]));
+            add_point(ring.points, midpoint(border.crossings[k + 2], border.crossings[k + 3]));
+        }
         GlyphGroup dots;
         dots.color = ring.color;
         dots.size_px = 4;

@@ -21,13 +21,18 @@ inline constexpr size_t kMaxGlyphsPerSet = 50000;
 //! the current face normals), and for regions the border ring: the fixed vertices next to
 //! a moving one, joined by the edges between them.
 //! \brief The border ring of the regions: the vertices outside every region that have a
-//! neighbour inside one (what stays put where the smoothing stops), and the edges between
-//! two of them (vertex pairs). Empty without regions. It depends on the sets only, so the
-//! editor computes it once per set change, not per frame.
+//! neighbour inside one (what stays put where the smoothing stops), and the line where the
+//! moving part meets them: in each face with vertices on both sides, a segment between the
+//! midpoints of two of its edges that cross from inside to outside (consecutive ones
+//! around the face), so that the line is unbroken however the ring's vertices are joined.
+//! Empty without regions. It depends on the sets only, so the editor computes it once per
+//! set change, not per frame.
 struct RegionBorder
 {
     std::vector<Index> vertices;
-    std::vector<Index> edges; //!< 2 per edge
+    //! 4 per segment: the two ends of the first crossing edge, then of the second; a
+    //! segment joins their midpoints.
+    std::vector<Index> crossings;
 };
 RegionBorder region_border(const Document& document);
 

@@ -4,6 +4,8 @@
 // interface (Dear ImGui laid out, never drawn) to the commands, with a RecordingRenderer.
 #include <doctest/doctest.h>
 
+#include <map>
+
 #include <algorithm>
 #include <condition_variable>
 #include <filesystem>
@@ -12,6 +14,7 @@
 #include <optional>
 #include <set>
 
+#include "app/editor/constraint_glyphs.h"
 #include "app/editor/editor_frame.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/interface_context.h"
@@ -629,6 +632,51 @@ TEST_SUITE("Editor sets")
         CHECK(region_holes(faces, grid, topology).size() == 25);
         CHECK(close_region_holes(faces, grid, topology) == 25);
         CHECK(faces.faces.size() == 15 * 15);
+    }
+
+    TEST_CASE("the border ring is one unbroken line where a region meets the fixed rest")
+    {
+        // A diamond-ish region on a triangulated grid: ring vertices joined only through
+        // faces, never an edge, at its slanted sides.
+        Mesh grid = test::open_grid(12, 12);
+        Mesh triangles;
+        triangles.positions = grid.positions;
+        for (Index f = 0; f < grid.face_count(); ++f)
+        {
+            const std::span<const Index> q = grid.face(f);
+            triangles.add_face(std::vector<Index>{q[0], q[1], q[2]});
+            triangles.add_face(std::vector<Index>{q[0], q[2], q[3]});
+        }
+        Document d = make_document(triangles, "diamond.obj");
+        ConstraintSet region;
+        region.kind = ConstraintKind::Region;
+        for (int j = 0; j <= 12; ++j)
+            for (int i = 0; i <= 12; ++i)
+                if (std::abs(i - 6) + std::abs(j - 6) <= 4)
+                    region.vertices.push_back(static_cast<Index>(j * 13 + i));
+        d.sets.push_back(region);
+        const RegionBorder border = region_border(d);
+        REQUIRE(!border.crossings.empty());
+        REQUIRE(border.crossings.size() % 4 == 0);
+        // Each crossing edge (an end inside, an end outside) is the end of exactly two
+        // segments: the line closes on itself without a gap.
+        std::map<std::pair<Index, Index>, int> ends;
+        for (size_t k = 0; k < border.crossings.size(); k += 2)
+        {
+            const Index a = border.crossings[k], b = border.crossings[k + 1];
+            ++ends[{std::min(a, b), std::max(a, b)}];
+        }
+        for (const auto& [edge, count] : ends)
+            CHECK(count == 2);
+        // And every edge that crosses is on it.
+        size_t crossing_edges = 0;
+        std::vector<char> in(static_cast<size_t>(d.mesh.vertex_count()), 0);
+        for (const Index v : region.vertices)
+            in[static_cast<size_t>(v)] = 1;
+        for (Index e = 0; e < d.topology.edge_count(); ++e)
+            crossing_edges += in[static_cast<size_t>(d.topology.edge_vertices[2 * e])] !=
+                              in[static_cast<size_t>(d.topology.edge_vertices[2 * e + 1])];
+        CHECK(ends.size() == crossing_edges);
     }
 
     TEST_CASE("a region made from a selection closes its holes, says how many, in one undo step")
