@@ -52,9 +52,7 @@ SelectionMask region_vertices(const Document& d)
 std::vector<NormalArrow> normal_arrows(const Document& d, const ConstraintSet& s, Scalar length)
 {
     std::vector<NormalArrow> arrows;
-    const bool normal = s.kind == ConstraintKind::Normal || s.kind == ConstraintKind::HardNormal ||
-                        s.kind == ConstraintKind::SoftNormal;
-    if (!normal || s.faces.empty())
+    if (!kind_info(s.kind).normals || s.faces.empty())
         return arrows;
     const Mesh& mesh = d.mesh;
     if (length < 0)

@@ -15,26 +15,9 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::pair<ConstraintKind, std::string_view> kKindNames[kConstraintKinds] = {
-    {ConstraintKind::Region, "region"},         {ConstraintKind::Pin, "pin"},
-    {ConstraintKind::Anchor, "anchor"},         {ConstraintKind::Centroid, "centroid"},
-    {ConstraintKind::Normal, "normal"},         {ConstraintKind::HardNormal, "hard_normal"},
-    {ConstraintKind::SoftNormal, "soft_normal"}};
-
 std::string quoted(const ConstraintSet& s)
 {
     return "'" + s.name + "'";
-}
-
-// The kind whose sets win over `kind`'s for an element in both (pins over anchors, hard
-// normals over soft ones), if any.
-std::optional<ConstraintKind> winner_over(ConstraintKind kind)
-{
-    if (kind == ConstraintKind::Anchor)
-        return ConstraintKind::Pin;
-    if (kind == ConstraintKind::SoftNormal)
-        return ConstraintKind::HardNormal;
-    return std::nullopt;
 }
 
 // The elements of every enabled set of `kind`, in set order, each once (the first set keeps
@@ -45,7 +28,7 @@ std::vector<Index> merged(const std::vector<ConstraintSet>& sets, ConstraintKind
 {
     std::vector<Index> out;
     std::unordered_map<Index, bool> seen;
-    if (const std::optional<ConstraintKind> winner = winner_over(kind))
+    if (const std::optional<ConstraintKind> winner = kind_info(kind).loses_to)
         for (const ConstraintSet& s : sets)
             if (s.kind == *winner && s.enabled)
                 for (const Index e : vertices ? s.vertices : s.faces)
@@ -142,48 +125,64 @@ std::vector<Vec3> merged_normals(const std::vector<ConstraintSet>& sets, Constra
 
 } // namespace
 
+std::span<const ConstraintKindInfo> constraint_kinds()
+{
+    using K = ConstraintKind;
+    using S = SolverSettings;
+    static const ConstraintKindInfo kinds[kConstraintKinds] = {
+        {K::Region, "region", "region", true, false, nullptr, true, {}, palette::kRegion},
+        {K::Pin, "pin", "pin", true, false, nullptr, false, {}, palette::kPin},
+        {K::Anchor, "anchor", "anchor", true, false, &S::anchor_mu, true, K::Pin, palette::kAnchor},
+        {K::Centroid,
+         "centroid",
+         "centroid",
+         false,
+         false,
+         &S::centroid_mu,
+         false,
+         {},
+         palette::kCentroid},
+        {K::Normal, "normal", "normal", false, true, &S::normal_mu, false, {}, palette::kNormal},
+        {K::HardNormal,
+         "hard_normal",
+         "hard normal",
+         false,
+         true,
+         nullptr,
+         false,
+         {},
+         palette::kHardNormal},
+        {K::SoftNormal, "soft_normal", "soft normal", false, true, &S::soft_normal_mu, false,
+         K::HardNormal, palette::kSoftNormal}};
+    return kinds;
+}
+
+const ConstraintKindInfo& kind_info(ConstraintKind kind)
+{
+    return constraint_kinds()[static_cast<size_t>(kind)];
+}
+
 std::string_view kind_name(ConstraintKind kind)
 {
-    for (const auto& [k, name] : kKindNames)
-        if (k == kind)
-            return name;
-    return {};
+    return kind_info(kind).name;
 }
 
 std::optional<ConstraintKind> kind_named(std::string_view name)
 {
-    for (const auto& [k, n] : kKindNames)
-        if (n == name)
-            return k;
+    for (const ConstraintKindInfo& k : constraint_kinds())
+        if (k.name == name)
+            return k.kind;
     return std::nullopt;
 }
 
 bool takes_vertices(ConstraintKind kind)
 {
-    return kind == ConstraintKind::Region || kind == ConstraintKind::Pin ||
-           kind == ConstraintKind::Anchor;
+    return kind_info(kind).vertices;
 }
 
 std::array<float, 3> default_color(ConstraintKind kind)
 {
-    switch (kind)
-    {
-        case ConstraintKind::Region:
-            return palette::kRegion;
-        case ConstraintKind::Pin:
-            return palette::kPin;
-        case ConstraintKind::Anchor:
-            return palette::kAnchor;
-        case ConstraintKind::Centroid:
-            return palette::kCentroid;
-        case ConstraintKind::Normal:
-            return palette::kNormal;
-        case ConstraintKind::HardNormal:
-            return palette::kHardNormal;
-        case ConstraintKind::SoftNormal:
-            return palette::kSoftNormal;
-    }
-    return {1, 1, 1};
+    return kind_info(kind).color;
 }
 
 SolverSettings with_pace(SolverSettings settings, const SolverSettings& pace)
@@ -216,7 +215,7 @@ std::optional<SolverSettings> dome_settings(const std::vector<ConstraintSet>& se
 
 bool takes_weight_map(ConstraintKind kind)
 {
-    return kind == ConstraintKind::Anchor || kind == ConstraintKind::Region;
+    return kind_info(kind).weight_map;
 }
 
 Scalar region_anchor_weight(Scalar freedom)
@@ -226,27 +225,15 @@ Scalar region_anchor_weight(Scalar freedom)
 
 bool takes_weight(ConstraintKind kind)
 {
-    return kind == ConstraintKind::Anchor || kind == ConstraintKind::Centroid ||
-           kind == ConstraintKind::Normal || kind == ConstraintKind::SoftNormal;
+    return kind_info(kind).weight != nullptr;
 }
 
 Scalar weight_of(const ConstraintSet& set, const SolverSettings& settings)
 {
     if (set.mu)
         return *set.mu;
-    switch (set.kind)
-    {
-        case ConstraintKind::Anchor:
-            return settings.anchor_mu;
-        case ConstraintKind::Centroid:
-            return settings.centroid_mu;
-        case ConstraintKind::Normal:
-            return settings.normal_mu;
-        case ConstraintKind::SoftNormal:
-            return settings.soft_normal_mu;
-        default:
-            return 1;
-    }
+    const ConstraintKindInfo& k = kind_info(set.kind);
+    return k.weight != nullptr ? settings.*k.weight : 1;
 }
 
 std::vector<std::string> constraint_notes(const std::vector<ConstraintSet>& sets)
@@ -270,7 +257,7 @@ std::vector<std::string> constraint_notes(const std::vector<ConstraintSet>& sets
             continue;
         }
         const char* what = s.vertices.empty() ? " faces" : " vertices";
-        const std::optional<ConstraintKind> winner = winner_over(s.kind);
+        const std::optional<ConstraintKind> winner = kind_info(s.kind).loses_to;
         for (size_t j = 0; j < sets.size(); ++j)
         {
             const ConstraintSet& t = sets[j];

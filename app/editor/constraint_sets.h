@@ -29,6 +29,27 @@ enum class ConstraintKind
 };
 inline constexpr int kConstraintKinds = 7;
 
+struct SolverSettings;
+
+//! \brief Everything the editor knows of a kind, in one row of one table (constraint_kinds):
+//! what the functions below read, so that a kind's facts are in one place.
+struct ConstraintKindInfo
+{
+    ConstraintKind kind;
+    std::string_view name;  //!< files' and scripts' word: "hard_normal"
+    std::string_view label; //!< the interface's: "hard normal"
+    bool vertices;          //!< its sets hold vertices (a region: vertices or faces)
+    bool normals;           //!< a normal kind: its faces carry directions (arrows, D tool)
+    //! The solver settings' weight of its sets without their own (none: no weight).
+    Scalar SolverSettings::*weight;
+    bool weight_map;                        //!< a map per vertex may be painted
+    std::optional<ConstraintKind> loses_to; //!< the kind that wins an element in both
+    std::array<float, 3> color;             //!< a new set's colour (palette.h)
+};
+//! The kinds, in ConstraintKind's order.
+std::span<const ConstraintKindInfo> constraint_kinds();
+const ConstraintKindInfo& kind_info(ConstraintKind kind);
+
 //! "region", "pin", "anchor", "centroid", "normal", "hard_normal", "soft_normal".
 std::string_view kind_name(ConstraintKind kind);
 std::optional<ConstraintKind> kind_named(std::string_view name);

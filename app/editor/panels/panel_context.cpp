@@ -110,24 +110,7 @@ const char* view_name(StandardView v)
 
 const char* kind_label(ConstraintKind kind)
 {
-    switch (kind)
-    {
-        case ConstraintKind::Region:
-            return "region";
-        case ConstraintKind::Pin:
-            return "pin";
-        case ConstraintKind::Anchor:
-            return "anchor";
-        case ConstraintKind::Centroid:
-            return "centroid";
-        case ConstraintKind::Normal:
-            return "normal";
-        case ConstraintKind::HardNormal:
-            return "hard normal";
-        case ConstraintKind::SoftNormal:
-            return "soft normal";
-    }
-    return "";
+    return kind_info(kind).label.data(); // (the table's literals end in a NUL)
 }
 
 std::string preparation_text(const SolverStatus& status, bool with_times)

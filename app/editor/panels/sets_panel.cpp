@@ -93,8 +93,7 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
                         {key + "mu"});
             ui.track(key + "mu");
         }
-        if (set.kind == ConstraintKind::Normal || set.kind == ConstraintKind::HardNormal ||
-            set.kind == ConstraintKind::SoftNormal)
+        if (kind_info(set.kind).normals)
         {
             // The set's mean normal: what its arrows average, and where a drag starts.
             const Vec3 d = set_mean_normal(ui.document.mesh, ui.document.mesh.positions, set);

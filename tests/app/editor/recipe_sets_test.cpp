@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app/editor/constraint_sets.h"
+#include "app/editor/panels/panel_context.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
 #include "tests/helpers.h"
@@ -39,6 +40,38 @@ void check_same_result(const Recipe& a, const Recipe& b, const Mesh& m)
 
 TEST_SUITE("Editor recipes")
 {
+    TEST_CASE("one row per constraint kind, in the kinds' order, each name read back")
+    {
+        const std::span<const ConstraintKindInfo> kinds = constraint_kinds();
+        REQUIRE(kinds.size() == static_cast<size_t>(kConstraintKinds));
+        for (size_t k = 0; k < kinds.size(); ++k)
+        {
+            const ConstraintKindInfo& info = kinds[k];
+            CAPTURE(std::string(info.name));
+            CHECK(static_cast<size_t>(info.kind) == k);
+            CHECK(kind_named(info.name) == info.kind);
+            CHECK(std::string(kind_label(info.kind)) == std::string(info.label));
+            // A kind takes vertices or faces, and a weight map only over vertices; the kind a
+            // set loses to takes the same elements.
+            CHECK((!info.weight_map || info.vertices));
+            CHECK((!info.normals || !info.vertices));
+            if (info.loses_to)
+                CHECK(kind_info(*info.loses_to).vertices == info.vertices);
+            SolverSettings settings;
+            if (info.weight != nullptr)
+            {
+                settings.*info.weight = 7;
+                ConstraintSet set;
+                set.kind = info.kind;
+                CHECK(weight_of(set, settings) == 7);
+                CHECK(takes_weight(info.kind));
+            }
+            else
+                CHECK_FALSE(takes_weight(info.kind));
+        }
+        CHECK_FALSE(kind_named("hard normal").has_value()); // the label is not the name
+    }
+
     TEST_CASE("the presets come into the editor whole and run there as they run from files")
     {
         Mesh m = test::icosphere(3);
