@@ -136,16 +136,6 @@ bool CommandExecutor::operator()(const cmd::SetUpAxis& c) const
     return true;
 }
 
-void EditorSession::apply_up_axis(UpAxis up)
-{
-    camera_.up_axis = up;
-    document_.up_axis = up;
-    camera_.set_view(StandardView::Front);
-    camera_.frame(document_.box, aspect());
-    if (!state_.offscreen) // remembered for the file (an offscreen run is a test's)
-        save_up_axis(up_axes_path(), document_.path, up);
-}
-
 bool CommandExecutor::operator()(const cmd::Toggle& c) const
 {
     DisplayOptions& o = st.display;

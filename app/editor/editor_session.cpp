@@ -296,6 +296,16 @@ void EditorSession::update()
     }
 }
 
+void EditorSession::apply_up_axis(UpAxis up)
+{
+    camera_.up_axis = up;
+    document_.up_axis = up;
+    camera_.set_view(StandardView::Front);
+    camera_.frame(document_.box, aspect());
+    if (!state_.offscreen) // remembered for the file (an offscreen run is a test's)
+        save_up_axis(up_axes_path(), document_.path, up);
+}
+
 void EditorSession::autosave(double interval_s)
 {
     document_.up_axis = camera_.up_axis;
@@ -390,6 +400,20 @@ void EditorSession::prepare_ui()
             state_.message = told;
             state_.message_is_error = false;
         }
+    }
+    const std::pair<std::uint64_t, std::uint64_t> directions_key{document_.versions.sets,
+                                                                 document_.versions.positions};
+    if (synced_.directions != directions_key &&
+        (!synced_.directions || synced_.directions->first != directions_key.first ||
+         !state_.solver.playing))
+    {
+        state_.set_directions.clear();
+        for (const ConstraintSet& s : document_.sets)
+            state_.set_directions.push_back(
+                kind_info(s.kind).normals
+                    ? set_mean_normal(document_.mesh, document_.mesh.positions, s)
+                    : Vec3{0, 0, 1});
+        synced_.directions = directions_key;
     }
     if (synced_.notes != document_.versions.set_members)
     {

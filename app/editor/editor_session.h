@@ -182,6 +182,8 @@ private:
             border, counts;
         std::optional<std::uint64_t> energy;
         std::optional<bool> plot_gradient; //!< asked of the solver (the plot shown)
+        //! The sets' and positions' versions of state_.set_directions.
+        std::optional<std::pair<std::uint64_t, std::uint64_t>> directions;
         int restarts = 0;       //!< the solver's restarts whose notes the status bar has told
         bool preparing = false; //!< the solver was preparing at the last frame
         //! The weight map shown (the sets' version and the set painted), if any.

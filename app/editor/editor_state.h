@@ -51,6 +51,10 @@ struct EditorState
     //! at each restart
     std::vector<std::string> run_notes;
     //! Each region set's enclosed elements it leaves out (region_holes), by set name.
+    //! Each set's mean normal (set_mean_normal; +z for sets of other kinds), in the sets'
+    //! order: computed when the sets change, or the shape while no run plays (a pass over
+    //! the set's faces, not one per frame of a run).
+    std::vector<Vec3> set_directions;
     std::vector<std::pair<std::string, std::size_t>> region_holes;
     bool playing = false;          //!< refreshed likewise
     bool energy_log_scale = false; //!< the energy plot's vertical axis

@@ -48,7 +48,7 @@ InvalidInputError json_syntax_error(const std::string& name, const std::string& 
 nlohmann::json recipe_to_json(const Recipe& recipe);
 //! \brief An index list as recipes write it: each run of 3 or more consecutive increasing
 //! indices as [first, last], the others as they are, in the list's order (a scan's region
-//! in its file's order is mostly runs: a tenth of the plain list's size, or less).
+//! in its file's order shrinks as far as that order keeps neighbours together).
 nlohmann::json index_list_json(std::span<const Index> indices);
 //! \brief An index list as recipes write it, read: integers and runs [first, last], each
 //! index in [0, 2147483647], no more than `budget` in all (taken from it).

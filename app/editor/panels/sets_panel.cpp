@@ -96,7 +96,8 @@ void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
         if (kind_info(set.kind).normals)
         {
             // The set's mean normal: what its arrows average, and where a drag starts.
-            const Vec3 d = set_mean_normal(ui.document.mesh, ui.document.mesh.positions, set);
+            const Vec3 d =
+                i < ui.state.set_directions.size() ? ui.state.set_directions[i] : Vec3{0, 0, 1};
             float direction[3] = {float(d[0]), float(d[1]), float(d[2])};
             ImGui::SetNextItemWidth(180);
             if (ImGui::DragFloat3("direction", direction, 0.01f, -1.0f, 1.0f, "%.2f"))

@@ -101,7 +101,8 @@ TEST_SUITE("Recovery")
     {
         const fs::path dir = test::temp_dir();
         const std::string root = (dir / "recovery").string();
-        const Document d = edited(dir);
+        Document d = edited(dir);
+        d.up_axis = UpAxis::NegZ; // (the file's up axis travels with its edit state)
         write_recovery(d, root);
         // Written by this (running) process: not offered.
         CHECK_FALSE(find_recovery(d.path, root));
@@ -124,6 +125,7 @@ TEST_SUITE("Recovery")
         CHECK((fresh.sets == d.sets));
         CHECK((fresh.solver == d.solver));
         CHECK(fresh.steps_from_base == 17);
+        CHECK(fresh.up_axis == UpAxis::NegZ);
         CHECK_FALSE(fresh.reproducible);
         CHECK(fresh.modified);
         remove_recovery(d.path, root);
