@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "app/bench/bench_common.h"
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 #include "app/editor/persistence.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/recipe/locality_run.h"

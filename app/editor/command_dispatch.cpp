@@ -10,6 +10,7 @@
 #include "app/editor/editor_session.h"
 #include "app/editor/editor_ui.h"
 #include "app/editor/user_files.h"
+#include "app/tools/selection_commands.h"
 #include "core/errors.h"
 #include "core/geometry/noise.h"
 

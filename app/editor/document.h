@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 #include "app/render/camera.h"
 #include "app/render/mesh_draw_data.h"
 #include "core/io/io.h"

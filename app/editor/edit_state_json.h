@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 
 //! \file
 //! \brief The editor's constraint sets and solver settings as JSON: what recovery files

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "app/editor/command.h"
+#include "app/edit/command.h"
 #include "app/editor/constraint_glyphs.h"
 #include "app/editor/document.h"
 #include "app/editor/editor_state.h"
 #include "app/editor/history.h"
-#include "app/editor/navigation.h"
+#include "app/tools/navigation.h"
 #include "app/editor/persistence.h"
 #include "app/editor/solver_controller.h"
 #include "app/render/renderer.h"

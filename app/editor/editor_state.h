@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "app/editor/command.h"
+#include "app/edit/command.h"
 #include "app/editor/live_solver.h"
 #include "app/render/camera.h"
 #include "app/render/renderer.h"

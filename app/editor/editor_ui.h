@@ -8,7 +8,7 @@
 #include <string_view>
 #include <vector>
 
-#include "app/editor/command.h"
+#include "app/edit/command.h"
 #include "app/editor/document.h"
 #include "app/editor/editor_state.h"
 #include "app/editor/file_browser.h"

@@ -8,23 +8,10 @@
 #include <string>
 #include <vector>
 
+#include "app/edit/edit_parts.h"
 #include "app/editor/document.h"
 
 namespace meshfair::app {
-
-//! The parts of a document the user edits, as flags: what a step may change.
-enum EditPart : unsigned
-{
-    kSelection = 1,      //!< the vertex and face selections
-    kSets = 2,           //!< the constraint sets
-    kSettings = 4,       //!< the solver settings
-    kPositions = 8,      //!< the current shape
-    kBasePositions = 16, //!< the shape the recipe starts from (changed by Apply)
-    //! Which elements the sets hold, their names and whether they solve: a version only
-    //! (the history keeps it with kSets), so that what depends on the sets' membership
-    //! alone (notes, a region's holes and border) is not redone when pins move.
-    kSetMembers = 32
-};
 
 //! \brief What undo restores: the parts of a document a step changed, each as it was
 //! before the step. Parts a step did not change are not kept, so a selection change costs

@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "app/editor/navigation.h"
+#include "app/tools/navigation.h"
 
 namespace meshfair::app {
 

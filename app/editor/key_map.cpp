@@ -169,6 +169,45 @@ std::optional<Command> command_for_key(const KeyChord& chord)
     return std::nullopt;
 }
 
+std::optional<KeyChord> key_for(const Command& command)
+{
+    for (const KeyBinding& b : key_bindings())
+        for (const KeyAction& k : b.keys)
+            if (k.command == command)
+                return k.chord;
+    return std::nullopt;
+}
+
+std::string chord_label(const KeyChord& chord)
+{
+    std::string text;
+    if (chord.mods.ctrl)
+        text += "Ctrl+";
+    if (chord.mods.shift)
+        text += "Shift+";
+    if (chord.mods.alt)
+        text += "Alt+";
+    static const std::pair<int, const char*> named[] = {{key::Space, "Space"},
+                                                        {key::Escape, "Esc"},
+                                                        {key::Enter, "Enter"},
+                                                        {key::Tab, "Tab"},
+                                                        {key::Home, "Home"},
+                                                        {key::End, "End"},
+                                                        {key::Delete, "Delete"},
+                                                        {key::KeypadDecimal, "Numpad ."},
+                                                        {key::KeypadEnter, "Numpad Enter"}};
+    for (const auto& [code, name] : named)
+        if (chord.key == code)
+            return text + name;
+    if (chord.key >= key::F1 && chord.key <= key::F12)
+        return text + "F" + std::to_string(chord.key - key::F1 + 1);
+    if (chord.key >= key::Keypad0 && chord.key <= key::Keypad9)
+        return text + "Numpad " + std::to_string(chord.key - key::Keypad0);
+    if (chord.key > key::Space && chord.key < 127)
+        return text + static_cast<char>(chord.key);
+    return text + "key " + std::to_string(chord.key);
+}
+
 std::optional<KeyChord> parse_key_chord(std::string_view text)
 {
     KeyChord chord;

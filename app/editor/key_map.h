@@ -4,9 +4,10 @@
 
 #include <optional>
 #include <span>
+#include <string>
 #include <vector>
 
-#include "app/editor/command.h"
+#include "app/edit/command.h"
 #include "app/editor/input_event.h"
 
 namespace meshfair::app {
@@ -34,5 +35,11 @@ std::span<const KeyBinding> key_bindings();
 //! \brief The command a key chord gives (modifiers must match exactly), if any: what the
 //! input router dispatches when a key reaches the view.
 std::optional<Command> command_for_key(const KeyChord& chord);
+
+//! The first key chord bound to `command` (an equal command), if any: the menus' shortcut.
+std::optional<KeyChord> key_for(const Command& command);
+
+//! A chord as a menu shows it: "Ctrl+Shift+Z", "F12", "Numpad 5", "Home", "Space".
+std::string chord_label(const KeyChord& chord);
 
 } // namespace meshfair::app

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 #include "app/editor/document.h"
 #include "app/editor/recovery.h"
 

@@ -4,9 +4,10 @@
 
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
-#include "app/editor/command.h"
+#include "app/edit/command.h"
 #include "app/editor/editor_session.h"
 #include "app/editor/input_event.h"
 
@@ -61,6 +62,17 @@ struct Script
 //! for JSON that does not parse).
 Script parse_script(const std::string& text, const std::string& name);
 Script read_script(const std::string& path);
+
+//! A script action's key and the options it takes beside it.
+struct ScriptActionSyntax
+{
+    std::string_view name;
+    std::vector<std::string_view> options;
+};
+//! \brief Every action a script may give, the commands' first (from their definitions,
+//! app/edit/command.h), then raw input: the dictionary of the script reader, its fuzzer's
+//! (tests/fuzz/dict/script.dict) and docs/editor.md's table.
+std::vector<ScriptActionSyntax> script_actions();
 
 //! Throws the InvalidInputError of a script's action: "'name': where: why".
 [[noreturn]] void script_error(const std::string& name, const std::string& where,

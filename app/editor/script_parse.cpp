@@ -5,6 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <variant>
 
 #include "app/editor/heat_map.h"
 #include "app/editor/key_map.h"
@@ -89,561 +93,574 @@ std::vector<InputEvent> typed(const std::string& text)
     return events;
 }
 
+// What an action's reader is given: the action's object, its action key and value.
+struct ActionArgs
+{
+    const Json& j;
+    const std::string& kind;
+    const Json& v;
+    const Reader& r;
+};
+
+// One script action: its key, the options it takes beside it, and its reader.
+struct ActionForm
+{
+    std::string_view name;
+    std::vector<std::string_view> options;
+    void (*read)(const ActionArgs&, ScriptAction&);
+};
+
+// --- Commands read from their definitions' fields (app/edit/operator.h).
+
+template <class C, class T>
+void read_field(const ActionArgs& x, const Field<C, T>& f, C& c)
+{
+    const bool own_value = f.place == FieldPlace::Value;
+    const std::string key = own_value ? x.kind : std::string(f.key);
+    if (!own_value && !x.j.contains(key))
+    {
+        if (f.place == FieldPlace::RequiredOption)
+            x.r.bad(x.kind, "needs '" + key + "': " + std::string(f.doc));
+        return;
+    }
+    const Json& v = own_value ? x.v : x.j[key];
+    T& out = c.*(f.member);
+    if constexpr (std::is_same_v<T, std::string>)
+    {
+        out = x.r.text(v, key);
+        if (!f.doc.empty() && out.empty())
+            x.r.bad(key, "must be " + std::string(f.doc));
+    }
+    else if constexpr (std::is_same_v<T, bool>)
+    {
+        if (!v.is_boolean())
+            x.r.bad(key, "must be true or false");
+        out = v.get<bool>();
+    }
+    else if constexpr (std::is_enum_v<T>)
+    {
+        const std::string name = x.r.text(v, key);
+        const std::optional<T> named = f.named(name);
+        if (!named)
+            x.r.bad(key, "'" + name + "' is not " + std::string(f.choices));
+        out = *named;
+    }
+    else if constexpr (std::is_same_v<T, Vec3>)
+    {
+        if (!v.is_array() || v.size() != 3)
+            x.r.bad(key, "must be [x, y, z]");
+        out = {x.r.number(v[0], key, -1e9, 1e9), x.r.number(v[1], key, -1e9, 1e9),
+               x.r.number(v[2], key, -1e9, 1e9)};
+        if (f.nonzero && out == Vec3{0, 0, 0})
+            x.r.bad(key, "must not be zero");
+    }
+    else if constexpr (std::is_integral_v<T>)
+        out = static_cast<T>(x.r.integer(v, key, static_cast<int>(f.lo), static_cast<int>(f.hi)));
+    else
+    {
+        static_assert(std::is_floating_point_v<T>, "a field's type the script reader knows");
+        out = x.r.number(v, key, f.lo, f.hi);
+    }
+}
+
+template <class C>
+void read_fields(const ActionArgs& x, ScriptAction& a)
+{
+    C c{};
+    // A command with no fields is given by `"action": true`.
+    if constexpr (std::tuple_size_v<std::decay_t<decltype(C::fields)>> == 0)
+    {
+        if (!x.v.is_boolean() || !x.v.template get<bool>())
+            x.r.bad(x.kind, "must be true");
+    }
+    std::apply([&](const auto&... f) { (read_field(x, f, c), ...); }, C::fields);
+    a.commands.push_back(std::move(c));
+}
+
+// --- Commands whose definitions give them a reader of their own (own_reader).
+
+void read_action(std::type_identity<cmd::Undo>, const ActionArgs& x, ScriptAction& a)
+{
+    a.repeat = x.r.integer(x.v, x.kind, 1, 100000);
+    a.commands.push_back(cmd::Undo{});
+}
+
+void read_action(std::type_identity<cmd::Redo>, const ActionArgs& x, ScriptAction& a)
+{
+    a.repeat = x.r.integer(x.v, x.kind, 1, 100000);
+    a.commands.push_back(cmd::Redo{});
+}
+
+// A standard view, or the whole mesh or the selection framed.
+void read_action(std::type_identity<cmd::SetView>, const ActionArgs& x, ScriptAction& a)
+{
+    const std::string name = x.r.text(x.v, x.kind);
+    if (name == "all")
+        a.commands.push_back(cmd::FrameAll{});
+    else if (name == "selection")
+        a.commands.push_back(cmd::FrameSelection{});
+    for (const auto& [view_name, view] : kViews)
+        if (name == view_name)
+            a.commands.push_back(cmd::SetView{view});
+    if (a.commands.empty())
+        x.r.bad(x.kind,
+                "'" + name + "' is not front, back, right, left, top, bottom, all or selection");
+}
+
+// "show_set" or "hide_set".
+void read_action(std::type_identity<cmd::ShowSet>, const ActionArgs& x, ScriptAction& a)
+{
+    a.commands.push_back(cmd::ShowSet{x.r.text(x.v, x.kind), x.kind == cmd::ShowSet::info.script});
+}
+
+void read_action(std::type_identity<cmd::Play>, const ActionArgs& x, ScriptAction& a)
+{
+    a.kind = Kind::Play;
+    a.count = x.r.integer(x.v, x.kind, 1, 1000000);
+}
+
+void read_action(std::type_identity<cmd::SetHeatMap>, const ActionArgs& x, ScriptAction& a)
+{
+    const std::string t = x.r.text(x.v, x.kind);
+    if (t != "off" && !heat_term_named(t))
+        x.r.bad(x.kind, "'" + t + "' is not off, total, edge, anchor, centroid or normal");
+    a.commands.push_back(cmd::SetHeatMap{heat_term_named(t)});
+    a.waits_for_heat = true;
+}
+
+// The Paint tool's settings for strokes given as input ("paint_settings"), or a stroke's
+// dabs ("paint"), which share the settings' keys.
+void read_paint(const ActionArgs& x, ScriptAction& a, bool stroke)
+{
+    const Reader& r = x.r;
+    const std::string& kind = x.kind;
+    const Json& v = x.v;
+    if (!v.is_object())
+        r.bad(kind, "must be an object");
+    std::vector<std::string> keys = {"set", "mode", "strength", "curve", "steps"};
+    if (stroke)
+        keys.insert(keys.end(), {"radius", "dabs"});
+    for (const auto& item : v.items())
+        if (std::find(keys.begin(), keys.end(), item.key()) == keys.end())
+            r.bad(kind + "." + item.key(), "is not a key of '" + kind + "'");
+    PaintSettings p;
+    if (v.contains("set"))
+        p.set = r.text(v["set"], kind + ".set");
+    if (v.contains("mode"))
+    {
+        const std::optional<PaintMode> mode = paint_mode_named(r.text(v["mode"], kind + ".mode"));
+        if (!mode)
+            r.bad(kind + ".mode", "must be \"relax\", \"add\", \"subtract\" or \"smooth\"");
+        p.mode = *mode;
+    }
+    if (v.contains("strength"))
+        p.strength = r.number(v["strength"], kind + ".strength", 0, 1);
+    if (v.contains("curve"))
+    {
+        const std::optional<FalloffCurve> curve =
+            falloff_curve_named(r.text(v["curve"], kind + ".curve"));
+        if (!curve)
+            r.bad(kind + ".curve",
+                  "must be \"smooth\", \"sphere\", \"root\", \"linear\", "
+                  "\"sharp\" or \"constant\"");
+        p.curve = *curve;
+    }
+    if (v.contains("steps"))
+        p.steps = r.integer(v["steps"], kind + ".steps", 1, 10000);
+    if (!stroke)
+    {
+        a.commands.push_back(cmd::SetPaintSettings{p});
+        return;
+    }
+    if (!v.contains("radius") || !v.contains("dabs") || !v["dabs"].is_array() || v["dabs"].empty())
+        r.bad(kind, "needs 'radius' and 'dabs': a list of centres [x, y, z]");
+    const Scalar radius = r.number(v["radius"], kind + ".radius", 1e-12, 1e12);
+    const std::string set = p.set.empty() ? std::string(kPaintSet) : p.set;
+    for (size_t k = 0; k < v["dabs"].size(); ++k)
+    {
+        const Json& c = v["dabs"][k];
+        const std::string key = kind + ".dabs[" + std::to_string(k) + "]";
+        if (!c.is_array() || c.size() != 3)
+            r.bad(key, "must be [x, y, z]");
+        a.commands.push_back(
+            cmd::PaintDab{set,
+                          p.mode,
+                          {r.number(c[0], key, -1e12, 1e12), r.number(c[1], key, -1e12, 1e12),
+                           r.number(c[2], key, -1e12, 1e12)},
+                          radius,
+                          p.strength,
+                          p.curve,
+                          p.steps});
+    }
+    a.interaction = "stroke"; // one undo step, as the tool's stroke
+}
+
+void read_action(std::type_identity<cmd::PaintDab>, const ActionArgs& x, ScriptAction& a)
+{
+    read_paint(x, a, true);
+}
+
+void read_action(std::type_identity<cmd::SetPaintSettings>, const ActionArgs& x, ScriptAction& a)
+{
+    read_paint(x, a, false);
+}
+
+// The solver settings an action gives: only its keys, merged into the settings of the
+// moment when the action is played (the action is read before any is played).
+void read_action(std::type_identity<cmd::SetSolverSettings>, const ActionArgs& x, ScriptAction& a)
+{
+    const Reader& r = x.r;
+    const std::string& kind = x.kind;
+    const Json& v = x.v;
+    if (!v.is_object())
+        r.bad(kind, "must be an object of solver settings");
+    SolverChange change;
+    SolverSettings& s = change.settings;
+    for (const auto& [key, value] : v.items())
+    {
+        const std::string k = "solver." + key;
+        change.keys.push_back(key);
+        if (key == "lambda")
+        {
+            if (value.is_string() && value.get<std::string>() == "optimal")
+                s.optimal_step = true;
+            else
+                s.lambda = r.number(value, k, 1e-9, 1e3);
+        }
+        else if (key == "iterations_per_frame")
+            s.iterations_per_frame = r.integer(value, k, 1, 100000);
+        else if (key == "steps_per_run")
+            s.steps_per_run = r.integer(value, k, 1, 100000);
+        else if (key == "until_converged")
+        {
+            if (!value.is_boolean())
+                r.bad(k, "must be true or false");
+            s.until_converged = value.get<bool>();
+        }
+        else if (key == "tolerance")
+            s.tolerance = r.number(value, k, 0, 1);
+        else if (key == "anchor_mu")
+            s.anchor_mu = r.number(value, k, 0, 1e12);
+        else if (key == "centroid_mu")
+            s.centroid_mu = r.number(value, k, 0, 1e12);
+        else if (key == "normal_mu")
+            s.normal_mu = r.number(value, k, 0, 1e12);
+        else if (key == "soft_normal_mu")
+            s.soft_normal_mu = r.number(value, k, 0, 1e12);
+        else if (key == "gamma")
+            s.gamma = r.number(value, k, 0, 1e12);
+        else if (key == "normal_smoothing_iterations")
+            s.normal_smoothing_iterations = r.integer(value, k, 0, 100000);
+        else if (key == "strength")
+        {
+            s.adaptive_smoothing = AdaptiveIterations{};
+            s.adaptive_smoothing->strength = r.number(value, k, 0, 10);
+        }
+        else if (key == "normal_smoothing_lambda")
+            s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
+        else if (key == "joint")
+        {
+            if (!value.is_boolean())
+                r.bad(k, "must be true or false");
+            s.joint = value.get<bool>();
+        }
+        else if (key == "denominator")
+        {
+            const std::string d = r.text(value, k);
+            if (d != "paper" && d != "exact")
+                r.bad(k, "must be \"paper\" or \"exact\"");
+            s.denominator = d == "exact" ? CentroidDenominator::Exact : CentroidDenominator::Paper;
+        }
+        else if (key == "normals")
+        {
+            const std::string n = r.text(value, k);
+            if (n != "initial" && n != "smoothed")
+                r.bad(k, "must be \"initial\" or \"smoothed\"");
+            s.normal_source = n == "smoothed" ? NormalSource::Smoothed : NormalSource::Initial;
+        }
+        else if (key == "method")
+        {
+            const std::string m = r.text(value, k);
+            if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg" && m != "implicit")
+                r.bad(k,
+                      "must be \"jacobi\", \"taubin\", \"direct\", \"cg\" or "
+                      "\"implicit\"");
+            s.method = m == "taubin"     ? Method::Taubin
+                       : m == "direct"   ? Method::Direct
+                       : m == "cg"       ? Method::ConjugateGradient
+                       : m == "implicit" ? Method::Implicit
+                                         : Method::Jacobi;
+        }
+        else if (key == "time")
+            s.time = r.number(value, k, 1e-6, 1e6);
+        else if (key == "taubin_mu")
+            s.taubin_mu = r.number(value, k, -1e3, 0);
+        else if (key == "keep_volume" || key == "prevent_flips")
+        {
+            if (!value.is_boolean())
+                r.bad(k, "must be true or false");
+            (key == "keep_volume" ? s.keep_volume : s.prevent_flips) = value.get<bool>();
+        }
+        else if (key == "bilateral" || key == "falloff" || key == "bending")
+        {
+            // A recipe's object (docs/recipe.md), or null for none.
+            if (!value.is_null())
+                try
+                {
+                    if (key == "bilateral")
+                        s.bilateral = parse_bilateral(value, k);
+                    else if (key == "bending")
+                        s.bending = parse_bending(value, k);
+                    else
+                        s.falloff = parse_falloff(value, k);
+                }
+                catch (const RecipeError& e)
+                {
+                    r.bad(e.key(), e.message());
+                }
+        }
+        else
+            r.bad(k, "is not a solver setting");
+    }
+    // The settings of the moment with these keys: merged when the action is played.
+    a.keys = change.keys;
+    a.commands.push_back(cmd::SetSolverSettings{change.settings});
+}
+
+// --- Raw input, as a person gives it (no command of its own).
+
+MouseButton read_button(const ActionArgs& x)
+{
+    if (!x.j.contains("button"))
+        return MouseButton::Left;
+    const std::string b = x.r.text(x.j["button"], "button");
+    if (b == "left")
+        return MouseButton::Left;
+    if (b == "middle")
+        return MouseButton::Middle;
+    if (b == "right")
+        return MouseButton::Right;
+    x.r.bad("button", "'" + b + "' is not left, middle or right");
+}
+
+Modifiers read_modifiers(const ActionArgs& x)
+{
+    Modifiers mods;
+    if (!x.j.contains("modifiers"))
+        return mods;
+    if (!x.j["modifiers"].is_array())
+        x.r.bad("modifiers", "must be a list of \"shift\", \"ctrl\", \"alt\"");
+    for (const Json& m : x.j["modifiers"])
+    {
+        const std::string s = x.r.text(m, "modifiers");
+        if (s == "shift")
+            mods.shift = true;
+        else if (s == "ctrl")
+            mods.ctrl = true;
+        else if (s == "alt")
+            mods.alt = true;
+        else
+            x.r.bad("modifiers", "'" + s + "' is not shift, ctrl or alt");
+    }
+    return mods;
+}
+
+const ActionForm kInputForms[] = {
+    {"drag",
+     {"button", "modifiers"},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         a.mods = read_modifiers(x);
+         if (!x.v.is_array() || x.v.size() < 2)
+             x.r.bad(x.kind, "must be a list of at least 2 points [x, y]");
+         std::vector<ScreenPoint> points;
+         for (const Json& p : x.v)
+             points.push_back(x.r.point(p, x.kind));
+         a.events = drag_events(points, read_button(x), a.mods);
+     }},
+    {"click",
+     {"modifiers"},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         a.mods = read_modifiers(x);
+         const ScreenPoint p = x.r.point(x.v, x.kind);
+         a.events = drag_events({p, p}, MouseButton::Left, a.mods);
+         a.events.erase(a.events.begin() + 2); // no move between the press and the release
+     }},
+    {"move",
+     {},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         a.events = {input_event(InputEvent::Type::MouseMove, x.r.point(x.v, x.kind))};
+     }},
+    {"scroll",
+     {"at"},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         if (!x.j.contains("at"))
+             x.r.bad(x.kind, "needs 'at': the cursor [x, y]");
+         const ScreenPoint at = x.r.point(x.j["at"], "at");
+         InputEvent wheel = input_event(InputEvent::Type::Scroll, at);
+         wheel.amount = x.r.number(x.v, x.kind, -100, 100);
+         a.events = {input_event(InputEvent::Type::MouseMove, at), wheel};
+     }},
+    {"key",
+     {},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         const std::string text = x.r.text(x.v, x.kind);
+         const std::optional<KeyChord> chord = parse_key_chord(text);
+         if (!chord)
+             x.r.bad(x.kind,
+                     "'" + text + "' is not a key (\"ctrl+z\", \"space\", \"f1\", \"kp_5\")");
+         a.events = key_events(*chord);
+     }},
+    {"type",
+     {},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Input;
+         a.events = typed(x.r.text(x.v, x.kind));
+     }},
+    {"click_widget",
+     {"modifiers"},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::ClickWidget;
+         a.mods = read_modifiers(x);
+         a.text = x.r.text(x.v, x.kind);
+         if (a.text.empty())
+             x.r.bad(x.kind, "must be a widget's label");
+     }},
+    {"frames",
+     {},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Frames;
+         a.count = x.r.integer(x.v, x.kind, 1, 10000);
+     }},
+    // The frame drawn so far, as the window shows it (not the Screenshot command, whose
+    // frame is the next one drawn).
+    {"screenshot",
+     {},
+     [](const ActionArgs& x, ScriptAction& a) {
+         a.kind = Kind::Screenshot;
+         a.text = x.r.text(x.v, x.kind);
+         if (a.text.empty())
+             x.r.bad(x.kind, "must be a file name");
+         a.writes = true;
+     }},
+};
+
+// The form of command C's script action(s), from its definition: its fields' options,
+// and its fields or its own reader.
+template <class C>
+void add_command_forms(std::vector<ActionForm>& forms)
+{
+    if constexpr (!C::info.script.empty())
+    {
+        ActionForm form{C::info.script, {}, nullptr};
+        if constexpr (C::info.own_reader)
+            form.read = [](const ActionArgs& x, ScriptAction& a) {
+                read_action(std::type_identity<C>{}, x, a);
+                a.writes = C::info.writes;
+            };
+        else
+        {
+            static_assert(HasFields<C>, "a command a script gives has fields or its own reader");
+            std::apply(
+                [&](const auto&... f) {
+                    ((f.place != FieldPlace::Value ? form.options.push_back(f.key) : void()), ...);
+                },
+                C::fields);
+            form.read = [](const ActionArgs& x, ScriptAction& a) {
+                read_fields<C>(x, a);
+                a.writes = C::info.writes;
+            };
+        }
+        forms.push_back(form);
+        if constexpr (!C::info.script_alias.empty())
+        {
+            form.name = C::info.script_alias;
+            forms.push_back(form);
+        }
+    }
+}
+
+template <size_t... I>
+void add_all_command_forms(std::vector<ActionForm>& forms, std::index_sequence<I...>)
+{
+    (add_command_forms<std::variant_alternative_t<I, Command>>(forms), ...);
+}
+
+// Every script action: the commands' (in the order of Command), then raw input.
+const std::vector<ActionForm>& action_forms()
+{
+    static const std::vector<ActionForm> forms = [] {
+        std::vector<ActionForm> all;
+        add_all_command_forms(all, std::make_index_sequence<std::variant_size_v<Command>>{});
+        all.insert(all.end(), std::begin(kInputForms), std::end(kInputForms));
+        return all;
+    }();
+    return forms;
+}
+
 ScriptAction parse_action(const Json& j, const Reader& r)
 {
     ScriptAction a;
     a.where = r.where;
     if (!j.is_object())
         script_error(r.name, r.where, "an action must be a JSON object");
-    static const char* const kinds[] = {"tool",
-                                        "elements",
-                                        "through",
-                                        "brush_radius",
-                                        "drag",
-                                        "click",
-                                        "scroll",
-                                        "move",
-                                        "key",
-                                        "type",
-                                        "click_widget",
-                                        "frames",
-                                        "select",
-                                        "undo",
-                                        "redo",
-                                        "view",
-                                        "projection",
-                                        "screenshot",
-                                        "save_mesh",
-                                        "create_set",
-                                        "delete_set",
-                                        "show_set",
-                                        "hide_set",
-                                        "select_set",
-                                        "move_pins",
-                                        "rename_set",
-                                        "normal_direction",
-                                        "solver",
-                                        "step",
-                                        "play",
-                                        "reset",
-                                        "apply",
-                                        "export_recipe",
-                                        "import_recipe",
-                                        "noise",
-                                        "heat_map",
-                                        "autosave",
-                                        "recover",
-                                        "up_axis",
-                                        "paint",
-                                        "paint_settings",
-                                        "preset",
-                                        "solve",
-                                        "cancel_preparation"};
-    // Options, and the actions each belongs to.
-    static const std::pair<const char*, const char*> options[] = {
-        {"name", "create_set rename_set"},
-        {"close_holes", "create_set"},
-        {"offset", "move_pins"},
-        {"direction", "normal_direction"},
-        {"seed", "noise"},
-        {"modifiers", "drag click click_widget"},
-        {"button", "drag"},
-        {"at", "scroll"}};
-    std::string kind;
+    const std::vector<ActionForm>& forms = action_forms();
+    const auto is_option = [&](std::string_view key) {
+        return std::any_of(forms.begin(), forms.end(), [&](const ActionForm& f) {
+            return std::find(f.options.begin(), f.options.end(), key) != f.options.end();
+        });
+    };
+    const ActionForm* form = nullptr;
     for (const auto& item : j.items())
     {
         const std::string& key = item.key();
-        if (std::any_of(std::begin(options), std::end(options),
-                        [&](const auto& o) { return key == o.first; }))
+        if (is_option(key))
             continue;
-        if (std::find(std::begin(kinds), std::end(kinds), key) == std::end(kinds))
+        const auto named = std::find_if(forms.begin(), forms.end(),
+                                        [&](const ActionForm& f) { return f.name == key; });
+        if (named == forms.end())
             r.bad(key, "is not an action or an action's option");
-        if (!kind.empty())
-            script_error(r.name, r.where, "has two actions ('" + kind + "' and '" + key + "')");
-        kind = key;
+        if (form)
+            script_error(r.name, r.where,
+                         "has two actions ('" + std::string(form->name) + "' and '" + key + "')");
+        form = &*named;
     }
-    if (kind.empty())
+    if (!form)
         script_error(r.name, r.where, "names no action");
-    for (const auto& [option, owners] : options)
+    // An option beside an action that does not take it: "only drag or click takes 'button'".
+    for (const auto& item : j.items())
     {
-        const std::string list = std::string(" ") + owners + " ";
-        if (j.contains(option) && list.find(" " + kind + " ") == std::string::npos)
-        {
-            // "only drag or click takes 'button'"
-            std::string who, word;
-            for (size_t p = 0, q; p < std::string(owners).size(); p = q + 1)
-            {
-                q = std::string(owners).find(' ', p);
-                word = std::string(owners).substr(p, q == std::string::npos ? q : q - p);
-                who += (who.empty() ? "" : q == std::string::npos ? " or " : ", ") + word;
-                if (q == std::string::npos)
-                    break;
-            }
-            r.bad(option, "only " + who + " takes '" + option + "'");
-        }
+        const std::string& key = item.key();
+        if (key == form->name ||
+            std::find(form->options.begin(), form->options.end(), key) != form->options.end())
+            continue;
+        std::vector<std::string_view> owners;
+        for (const ActionForm& f : forms)
+            if (std::find(f.options.begin(), f.options.end(), key) != f.options.end())
+                owners.push_back(f.name);
+        std::string who;
+        for (size_t k = 0; k < owners.size(); ++k)
+            who += (k == 0 ? "" : k + 1 == owners.size() ? " or " : ", ") + std::string(owners[k]);
+        r.bad(key, "only " + who + " takes '" + key + "'");
     }
-    const Json& v = j[kind];
-    if (j.contains("modifiers"))
-    {
-        if (!j["modifiers"].is_array())
-            r.bad("modifiers", "must be a list of \"shift\", \"ctrl\", \"alt\"");
-        for (const Json& m : j["modifiers"])
-        {
-            const std::string s = r.text(m, "modifiers");
-            if (s == "shift")
-                a.mods.shift = true;
-            else if (s == "ctrl")
-                a.mods.ctrl = true;
-            else if (s == "alt")
-                a.mods.alt = true;
-            else
-                r.bad("modifiers", "'" + s + "' is not shift, ctrl or alt");
-        }
-    }
-    MouseButton button = MouseButton::Left;
-    if (j.contains("button"))
-    {
-        const std::string b = r.text(j["button"], "button");
-        if (b == "left")
-            button = MouseButton::Left;
-        else if (b == "middle")
-            button = MouseButton::Middle;
-        else if (b == "right")
-            button = MouseButton::Right;
-        else
-            r.bad("button", "'" + b + "' is not left, middle or right");
-    }
-    const auto vector = [&](const char* key) {
-        const Json& x = j[key];
-        if (!x.is_array() || x.size() != 3)
-            r.bad(key, "must be [x, y, z]");
-        return Vec3{r.number(x[0], key, -1e9, 1e9), r.number(x[1], key, -1e9, 1e9),
-                    r.number(x[2], key, -1e9, 1e9)};
-    };
-    const auto count = [&](int lo, int hi) { return r.integer(v, kind, lo, hi); };
-    const auto command = [&](Command c) { a.commands.push_back(std::move(c)); };
-    using namespace cmd;
-
-    if (kind == "tool")
-    {
-        const std::string t = r.text(v, kind);
-        const std::optional<ToolKind> tool = tool_named(t);
-        if (!tool)
-            r.bad(kind, "'" + t +
-                            "' is not navigate, click, brush, rectangle, lasso, move_pins, "
-                            "aim_normals or paint");
-        command(SetTool{*tool});
-    }
-    else if (kind == "elements")
-    {
-        const std::string e = r.text(v, kind);
-        if (e != "vertices" && e != "faces")
-            r.bad(kind, "must be \"vertices\" or \"faces\"");
-        command(SetElements{e == "faces" ? ElementKind::Faces : ElementKind::Vertices});
-    }
-    else if (kind == "through")
-    {
-        if (!v.is_boolean())
-            r.bad(kind, "must be true or false");
-        command(SetThrough{v.get<bool>()});
-    }
-    else if (kind == "brush_radius")
-        command(SetBrushRadius{r.number(v, kind, 1, 1000)});
-    else if (kind == "drag")
-    {
-        a.kind = Kind::Input;
-        if (!v.is_array() || v.size() < 2)
-            r.bad(kind, "must be a list of at least 2 points [x, y]");
-        std::vector<ScreenPoint> points;
-        for (const Json& p : v)
-            points.push_back(r.point(p, kind));
-        a.events = drag_events(points, button, a.mods);
-    }
-    else if (kind == "click")
-    {
-        a.kind = Kind::Input;
-        const ScreenPoint p = r.point(v, kind);
-        a.events = drag_events({p, p}, MouseButton::Left, a.mods);
-        a.events.erase(a.events.begin() + 2); // no move between the press and the release
-    }
-    else if (kind == "move")
-    {
-        a.kind = Kind::Input;
-        a.events = {input_event(InputEvent::Type::MouseMove, r.point(v, kind))};
-    }
-    else if (kind == "scroll")
-    {
-        a.kind = Kind::Input;
-        if (!j.contains("at"))
-            r.bad(kind, "needs 'at': the cursor [x, y]");
-        const ScreenPoint at = r.point(j["at"], "at");
-        InputEvent wheel = input_event(InputEvent::Type::Scroll, at);
-        wheel.amount = r.number(v, kind, -100, 100);
-        a.events = {input_event(InputEvent::Type::MouseMove, at), wheel};
-    }
-    else if (kind == "key")
-    {
-        a.kind = Kind::Input;
-        const std::string text = r.text(v, kind);
-        const std::optional<KeyChord> chord = parse_key_chord(text);
-        if (!chord)
-            r.bad(kind, "'" + text + "' is not a key (\"ctrl+z\", \"space\", \"f1\", \"kp_5\")");
-        a.events = key_events(*chord);
-    }
-    else if (kind == "type")
-    {
-        a.kind = Kind::Input;
-        a.events = typed(r.text(v, kind));
-    }
-    else if (kind == "click_widget")
-    {
-        a.kind = Kind::ClickWidget;
-        a.text = r.text(v, kind);
-        if (a.text.empty())
-            r.bad(kind, "must be a widget's label");
-    }
-    else if (kind == "frames")
-    {
-        a.kind = Kind::Frames;
-        a.count = count(1, 10000);
-    }
-    else if (kind == "select")
-    {
-        const std::string c = r.text(v, kind);
-        const std::optional<SelectionCommand> sc = selection_command_named(c);
-        if (!sc)
-            r.bad(kind,
-                  "'" + c + "' is not all, clear, invert, grow, shrink, connected or boundary");
-        command(RunSelection{*sc});
-    }
-    else if (kind == "undo" || kind == "redo")
-    {
-        a.repeat = count(1, 100000);
-        command(kind == "undo" ? Command(Undo{}) : Command(Redo{}));
-    }
-    else if (kind == "view")
-    {
-        const std::string name = r.text(v, kind);
-        if (name == "all")
-            command(FrameAll{});
-        else if (name == "selection")
-            command(FrameSelection{});
-        else
-        {
-            for (const auto& [view_name, view] : kViews)
-                if (name == view_name)
-                    command(SetView{view});
-            if (a.commands.empty())
-                r.bad(kind, "'" + name +
-                                "' is not front, back, right, left, top, bottom, all or selection");
-        }
-    }
-    else if (kind == "up_axis")
-    {
-        const std::optional<UpAxis> up = up_axis_named(r.text(v, kind));
-        if (!up)
-            r.bad(kind, "must be \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"");
-        command(SetUpAxis{*up});
-    }
-    else if (kind == "projection")
-    {
-        const std::string p = r.text(v, kind);
-        if (p != "perspective" && p != "orthographic")
-            r.bad(kind, "must be \"perspective\" or \"orthographic\"");
-        command(SetProjection{p == "orthographic" ? Projection::Orthographic
-                                                  : Projection::Perspective});
-    }
-    else if (kind == "create_set")
-    {
-        const std::string k = r.text(v, kind);
-        if (!kind_named(k))
-            r.bad(kind, "'" + k +
-                            "' is not region, pin, anchor, centroid, normal, hard_normal or "
-                            "soft_normal");
-        bool close_holes = true;
-        if (j.contains("close_holes"))
-        {
-            if (!j["close_holes"].is_boolean())
-                r.bad("close_holes", "must be true or false");
-            close_holes = j["close_holes"].get<bool>();
-        }
-        command(CreateSet{*kind_named(k), j.contains("name") ? r.text(j["name"], "name") : "",
-                          close_holes});
-    }
-    else if (kind == "delete_set")
-        command(DeleteSet{r.text(v, kind)});
-    else if (kind == "show_set" || kind == "hide_set")
-        command(ShowSet{r.text(v, kind), kind == "show_set"});
-    else if (kind == "select_set")
-        command(SelectSet{r.text(v, kind)});
-    else if (kind == "rename_set")
-    {
-        if (!j.contains("name"))
-            r.bad(kind, "needs 'name': the new name");
-        command(RenameSet{r.text(v, kind), r.text(j["name"], "name")});
-    }
-    else if (kind == "move_pins")
-    {
-        if (!j.contains("offset"))
-            r.bad(kind, "needs 'offset': [x, y, z]");
-        command(MovePins{r.text(v, kind), vector("offset")});
-    }
-    else if (kind == "normal_direction")
-    {
-        if (!j.contains("direction"))
-            r.bad(kind, "needs 'direction': [x, y, z]");
-        const Vec3 d = vector("direction");
-        if (d == Vec3{0, 0, 0})
-            r.bad("direction", "must not be zero");
-        command(SetNormalDirection{r.text(v, kind), d});
-    }
-    else if (kind == "preset")
-        command(ApplyPreset{r.text(v, kind)});
-    else if (kind == "paint" || kind == "paint_settings")
-    {
-        // A stroke's dabs ("paint"), or the Paint tool's settings for strokes given as input.
-        if (!v.is_object())
-            r.bad(kind, "must be an object");
-        const bool stroke = kind == "paint";
-        std::vector<std::string> keys = {"set", "mode", "strength", "curve", "steps"};
-        if (stroke)
-            keys.insert(keys.end(), {"radius", "dabs"});
-        for (const auto& item : v.items())
-            if (std::find(keys.begin(), keys.end(), item.key()) == keys.end())
-                r.bad(kind + "." + item.key(), "is not a key of '" + kind + "'");
-        PaintSettings p;
-        if (v.contains("set"))
-            p.set = r.text(v["set"], kind + ".set");
-        if (v.contains("mode"))
-        {
-            const std::optional<PaintMode> mode =
-                paint_mode_named(r.text(v["mode"], kind + ".mode"));
-            if (!mode)
-                r.bad(kind + ".mode", "must be \"relax\", \"add\", \"subtract\" or \"smooth\"");
-            p.mode = *mode;
-        }
-        if (v.contains("strength"))
-            p.strength = r.number(v["strength"], kind + ".strength", 0, 1);
-        if (v.contains("curve"))
-        {
-            const std::optional<FalloffCurve> curve =
-                falloff_curve_named(r.text(v["curve"], kind + ".curve"));
-            if (!curve)
-                r.bad(kind + ".curve",
-                      "must be \"smooth\", \"sphere\", \"root\", \"linear\", "
-                      "\"sharp\" or \"constant\"");
-            p.curve = *curve;
-        }
-        if (v.contains("steps"))
-        {
-            p.steps = r.integer(v["steps"], kind + ".steps", 1, 10000);
-        }
-        if (!stroke)
-            command(SetPaintSettings{p});
-        else
-        {
-            if (!v.contains("radius") || !v.contains("dabs") || !v["dabs"].is_array() ||
-                v["dabs"].empty())
-                r.bad(kind, "needs 'radius' and 'dabs': a list of centres [x, y, z]");
-            const Scalar radius = r.number(v["radius"], kind + ".radius", 1e-12, 1e12);
-            const std::string set = p.set.empty() ? std::string(kPaintSet) : p.set;
-            for (size_t k = 0; k < v["dabs"].size(); ++k)
-            {
-                const Json& c = v["dabs"][k];
-                const std::string key = kind + ".dabs[" + std::to_string(k) + "]";
-                if (!c.is_array() || c.size() != 3)
-                    r.bad(key, "must be [x, y, z]");
-                command(
-                    PaintDab{set,
-                             p.mode,
-                             {r.number(c[0], key, -1e12, 1e12), r.number(c[1], key, -1e12, 1e12),
-                              r.number(c[2], key, -1e12, 1e12)},
-                             radius,
-                             p.strength,
-                             p.curve,
-                             p.steps});
-            }
-            a.interaction = "stroke"; // one undo step, as the tool's stroke
-        }
-    }
-    else if (kind == "solver")
-    {
-        if (!v.is_object())
-            r.bad(kind, "must be an object of solver settings");
-        SolverChange change;
-        SolverSettings& s = change.settings;
-        for (const auto& [key, value] : v.items())
-        {
-            const std::string k = "solver." + key;
-            change.keys.push_back(key);
-            if (key == "lambda")
-            {
-                if (value.is_string() && value.get<std::string>() == "optimal")
-                    s.optimal_step = true;
-                else
-                    s.lambda = r.number(value, k, 1e-9, 1e3);
-            }
-            else if (key == "iterations_per_frame")
-                s.iterations_per_frame = r.integer(value, k, 1, 100000);
-            else if (key == "steps_per_run")
-                s.steps_per_run = r.integer(value, k, 1, 100000);
-            else if (key == "until_converged")
-            {
-                if (!value.is_boolean())
-                    r.bad(k, "must be true or false");
-                s.until_converged = value.get<bool>();
-            }
-            else if (key == "tolerance")
-                s.tolerance = r.number(value, k, 0, 1);
-            else if (key == "anchor_mu")
-                s.anchor_mu = r.number(value, k, 0, 1e12);
-            else if (key == "centroid_mu")
-                s.centroid_mu = r.number(value, k, 0, 1e12);
-            else if (key == "normal_mu")
-                s.normal_mu = r.number(value, k, 0, 1e12);
-            else if (key == "soft_normal_mu")
-                s.soft_normal_mu = r.number(value, k, 0, 1e12);
-            else if (key == "gamma")
-                s.gamma = r.number(value, k, 0, 1e12);
-            else if (key == "normal_smoothing_iterations")
-                s.normal_smoothing_iterations = r.integer(value, k, 0, 100000);
-            else if (key == "strength")
-            {
-                s.adaptive_smoothing = AdaptiveIterations{};
-                s.adaptive_smoothing->strength = r.number(value, k, 0, 10);
-            }
-            else if (key == "normal_smoothing_lambda")
-                s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
-            else if (key == "joint")
-            {
-                if (!value.is_boolean())
-                    r.bad(k, "must be true or false");
-                s.joint = value.get<bool>();
-            }
-            else if (key == "denominator")
-            {
-                const std::string d = r.text(value, k);
-                if (d != "paper" && d != "exact")
-                    r.bad(k, "must be \"paper\" or \"exact\"");
-                s.denominator =
-                    d == "exact" ? CentroidDenominator::Exact : CentroidDenominator::Paper;
-            }
-            else if (key == "normals")
-            {
-                const std::string n = r.text(value, k);
-                if (n != "initial" && n != "smoothed")
-                    r.bad(k, "must be \"initial\" or \"smoothed\"");
-                s.normal_source = n == "smoothed" ? NormalSource::Smoothed : NormalSource::Initial;
-            }
-            else if (key == "method")
-            {
-                const std::string m = r.text(value, k);
-                if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg" && m != "implicit")
-                    r.bad(k,
-                          "must be \"jacobi\", \"taubin\", \"direct\", \"cg\" or "
-                          "\"implicit\"");
-                s.method = m == "taubin"     ? Method::Taubin
-                           : m == "direct"   ? Method::Direct
-                           : m == "cg"       ? Method::ConjugateGradient
-                           : m == "implicit" ? Method::Implicit
-                                             : Method::Jacobi;
-            }
-            else if (key == "time")
-                s.time = r.number(value, k, 1e-6, 1e6);
-            else if (key == "taubin_mu")
-                s.taubin_mu = r.number(value, k, -1e3, 0);
-            else if (key == "keep_volume" || key == "prevent_flips")
-            {
-                if (!value.is_boolean())
-                    r.bad(k, "must be true or false");
-                (key == "keep_volume" ? s.keep_volume : s.prevent_flips) = value.get<bool>();
-            }
-            else if (key == "bilateral" || key == "falloff" || key == "bending")
-            {
-                // A recipe's object (docs/recipe.md), or null for none.
-                if (!value.is_null())
-                    try
-                    {
-                        if (key == "bilateral")
-                            s.bilateral = parse_bilateral(value, k);
-                        else if (key == "bending")
-                            s.bending = parse_bending(value, k);
-                        else
-                            s.falloff = parse_falloff(value, k);
-                    }
-                    catch (const RecipeError& e)
-                    {
-                        r.bad(e.key(), e.message());
-                    }
-            }
-            else
-                r.bad(k, "is not a solver setting");
-        }
-        // The settings of the moment with these keys: merged when the action is played.
-        a.keys = change.keys;
-        command(SetSolverSettings{change.settings});
-    }
-    else if (kind == "step")
-        command(Step{count(1, 1000000)});
-    else if (kind == "play")
-    {
-        a.kind = Kind::Play;
-        a.count = count(1, 1000000);
-    }
-    else if (kind == "heat_map")
-    {
-        const std::string t = r.text(v, kind);
-        if (t != "off" && !heat_term_named(t))
-            r.bad(kind, "'" + t + "' is not off, total, edge, anchor, centroid or normal");
-        command(SetHeatMap{heat_term_named(t)});
-        a.waits_for_heat = true;
-    }
-    else if (kind == "noise")
-    {
-        std::uint64_t seed = 1;
-        if (j.contains("seed"))
-        {
-            const Json& s = j["seed"];
-            if (!s.is_number_integer() || s.get<long long>() < 0 || s.get<long long>() > 2147483647)
-                r.bad("seed", "must be an integer from 0 to 2147483647");
-            seed = static_cast<std::uint64_t>(s.get<long long>());
-        }
-        command(AddNoise{r.number(v, kind, 0, 10), seed});
-    }
-    else if (kind == "reset" || kind == "apply" || kind == "autosave" || kind == "recover" ||
-             kind == "solve" || kind == "cancel_preparation")
-    {
-        if (!v.is_boolean() || !v.get<bool>())
-            r.bad(kind, "must be true");
-        command(kind == "reset"                ? Command(ResetShape{})
-                : kind == "apply"              ? Command(ApplyShape{})
-                : kind == "autosave"           ? Command(Autosave{})
-                : kind == "solve"              ? Command(Solve{})
-                : kind == "cancel_preparation" ? Command(CancelPreparation{})
-                                               : Command(Recover{}));
-    }
-    else
-    {
-        const std::string path = r.text(v, kind);
-        if (path.empty())
-            r.bad(kind, "must be a file name");
-        if (kind == "screenshot")
-        {
-            a.kind = Kind::Screenshot;
-            a.text = path;
-        }
-        else if (kind == "save_mesh")
-            command(SaveMesh{path});
-        else if (kind == "export_recipe")
-            command(ExportRecipe{path});
-        else
-            command(ImportRecipe{path});
-        a.writes = kind != "import_recipe";
-    }
+    const std::string kind(form->name);
+    form->read(ActionArgs{j, kind, j[kind], r}, a);
     return a;
 }
 
 } // namespace
+
+std::vector<ScriptActionSyntax> script_actions()
+{
+    std::vector<ScriptActionSyntax> all;
+    for (const ActionForm& f : action_forms())
+        all.push_back({f.name, f.options});
+    return all;
+}
 
 void script_error(const std::string& name, const std::string& where, const std::string& why)
 {

@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
-#include "app/editor/command.h"
-#include "app/editor/constraint_sets.h"
+#include "app/edit/command.h"
+#include "app/edit/constraint_sets.h"
 
 namespace meshfair::app {
 

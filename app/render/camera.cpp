@@ -141,6 +141,15 @@ std::string_view up_axis_name(UpAxis axis)
     return names[static_cast<int>(axis)];
 }
 
+std::optional<Projection> projection_named(std::string_view name)
+{
+    if (name == "perspective")
+        return Projection::Perspective;
+    if (name == "orthographic")
+        return Projection::Orthographic;
+    return std::nullopt;
+}
+
 std::optional<UpAxis> up_axis_named(std::string_view name)
 {
     for (const UpAxis a : kUpAxes)

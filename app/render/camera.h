@@ -35,6 +35,8 @@ enum class Projection
     Perspective,
     Orthographic
 };
+//! "perspective" or "orthographic".
+std::optional<Projection> projection_named(std::string_view name);
 
 //! \brief Which world direction is up: +y (most viewers), +z (scanners, CAD, Blender), or
 //! any other axis either way (a scan made lying down, or upside down).

@@ -9,8 +9,8 @@
 
 #include <glm/glm.hpp>
 
-#include "app/editor/command.h"
-#include "app/editor/navigation.h"
+#include "app/edit/command.h"
+#include "app/tools/navigation.h"
 #include "app/tools/selection_tool.h"
 
 namespace meshfair::app {

@@ -5,28 +5,12 @@
 #include <optional>
 #include <string_view>
 
+#include "app/edit/selection_command.h"
 #include "app/tools/selection_tool.h"
 #include "core/select/mesh_select.h"
 #include "core/topology/topology.h"
 
 namespace meshfair::app {
-
-//! The selection commands that need no gesture (the Select menu and its keys).
-enum class SelectionCommand
-{
-    All,       //!< every element
-    Clear,     //!< none
-    Invert,    //!< every flag flipped
-    Grow,      //!< one ring more
-    Shrink,    //!< one ring less
-    Connected, //!< the connected components of the selection
-    Boundary   //!< the boundary's vertices, or the faces with a boundary edge
-};
-
-//! The command's name in scripts and menus ("all", "clear", "invert", "grow", ...).
-std::string_view command_name(SelectionCommand command);
-//! The command named `name`, if any.
-std::optional<SelectionCommand> selection_command_named(std::string_view name);
 
 //! \brief Runs `command` on the selection of `kind` (the vertex mask or the face mask;
 //! the other one is left alone).

@@ -12,24 +12,6 @@ namespace meshfair::app {
 
 namespace {
 
-constexpr std::array<std::pair<ToolKind, std::string_view>, 8> kToolNames = {{
-    {ToolKind::Navigate, "navigate"},
-    {ToolKind::Click, "click"},
-    {ToolKind::Brush, "brush"},
-    {ToolKind::Rectangle, "rectangle"},
-    {ToolKind::Lasso, "lasso"},
-    {ToolKind::MovePins, "move_pins"},
-    {ToolKind::AimNormals, "aim_normals"},
-    {ToolKind::Paint, "paint"},
-}};
-
-constexpr std::array<std::pair<PaintMode, std::string_view>, 4> kPaintModes = {{
-    {PaintMode::Relax, "relax"},
-    {PaintMode::Add, "add"},
-    {PaintMode::Subtract, "subtract"},
-    {PaintMode::Smooth, "smooth"},
-}};
-
 // Face centroids (the mean of the corners) as floats, as the renderer projects them.
 std::vector<float> face_centroids(const Mesh& mesh)
 {
@@ -47,38 +29,6 @@ std::vector<float> face_centroids(const Mesh& mesh)
 }
 
 } // namespace
-
-std::string_view tool_name(ToolKind tool)
-{
-    for (const auto& [t, name] : kToolNames)
-        if (t == tool)
-            return name;
-    return {};
-}
-
-std::optional<ToolKind> tool_named(std::string_view name)
-{
-    for (const auto& [t, n] : kToolNames)
-        if (n == name)
-            return t;
-    return std::nullopt;
-}
-
-std::string_view paint_mode_name(PaintMode mode)
-{
-    for (const auto& [m, name] : kPaintModes)
-        if (m == mode)
-            return name;
-    return {};
-}
-
-std::optional<PaintMode> paint_mode_named(std::string_view name)
-{
-    for (const auto& [m, n] : kPaintModes)
-        if (n == name)
-            return m;
-    return std::nullopt;
-}
 
 std::vector<ScreenPoint> project_face_centroids(const Mesh& mesh, const Camera& camera, int width,
                                                 int height)

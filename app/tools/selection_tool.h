@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "app/edit/tool_settings.h"
 #include "app/render/camera.h"
 #include "app/render/renderer.h"
 #include "core/energies/falloff.h"
@@ -16,31 +17,6 @@
 #include "core/select/screen_select.h"
 
 namespace meshfair::app {
-
-//! What the selection tools select: vertices, or faces (a face counts where its
-//! centroid projects).
-enum class ElementKind
-{
-    Vertices,
-    Faces
-};
-
-//! The tool the left mouse button uses.
-enum class ToolKind
-{
-    Navigate,   //!< left drag orbits
-    Click,      //!< ClickTool
-    Brush,      //!< BrushTool
-    Rectangle,  //!< RectangleTool
-    Lasso,      //!< LassoTool
-    MovePins,   //!< drag a pin set's glyphs to new targets in the view plane (the session's)
-    AimNormals, //!< drag a normal set's arrows to turn its direction (the session's)
-    Paint       //!< PaintTool: the smoothing brush, and painting a set's weight map
-};
-
-//! "navigate", "click", "brush", "rectangle", "lasso", "move_pins", "aim_normals", "paint".
-std::string_view tool_name(ToolKind tool);
-std::optional<ToolKind> tool_named(std::string_view name);
 
 //! The view a gesture starts in. The camera does not move during a gesture.
 struct ToolView
@@ -60,44 +36,6 @@ struct ToolView
 //! The face centroids (the mean of each face's corners) projected into a view.
 std::vector<ScreenPoint> project_face_centroids(const Mesh& mesh, const Camera& camera, int width,
                                                 int height);
-
-//! What a dab of the Paint tool does to the vertices under it (cmd::PaintDab).
-enum class PaintMode
-{
-    Relax,    //!< the smoothing brush: frees them in a region's map and runs the solver
-    Add,      //!< raises the set's weight map toward 1
-    Subtract, //!< lowers it toward 0
-    Smooth    //!< blends each weight with its neighbours' mean
-};
-//! "relax", "add", "subtract", "smooth".
-std::string_view paint_mode_name(PaintMode mode);
-std::optional<PaintMode> paint_mode_named(std::string_view name);
-
-//! The Paint tool's settings (the side panel's "Paint" section).
-struct PaintSettings
-{
-    PaintMode mode = PaintMode::Relax;
-    //! How much a dab changes a weight at its centre, in [0, 1].
-    double strength = 0.5;
-    FalloffCurve curve = FalloffCurve::Smooth;
-    //! Relax: the solver steps a stroke runs from the shape it started on.
-    int steps = 10;
-    //! The set whose map is painted; empty: kPaintSet.
-    std::string set;
-    bool operator==(const PaintSettings&) const = default;
-};
-//! The set the Paint tool paints when none is chosen: a region made at the first dab.
-inline constexpr std::string_view kPaintSet = "brush";
-
-//! The settings the tools share (the side panel's "Select" and "Paint" sections).
-struct ToolSettings
-{
-    ElementKind elements = ElementKind::Vertices;
-    //! Select through the surface: hidden elements too (default: what is seen only).
-    bool through = false;
-    double brush_radius_px = 24;
-    PaintSettings paint;
-};
 
 //! \brief The elements of one kind as a view shows them: where each projects (window
 //! pixels of the view) and, unless the tool selects through the surface, which ones the

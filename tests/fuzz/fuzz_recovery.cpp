@@ -16,7 +16,7 @@
 #include <cstdio>
 #include <string>
 
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 #include "app/editor/recovery.h"
 #include "core/errors.h"
 #include "core/recipe/session.h"

@@ -26,9 +26,9 @@ MUTATIONS = [
     ("obj-index-off-by-one", "core/io/read_obj.cpp",
      "raw < 0 ? so_far + raw : raw - 1;",
      "raw < 0 ? so_far + raw : raw;", "test"),
-    ("lost-undo-capture", "app/editor/command.cpp",
-     'return {"delete set", kSets, kSets | kSetMembers};',
-     'return {"delete set", 0, kSets | kSetMembers};', "test"),
+    ("lost-undo-capture", "app/edit/command.h",
+     '        .label = "delete set",\n        .captures = kSets,',
+     '        .label = "delete set",\n        .captures = 0,', "test"),
     ("save-skips-rename", "core/io/io.cpp",
      "    const int fd = ::mkostemp(tmp.data(), O_CLOEXEC);",
      "    tmp = target; // written in place: no temporary, the rename a no-op\n"

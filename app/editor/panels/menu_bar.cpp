@@ -5,19 +5,35 @@
 
 #include <imgui.h>
 
+#include "app/editor/key_map.h"
 #include "app/editor/panels/panel_context.h"
 
 namespace meshfair::app {
 
 namespace {
 
-// A menu item tracked as "Menu/Item" for scripts.
-bool item(const PanelContext& ui, const char* menu, const char* label, const char* keys = nullptr,
-          bool selected = false, bool enabled = true)
+// A menu item tracked as "Menu/Item" for scripts: the command's own label and the key
+// bound to it (both from the command's definition and the key map), given when chosen.
+// `label` (shown) and `name` (tracked) replace the command's own label where the menu
+// says more; a chosen item that is already `selected` gives nothing when `reselect` is off.
+struct ItemOptions
 {
-    const bool chosen = ImGui::MenuItem(label, keys, selected, enabled);
-    ui.track(std::string(menu) + "/" + label);
-    return chosen;
+    bool selected = false;
+    bool enabled = true;
+    std::string label = {}, name = {};
+    bool reselect = true;
+};
+void item(const PanelContext& ui, const char* menu, const Command& command,
+          const ItemOptions& o = {})
+{
+    const std::string label = o.label.empty() ? menu_label(command) : o.label;
+    const std::optional<KeyChord> chord = key_for(command);
+    const std::string keys = chord ? chord_label(*chord) : std::string();
+    const bool chosen =
+        ImGui::MenuItem(label.c_str(), chord ? keys.c_str() : nullptr, o.selected, o.enabled);
+    ui.track(std::string(menu) + "/" + (o.name.empty() ? label : o.name));
+    if (chosen && (o.reselect || !o.selected))
+        ui.give(command);
 }
 
 bool menu(const PanelContext& ui, const char* label, bool enabled = true)
@@ -40,8 +56,7 @@ void menu_bar(const PanelContext& ui)
     const EditorState& state = ui.state;
     if (menu(ui, "File"))
     {
-        if (item(ui, "File", "Open...", "Ctrl+O"))
-            ui.give(ShowDialog{Dialog::OpenMesh});
+        item(ui, "File", ShowDialog{Dialog::OpenMesh});
         if (ImGui::BeginMenu("Open recent", !state.recent.empty()))
         {
             for (const std::string& path : state.recent)
@@ -49,110 +64,79 @@ void menu_bar(const PanelContext& ui)
                     ui.give(OpenMesh{path});
             ImGui::EndMenu();
         }
-        if (item(ui, "File", "Save", "Ctrl+S"))
-            ui.give(SaveMesh{});
-        if (item(ui, "File", "Save as...", "Ctrl+Shift+S"))
-            ui.give(ShowDialog{Dialog::SaveMeshAs});
-        if (item(ui, "File", "Export recipe..."))
-            ui.give(ShowDialog{Dialog::ExportRecipe});
-        if (item(ui, "File", "Import recipe..."))
-            ui.give(ShowDialog{Dialog::ImportRecipe});
-        if (item(ui, "File", "Screenshot", "F12"))
-            ui.give(Screenshot{});
+        item(ui, "File", SaveMesh{});
+        item(ui, "File", ShowDialog{Dialog::SaveMeshAs});
+        item(ui, "File", ShowDialog{Dialog::ExportRecipe});
+        item(ui, "File", ShowDialog{Dialog::ImportRecipe});
+        item(ui, "File", Screenshot{});
         ImGui::Separator();
-        if (item(ui, "File", "Quit", "Ctrl+Q"))
-            ui.give(Quit{});
+        item(ui, "File", Quit{});
         ImGui::EndMenu();
     }
     if (menu(ui, "Edit"))
     {
+        // The steps' names in the labels; "###" keeps the items' IDs as they change.
         const HistoryStatus& h = state.history;
-        const std::string undo = "Undo " + h.undo_label + "###undo",
-                          redo = "Redo " + h.redo_label + "###redo";
-        if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, h.undo_count > 0))
-            ui.give(Undo{});
-        ui.track("Edit/Undo");
-        if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, h.redo_count > 0))
-            ui.give(Redo{});
-        ui.track("Edit/Redo");
+        item(ui, "Edit", Undo{},
+             {.enabled = h.undo_count > 0,
+              .label = "Undo " + h.undo_label + "###undo",
+              .name = "Undo"});
+        item(ui, "Edit", Redo{},
+             {.enabled = h.redo_count > 0,
+              .label = "Redo " + h.redo_label + "###redo",
+              .name = "Redo"});
         ImGui::EndMenu();
     }
     if (menu(ui, "Solve"))
     {
-        if (item(ui, "Solve", "Play / pause", "Space"))
-            ui.give(TogglePlay{});
-        if (item(ui, "Solve", "Step"))
-            ui.give(Step{});
-        if (item(ui, "Solve", "Solve: the minimizer", "Enter",
-                 ui.document.solver.method == Method::Direct))
-            ui.give(Solve{});
-        if (item(ui, "Solve", "Cancel preparation", "Esc", false, ui.state.solver.preparing))
-            ui.give(CancelPreparation{});
+        item(ui, "Solve", TogglePlay{});
+        item(ui, "Solve", Step{});
+        item(ui, "Solve", Solve{}, {.selected = ui.document.solver.method == Method::Direct});
+        item(ui, "Solve", CancelPreparation{}, {.enabled = ui.state.solver.preparing});
         ImGui::EndMenu();
     }
     if (menu(ui, "Select"))
     {
-        static constexpr std::pair<SelectionCommand, const char*> items[] = {
-            {SelectionCommand::All, "Ctrl+A"},     {SelectionCommand::Clear, "Alt+A"},
-            {SelectionCommand::Invert, "Ctrl+I"},  {SelectionCommand::Grow, "Ctrl+="},
-            {SelectionCommand::Shrink, "Ctrl+-"},  {SelectionCommand::Connected, "Ctrl+L"},
-            {SelectionCommand::Boundary, "Ctrl+B"}};
-        for (const auto& [command, keys] : items)
-            if (item(ui, "Select", std::string(command_name(command)).c_str(), keys))
-                ui.give(RunSelection{command});
+        for (const SelectionCommand c :
+             {SelectionCommand::All, SelectionCommand::Clear, SelectionCommand::Invert,
+              SelectionCommand::Grow, SelectionCommand::Shrink, SelectionCommand::Connected,
+              SelectionCommand::Boundary})
+            item(ui, "Select", RunSelection{c});
         ImGui::EndMenu();
     }
     if (menu(ui, "View"))
     {
-        if (item(ui, "View", "Frame all", "Home"))
-            ui.give(FrameAll{});
-        if (item(ui, "View", "Frame selection", "F"))
-            ui.give(FrameSelection{});
+        item(ui, "View", FrameAll{});
+        item(ui, "View", FrameSelection{});
         for (StandardView v : {StandardView::Front, StandardView::Right, StandardView::Top,
                                StandardView::Back, StandardView::Left, StandardView::Bottom})
-            if (item(ui, "View", view_name(v)))
-                ui.give(SetView{v});
-        if (item(ui, "View", "Orthographic", "Numpad 5",
-                 ui.camera.projection == Projection::Orthographic))
-            ui.give(ToggleProjection{});
-        if (item(ui, "View", "Trackball orbit", "T", state.orbit == OrbitStyle::Trackball))
-            ui.give(ToggleOrbit{});
+            item(ui, "View", SetView{v});
+        item(ui, "View", ToggleProjection{},
+             {.selected = ui.camera.projection == Projection::Orthographic});
+        item(ui, "View", ToggleOrbit{}, {.selected = state.orbit == OrbitStyle::Trackball});
         for (const UpAxis up : kUpAxes)
-        {
-            std::string name(up_axis_name(up));
-            name[1] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[1])));
-            if (item(ui, "View", ("Up axis " + name).c_str(), nullptr, ui.camera.up_axis == up))
-                ui.give(SetUpAxis{up});
-        }
-        if (item(ui, "View", "Side panel", "Tab", state.show_side_panel))
-            ui.give(Toggle{DisplayToggle::SidePanel});
-        if (item(ui, "View", "Energy plot", "E", state.show_energy))
-            ui.give(Toggle{DisplayToggle::EnergyPlot});
+            item(ui, "View", SetUpAxis{up}, {.selected = ui.camera.up_axis == up});
+        item(ui, "View", Toggle{DisplayToggle::SidePanel}, {.selected = state.show_side_panel});
+        item(ui, "View", Toggle{DisplayToggle::EnergyPlot}, {.selected = state.show_energy});
         ImGui::EndMenu();
     }
     if (menu(ui, "Display"))
     {
         const DisplayOptions& d = state.display;
-        if (item(ui, "Display", "Flat shading", nullptr, d.shading == Shading::Flat) &&
-            d.shading != Shading::Flat)
-            ui.give(Toggle{DisplayToggle::Shading});
-        if (item(ui, "Display", "Smooth shading", "S", d.shading == Shading::Smooth) &&
-            d.shading != Shading::Smooth)
-            ui.give(Toggle{DisplayToggle::Shading});
-        if (item(ui, "Display", "Wireframe", "W", d.wireframe))
-            ui.give(Toggle{DisplayToggle::Wireframe});
-        if (item(ui, "Display", "Boundary and singular edges", "B", d.boundary_edges))
-            ui.give(Toggle{DisplayToggle::BoundaryEdges});
-        if (item(ui, "Display", "Vertex points", "P", d.vertex_points))
-            ui.give(Toggle{DisplayToggle::VertexPoints});
-        if (item(ui, "Display", "Tint back faces", nullptr, d.back_face_tint))
-            ui.give(Toggle{DisplayToggle::BackFaceTint});
+        // Shading is one toggle shown as two choices: each gives it only when not chosen.
+        const bool flat = d.shading == Shading::Flat;
+        item(ui, "Display", Toggle{DisplayToggle::Shading},
+             {.selected = flat, .label = "Flat shading", .reselect = false});
+        item(ui, "Display", Toggle{DisplayToggle::Shading}, {.selected = !flat, .reselect = false});
+        item(ui, "Display", Toggle{DisplayToggle::Wireframe}, {.selected = d.wireframe});
+        item(ui, "Display", Toggle{DisplayToggle::BoundaryEdges}, {.selected = d.boundary_edges});
+        item(ui, "Display", Toggle{DisplayToggle::VertexPoints}, {.selected = d.vertex_points});
+        item(ui, "Display", Toggle{DisplayToggle::BackFaceTint}, {.selected = d.back_face_tint});
         ImGui::EndMenu();
     }
     if (menu(ui, "Help"))
     {
-        if (item(ui, "Help", "Keys and mouse", "F1", state.show_help))
-            ui.give(Toggle{DisplayToggle::Help});
+        item(ui, "Help", Toggle{DisplayToggle::Help}, {.selected = state.show_help});
         ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();

@@ -88,26 +88,6 @@ bool PanelContext::curve_combo(const char* label, FalloffCurve& curve) const
     return chosen;
 }
 
-const char* view_name(StandardView v)
-{
-    switch (v)
-    {
-        case StandardView::Front:
-            return "Front";
-        case StandardView::Back:
-            return "Back";
-        case StandardView::Right:
-            return "Right";
-        case StandardView::Left:
-            return "Left";
-        case StandardView::Top:
-            return "Top";
-        case StandardView::Bottom:
-            return "Bottom";
-    }
-    return "";
-}
-
 const char* kind_label(ConstraintKind kind)
 {
     return kind_info(kind).label.data(); // (the table's literals end in a NUL)

@@ -63,7 +63,6 @@ void tool_overlay(const EditorState& state);
 //! The side panel's width, in window units.
 inline constexpr float kSidePanelWidth = 340;
 
-const char* view_name(StandardView view);
 //! \brief What the solver's preparation is doing, for the box over the view:
 //! "ordering 1,078,592 unknowns", "factoring (22.1 Gflop)", with "3 s of about 8" when
 //! `with_times` (not offscreen: frames must not depend on the clock).

@@ -129,9 +129,10 @@ void camera_panel(const PanelContext& ui)
     {
         if (column++ % 3 != 0)
             ImGui::SameLine();
-        if (ImGui::Button(view_name(v), ImVec2(86, 0)))
+        const std::string name = menu_label(cmd::SetView{v});
+        if (ImGui::Button(name.c_str(), ImVec2(86, 0)))
             ui.give(SetView{v});
-        ui.track(std::string("view ") + view_name(v));
+        ui.track("view " + name);
     }
     if (ImGui::Button("Frame all", ImVec2(-1, 0)))
         ui.give(FrameAll{});

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 #include "app/editor/panels/panel_context.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-#include "app/editor/navigation.h"
+#include "app/tools/navigation.h"
 
 #include <doctest/doctest.h>
 

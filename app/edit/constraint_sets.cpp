@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
-#include "app/editor/constraint_sets.h"
+#include "app/edit/constraint_sets.h"
 
 #include <algorithm>
 #include <tuple>
