@@ -126,6 +126,28 @@ void EditorSession::mouse_move(double x, double y, bool in_view)
     }
     else
         navigator_.move(camera_, state_.orbit, x, y, view_.width, view_.height);
+    find_grab_hover();
+}
+
+void EditorSession::find_grab_hover()
+{
+    grab_hover_.clear();
+    const bool grabs = state_.tool == ToolKind::MovePins || state_.tool == ToolKind::AimNormals;
+    if (!grabs || gesture_ != nullptr || navigator_.dragging() || !cursor_in_view_)
+        return;
+    // The same handles and the same choice as the tool's press (nearest_handle).
+    const std::vector<GrabHandle> handles =
+        state_.tool == ToolKind::MovePins ? pin_handles() : normal_handles();
+    const Grabbed grabbed = nearest_handle(handles, camera_, view_, cursor_);
+    if (grabbed.handle == nullptr)
+        return;
+    const auto on_screen = [&](const glm::dvec3& p) {
+        const glm::dvec3 w = camera_.project(p, view_.width, view_.height);
+        return ScreenPoint{w.x, w.y, 0};
+    };
+    grab_hover_.push_back(on_screen(grabbed.handle->point));
+    if (grabbed.handle->tip)
+        grab_hover_.push_back(on_screen(*grabbed.handle->tip));
 }
 
 void EditorSession::mouse_release(MouseButton button, double x, double y)
@@ -344,6 +366,14 @@ void EditorSession::prepare_ui()
 {
     state_.overlay = tool_overlay();
     for (ScreenPoint& p : state_.overlay.points)
+    {
+        p.x += view_.x;
+        p.y += view_.y;
+    }
+    // (A tool changed by a key since the cursor last moved grabs nothing of it.)
+    const bool grabs = state_.tool == ToolKind::MovePins || state_.tool == ToolKind::AimNormals;
+    state_.grab_hover = grabs && gesture_ == nullptr ? grab_hover_ : std::vector<ScreenPoint>{};
+    for (ScreenPoint& p : state_.grab_hover)
     {
         p.x += view_.x;
         p.y += view_.y;

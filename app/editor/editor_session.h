@@ -14,10 +14,10 @@
 #include "app/editor/document.h"
 #include "app/editor/editor_state.h"
 #include "app/editor/history.h"
-#include "app/tools/navigation.h"
 #include "app/editor/persistence.h"
 #include "app/editor/solver_controller.h"
 #include "app/render/renderer.h"
+#include "app/tools/navigation.h"
 #include "app/tools/tool_registry.h"
 
 namespace meshfair::app {
@@ -151,6 +151,8 @@ private:
     ToolContext tool_context();
     std::vector<GrabHandle> pin_handles() const;
     std::vector<GrabHandle> normal_handles() const;
+    //! The handle the active tool would grab at the cursor, as grab_hover_ keeps it.
+    void find_grab_hover();
     void reset_for_document();
     void remember(const std::string& path);
 
@@ -167,6 +169,9 @@ private:
     std::optional<OpenStep> open_step_;
     InteractiveTool* gesture_ = nullptr; // the tool of the gesture under way
     ScreenPoint cursor_;
+    //! What a press of the M or D tool would grab at the cursor (view pixels; see
+    //! EditorState::grab_hover), found at each move of the cursor.
+    std::vector<ScreenPoint> grab_hover_;
     bool cursor_in_view_ = true;
     std::FILE* trace_ = nullptr;
     std::function<void(const PreparationProgress::Snapshot&)> preparation_observer_;

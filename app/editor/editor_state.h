@@ -40,7 +40,11 @@ struct EditorState
 {
     ToolKind tool = ToolKind::Navigate;
     ToolSettings tools;
-    ToolOverlay overlay;   //!< what the active tool draws now, in framebuffer pixels
+    ToolOverlay overlay; //!< what the active tool draws now, in framebuffer pixels
+    //! \brief The handle a press of the M or D tool would grab at the cursor, as drawn
+    //! (framebuffer pixels): a pin's point, or an arrow's base and tip. Highlighted, so that
+    //! an artist sees what a press takes before pressing.
+    std::vector<ScreenPoint> grab_hover;
     HistoryStatus history; //!< refreshed by the session before each frame of the interface
     std::size_t selected_vertices = 0, selected_faces = 0; //!< counts, refreshed likewise
     SolverStatus solver;                                   //!< refreshed likewise

@@ -91,6 +91,7 @@ UiOutput EditorUi::build(const Document& document, EditorState& state, const Cam
     preparation_toast(ui); // (over the energy window)
     error_toast(ui, toast_dismissed_, toast_expanded_);
     tool_overlay(state);
+    grab_highlight(ui);
     help_overlay(ui);
 
     if (state.dialog)
@@ -198,8 +199,13 @@ ViewRect EditorUi::view_rect(int width, int height, const EditorState& state)
     const int top = static_cast<int>(ImGui::GetFrameHeight() * scale);
     const int bottom = static_cast<int>((ImGui::GetFrameHeight() + 8) * scale);
     const int right = state.show_side_panel ? static_cast<int>(kSidePanelWidth * scale) : 0;
-    return {
-        width, height, 0, top, std::max(width - right, 16), std::max(height - top - bottom, 16)};
+    const int plot = state.show_energy ? static_cast<int>(kEnergyPanelHeight * scale) : 0;
+    return {width,
+            height,
+            0,
+            top,
+            std::max(width - right, 16),
+            std::max(height - top - bottom - plot, 16)};
 }
 
 void EditorUi::prepare_offscreen(InterfaceContext& layer, const Document& document,

@@ -8,12 +8,12 @@
 #include <vector>
 
 #include "app/edit/command.h"
-#include "app/editor/editor_session.h"
 #include "app/editor/input_event.h"
 
 namespace meshfair::app {
 
 class EditorFrame;
+class EditorSession;
 
 //! \brief One step of a scripted session (docs/editor.md, "Scripted sessions"): editor
 //! commands, as the key map and the panels give them, or raw input a person gives (mouse

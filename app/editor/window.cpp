@@ -24,10 +24,10 @@
 #include "app/editor/editor_ui.h"
 #include "app/editor/input_event.h"
 #include "app/editor/interface_context.h"
-#include "app/tools/navigation.h"
 #include "app/render/gl_loader.h"
 #include "app/render/gl_renderer.h"
 #include "app/render/render_error.h"
+#include "app/tools/navigation.h"
 #include "core/errors.h"
 #include "core/io/io.h"
 

@@ -181,7 +181,8 @@ void energy_plot(const PanelContext& ui)
 
 } // namespace
 
-// The energy plot in its own window at the bottom left of the view, always in sight.
+// The energy plot in a strip of its own under the view, across its width: the view
+// shrinks to make room (EditorUi::view_rect), so the plot never covers the mesh.
 void energy_window(const PanelContext& ui)
 {
     EditorState& state = ui.state;
@@ -189,10 +190,9 @@ void energy_window(const PanelContext& ui)
         return;
     const ImGuiIO& io = ImGui::GetIO();
     const float bottom = ImGui::GetFrameHeight() + 8;
-    ImGui::SetNextWindowPos(ImVec2(8, io.DisplaySize.y - bottom - 8), ImGuiCond_Always,
-                            ImVec2(0, 1));
-    ImGui::SetNextWindowSize(ImVec2(420, 0));
-    ImGui::SetNextWindowBgAlpha(0.85f);
+    const float width = io.DisplaySize.x - (state.show_side_panel ? kSidePanelWidth : 0.0f);
+    ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - bottom - kEnergyPanelHeight));
+    ImGui::SetNextWindowSize(ImVec2(width, kEnergyPanelHeight));
     bool open = true;
     ImGui::Begin("Energy", &open,
                  ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |

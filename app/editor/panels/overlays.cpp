@@ -14,6 +14,36 @@
 namespace meshfair::app {
 
 // The active tool's ring, rectangle or lasso line, under the panels.
+void grab_highlight(const PanelContext& ui)
+{
+    const std::vector<ScreenPoint>& h = ui.state.grab_hover;
+    if (h.empty())
+        return;
+    const ImGuiIO& io = ImGui::GetIO();
+    const float sx = io.DisplayFramebufferScale.x > 0 ? io.DisplayFramebufferScale.x : 1.0f;
+    const float sy = io.DisplayFramebufferScale.y > 0 ? io.DisplayFramebufferScale.y : 1.0f;
+    const auto at = [&](const ScreenPoint& p) { return ImVec2(float(p.x) / sx, float(p.y) / sy); };
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    const palette::Rgb& c = palette::kToolOverlay;
+    const ImU32 color = ImGui::ColorConvertFloat4ToU32(ImVec4(c[0], c[1], c[2], 0.95f));
+    const ImU32 outline = IM_COL32(0, 0, 0, 200);
+    // The arrow retraced from base to tip, its tip ringed; a pin ringed.
+    if (h.size() == 2)
+    {
+        draw->AddLine(at(h[0]), at(h[1]), outline, 5.0f);
+        draw->AddLine(at(h[0]), at(h[1]), color, 2.5f);
+    }
+    draw->AddCircle(at(h.back()), 7.0f, outline, 24, 3.5f);
+    draw->AddCircle(at(h.back()), 7.0f, color, 24, 1.5f);
+    // Where the handle is, by name, as the panels' widgets are (framebuffer pixels).
+    const auto mark = [&](const char* name, const ScreenPoint& p) {
+        ui.widgets[name] = {p.x - 2, p.y - 2, p.x + 2, p.y + 2};
+    };
+    mark("grab/base", h.front());
+    if (h.size() == 2)
+        mark("grab/tip", h[1]);
+}
+
 void tool_overlay(const EditorState& state)
 {
     const ToolOverlay& o = state.overlay;

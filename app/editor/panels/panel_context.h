@@ -37,6 +37,9 @@ struct PanelContext
 
 // The sections of the interface, one file each in app/editor/panels/.
 void menu_bar(const PanelContext& ui);
+//! \brief The handle a press of M or D would grab at the cursor, highlighted, and where it
+//! is tracked as "grab/base" and "grab/tip".
+void grab_highlight(const PanelContext& ui);
 void select_panel(const PanelContext& ui);
 //! The rename field's text and the set being renamed live in the EditorUi.
 void sets_panel(const PanelContext& ui, std::string& rename_buffer, std::string& renaming);
@@ -62,6 +65,8 @@ void tool_overlay(const EditorState& state);
 
 //! The side panel's width, in window units.
 inline constexpr float kSidePanelWidth = 340;
+//! The energy plot's strip under the view, in window units (its contents fit).
+inline constexpr float kEnergyPanelHeight = 224;
 
 //! \brief What the solver's preparation is doing, for the box over the view:
 //! "ordering 1,078,592 unknowns", "factoring (22.1 Gflop)", with "3 s of about 8" when

@@ -23,7 +23,7 @@ if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     export MESHFAIR_IN_XVFB=1
     # A display and an X authority of its own (from :140 up), so that the window tests can
     # run at the same time.
-    exec xvfb-run -a -n 140 -f "${4%/}.Xauthority" -s "-screen 0 1280x800x24" "$0" "$@"
+    exec xvfb-run -a -n 140 -f "${4%/}.Xauthority" -s "-screen 0 1280x1024x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
 name=paint

@@ -12,7 +12,7 @@
 set -euo pipefail
 if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     export MESHFAIR_IN_XVFB=1
-    exec xvfb-run -a -n 160 -f "${3%/}.Xauthority" -s "-screen 0 1280x800x24" "$0" "$@"
+    exec xvfb-run -a -n 160 -f "${3%/}.Xauthority" -s "-screen 0 1280x1024x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 work=$3
 name=prepare

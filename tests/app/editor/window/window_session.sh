@@ -15,7 +15,7 @@ if [ -z "${MESHFAIR_IN_XVFB:-}" ]; then
     export MESHFAIR_IN_XVFB=1
     # A display and an X authority of its own (from :130 up), so that the window tests can
     # run at the same time.
-    exec xvfb-run -a -n 130 -f "${4%/}.Xauthority" -s "-screen 0 1280x800x24" "$0" "$@"
+    exec xvfb-run -a -n 130 -f "${4%/}.Xauthority" -s "-screen 0 1280x1024x24" "$0" "$@"
 fi
 meshfair=$1 cli=$2 bunny=$3 work=$4
 name=session
@@ -57,7 +57,16 @@ drag 440 400 455 415 2
 key shift+n
 key v
 key d
-drag 447 407 470 412 4
+# The arrow under the cursor is highlighted, its tip marked ("grab/tip" in the widget map):
+# pressed at its tip, away from its base, D takes the whole arrow (never the view).
+move_to 447 407
+next_frame
+read -r bx by < <(widget_centre "grab/base")
+read -r tx ty < <(widget_centre "grab/tip")
+[ -n "${tx:-}" ] || fail "no arrow highlighted under the D tool at 447 407"
+reach=$(awk -v a="$bx" -v b="$by" -v c="$tx" -v d="$ty" 'BEGIN { printf "%d", sqrt((a-c)^2 + (b-d)^2) }')
+[ "$reach" -gt 14 ] || fail "the arrow's tip is $reach px from its base: a press there cannot tell them apart"
+drag "$tx" "$ty" $((tx + 23)) $((ty + 5)) 4
 wait_line "gesture normal direction"
 # Anchors, with a weight of their own: their row's slider dragged.
 key r

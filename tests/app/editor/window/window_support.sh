@@ -68,7 +68,10 @@ start_editor() {
     log=$3 map=$4
     shift 4
     rm -f "$map"
-    "$meshfair" "$mesh" --size 1000x700 --trace --widget-map "$map" "$@" >"$log" 2>&1 &
+    # 1000 x 700 for the view and the panels, and 224 more for the energy plot's strip under
+    # the view (kEnergyPanelHeight): the view is 1000 x 654 from (0, 19), where the tests'
+    # points on the mesh were taken.
+    "$meshfair" "$mesh" --size 1000x924 --trace --widget-map "$map" "$@" >"$log" 2>&1 &
     pid=$!
     wait_first_frame "$pid" "$log" "$name"
     win=$(xdotool search --sync --name "MeshFair - $(basename "$mesh")" | awk 'NR == 1')
@@ -250,7 +253,7 @@ widget_at() {
     for _ in $(seq 1 30); do
         local x=${at%% *} y=${at#* } wheel again
         [ "$x" -gt 660 ] || break # the side panel only
-        if [ "$y" -gt 640 ]; then
+        if [ "$y" -gt 860 ]; then
             wheel=5
         elif [ "$y" -lt 40 ]; then
             wheel=4
