@@ -151,8 +151,12 @@ grep -q "$noise_note: [0-9]* iterations (strength 1)" "$log" ||
 
 # --- 2. Reset to the scan; denoise-organic, its tooltip, its strength slider; then the
 # other presets, each run from where the last one stopped.
+notes=$(count_lines "$noise_note")
 click_widget "Reset"
 wait_line "command reset: ok"
+# The reset restarts the solver from the scan, which notes the noise again: waited for, so
+# that the count below is not taken before it comes.
+wait_line "$noise_note" $((notes + 1))
 click_widget "preset"
 hover $(widget_at "preset/denoise-organic")
 next_frame
