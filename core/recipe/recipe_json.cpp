@@ -662,21 +662,6 @@ Json index_list_json(std::span<const Index> indices)
     return out;
 }
 
-InvalidInputError json_syntax_error(const std::string& name, const std::string& what)
-{
-    // what is "[json.exception.parse_error.101] parse error at line L, column C: why".
-    const auto at = what.find(" at line ");
-    const auto why = what.find(": ", at == std::string::npos ? 0 : at);
-    if (at == std::string::npos || why == std::string::npos)
-        return InvalidInputError("'" + name + "': not valid JSON: " + what);
-    std::string place = what.substr(at + 9, why - at - 9); // "L, column C"
-    const auto comma = place.find(", column ");
-    if (comma != std::string::npos)
-        place = place.substr(0, comma) + ":" + place.substr(comma + 9);
-    return InvalidInputError("'" + name + "':" + place +
-                             ": not valid JSON: " + what.substr(why + 2));
-}
-
 Recipe parse_recipe(std::string_view json_text, const std::string& name, const RecipeLimits& limits)
 {
     listed_left = limits.max_listed;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/checked_json.h"
 #include "core/recipe/recipe.h"
 
 namespace meshfair {
@@ -37,11 +38,6 @@ Recipe parse_recipe(std::string_view json_text, const std::string& name,
 //! Reads and parses a recipe file. \throw as parse_recipe, or InvalidInputError when the
 //! file cannot be read.
 Recipe read_recipe(const std::string& path);
-
-//! \brief The error for JSON text that does not parse, from nlohmann's parse_error
-//! message ("... at line L, column C: why"): "'name':L:C: not valid JSON: why". Shared by
-//! every JSON reader of MeshFair (recipes, the editor's scripts).
-InvalidInputError json_syntax_error(const std::string& name, const std::string& parser_what);
 
 //! \brief The JSON form of a recipe; parse_recipe(recipe_to_json(r).dump()) gives r back.
 //! Index lists are written compactly (index_list_json).
