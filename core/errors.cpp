@@ -43,12 +43,32 @@ std::string recipe_item_key(const std::string& key, std::size_t k)
     return key + "[" + std::to_string(k) + "]";
 }
 
-RecipeError::RecipeError(const std::string& key, const std::string& message,
-                         const std::string& file)
-    : InvalidInputError((file.empty() ? std::string("recipe") : "'" + file + "'") + ": " + key +
-                        ": " + message),
-      key_(key),
-      message_(message)
+JsonValueError::JsonValueError(const std::string& path, const std::string& why,
+                               const std::string& file)
+    : InvalidInputError((file.empty() ? std::string("recipe") : "'" + file + "'") + ": " + path +
+                        ": " + why),
+      file_(file),
+      path_(path),
+      why_(why)
+{
+}
+
+namespace {
+
+std::string syntax_place(std::int64_t line, std::int64_t column)
+{
+    return line > 0 ? ":" + std::to_string(line) + ":" + std::to_string(column) : "";
+}
+
+} // namespace
+
+JsonSyntaxError::JsonSyntaxError(const std::string& file, std::int64_t line, std::int64_t column,
+                                 const std::string& why)
+    : InvalidInputError("'" + file + "'" + syntax_place(line, column) + ": not valid JSON: " + why),
+      file_(file),
+      line_(line),
+      column_(column),
+      why_(why)
 {
 }
 

@@ -58,18 +58,49 @@ private:
     std::string message_;
 };
 
-//! A recipe that is malformed or does not fit the mesh: the message names the key.
-class RecipeError : public InvalidInputError
+//! \brief A value of an input at its key path ("soft[1].weights[0]") that is missing, of
+//! another type or out of range (CheckedJson's reads), or a recipe's that does not fit the
+//! mesh (check_recipe): names the file, the path and why.
+class JsonValueError : public InvalidInputError
 {
 public:
-    //! what() is "'file': key: message", or "recipe: key: message" without a file.
-    RecipeError(const std::string& key, const std::string& message, const std::string& file = "");
-    const std::string& key() const { return key_; }
-    const std::string& message() const { return message_; }
+    //! what() is "'file': path: why", or "recipe: path: why" without a file (a recipe built
+    //! in memory).
+    JsonValueError(const std::string& path, const std::string& why, const std::string& file = "");
+    const std::string& file() const { return file_; }
+    const std::string& path() const { return path_; }
+    const std::string& why() const { return why_; }
+    //! The names recipes speak of: the key at fault and what is wrong with it.
+    const std::string& key() const { return path_; }
+    const std::string& message() const { return why_; }
 
 private:
-    std::string key_;
-    std::string message_;
+    std::string file_;
+    std::string path_;
+    std::string why_;
+};
+
+//! A recipe that is malformed or does not fit the mesh: the one error of every JSON
+//! reader, so that one catch sees a recipe's errors whether read or checked.
+using RecipeError = JsonValueError;
+
+//! \brief Text that is not JSON: what() is "'file':L:C: not valid JSON: why", without
+//! ":L:C" when the parser names no place (a number too large for a double).
+class JsonSyntaxError : public InvalidInputError
+{
+public:
+    JsonSyntaxError(const std::string& file, std::int64_t line, std::int64_t column,
+                    const std::string& why);
+    const std::string& file() const { return file_; }
+    std::int64_t line() const { return line_; }     //!< 1-based; 0 = unknown
+    std::int64_t column() const { return column_; } //!< 1-based; 0 = unknown
+    const std::string& why() const { return why_; }
+
+private:
+    std::string file_;
+    std::int64_t line_;
+    std::int64_t column_;
+    std::string why_;
 };
 
 //! The key of entry k of the list at key in a RecipeError: "key[k]".

@@ -2,10 +2,8 @@
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/edit_state_json.h"
 
-#include <cmath>
 #include <cstdint>
 #include <limits>
-#include <stdexcept>
 #include <string>
 
 #include "core/recipe/recipe_json.h"
@@ -16,41 +14,46 @@ namespace {
 
 using Json = nlohmann::json;
 
-Scalar finite_of(const Json& j)
+// The state file's numbers: what no editor writes is damage.
+Scalar real_at(const CheckedJson& j, const char* key, bool zero_allowed)
 {
-    const Scalar v = j.get<Scalar>();
-    if (!std::isfinite(v))
-        throw std::invalid_argument("a coordinate is not a finite number");
-    return v;
+    const CheckedJson v = j[key];
+    const Scalar x = v.number();
+    if (x < 0 || (x == 0 && !zero_allowed))
+        v.fail(std::string("must be a number ") + (zero_allowed ? ">= 0" : "> 0"));
+    return x;
 }
-
-// The state file's numbers: what no editor writes is damage. `j` holds `key`.
-Scalar real_at(const Json& j, const char* key, bool zero_allowed)
-{
-    const Scalar v = j.at(key).get<Scalar>();
-    if (!std::isfinite(v) || v < 0 || (v == 0 && !zero_allowed))
-        throw std::invalid_argument(std::string(key) + " must be a number " +
-                                    (zero_allowed ? ">= 0" : "> 0"));
-    return v;
-}
-Scalar positive_at(const Json& j, const char* key)
+Scalar positive_at(const CheckedJson& j, const char* key)
 {
     return real_at(j, key, false);
 }
-Scalar non_negative_at(const Json& j, const char* key)
+Scalar non_negative_at(const CheckedJson& j, const char* key)
 {
     return real_at(j, key, true);
 }
+// A flag that files of earlier versions may lack.
+bool flag_at(const CheckedJson& j, const char* key, bool fallback)
+{
+    const std::optional<CheckedJson> v = j.find(key);
+    return v ? v->boolean() : fallback;
+}
+// An object that may be null (none) or, in files of earlier versions, absent.
+std::optional<CheckedJson> object_at(const CheckedJson& j, const char* key)
+{
+    std::optional<CheckedJson> v = j.find(key);
+    return v && !v->is_null() ? v : std::nullopt;
+}
+
 } // namespace
 
-int count_at(const Json& j, const char* key, int lo)
+int count_at(const CheckedJson& j, const char* key, int lo)
 {
-    const Json& v = j.at(key);
-    if (!v.is_number_integer() || v.get<std::int64_t>() < lo ||
-        v.get<std::int64_t>() > std::numeric_limits<int>::max())
-        throw std::invalid_argument(std::string(key) + " must be an integer from " +
-                                    std::to_string(lo) + " to 2147483647");
-    return static_cast<int>(v.get<std::int64_t>());
+    const CheckedJson v = j[key];
+    const auto& raw = v.raw();
+    if (!raw.is_number_integer() || raw.get<std::int64_t>() < lo ||
+        raw.get<std::int64_t>() > std::numeric_limits<int>::max())
+        v.fail("must be an integer from " + std::to_string(lo) + " to 2147483647");
+    return static_cast<int>(raw.get<std::int64_t>());
 }
 
 namespace {
@@ -63,17 +66,11 @@ Json vec3s(const std::vector<Vec3>& v)
     return j;
 }
 
-std::vector<Vec3> vec3s_of(const Json& j)
+std::vector<Vec3> vec3s_of(const CheckedJson& j)
 {
-    if (!j.is_array())
-        throw std::invalid_argument("targets and normals must be lists");
     std::vector<Vec3> v;
-    for (const Json& p : j)
-    {
-        if (!p.is_array() || p.size() != 3)
-            throw std::invalid_argument("a point or normal must be [x, y, z]");
-        v.push_back({finite_of(p[0]), finite_of(p[1]), finite_of(p[2])});
-    }
+    for (const CheckedJson& p : j.elements())
+        v.push_back(p.vec3());
     return v;
 }
 
@@ -97,69 +94,67 @@ Json set_json(const ConstraintSet& s)
 namespace {
 
 // Element indices in [0, end), as a list or runs (parse_index_list): `what` names them.
-std::vector<Index> indices_of(const Json& j, Index end, const char* what)
+std::vector<Index> indices_of(const CheckedJson& j, Index end, const char* what)
 {
+    const std::string refusal = std::string("must be indices of this mesh's ") + what;
     std::int64_t budget = end; // a set lists each element at most once
     std::vector<Index> out;
     try
     {
-        out = parse_index_list(j, std::string(what), budget);
+        out = parse_index_list(j, budget);
     }
-    catch (const RecipeError& e)
+    catch (const JsonValueError& e)
     {
-        throw std::invalid_argument(std::string("a set's ") + what +
-                                    " must be indices of this mesh's " + what + " (" + e.key() +
-                                    ": " + e.message() + ")");
+        j.fail(refusal + " (" + e.path() + ": " + e.why() + ")");
     }
     for (const Index i : out)
         if (i >= end)
-            throw std::invalid_argument(std::string("a set's ") + what +
-                                        " must be indices of this mesh's " + what);
+            j.fail(refusal);
     return out;
 }
 
 } // namespace
 
-ConstraintSet set_of(const Json& j, Index vertices, Index faces)
+ConstraintSet set_of(const CheckedJson& j, Index vertices, Index faces)
 {
     ConstraintSet s;
-    s.name = j.at("name").get<std::string>();
-    const std::optional<ConstraintKind> kind = kind_named(j.at("kind").get<std::string>());
+    s.name = j["name"].text();
+    const std::optional<ConstraintKind> kind = kind_named(j["kind"].text());
     if (!kind)
-        throw std::invalid_argument("unknown set kind");
+        j["kind"].fail("is not a set kind");
     s.kind = *kind;
-    s.vertices = indices_of(j.at("vertices"), vertices, "vertices");
-    s.faces = indices_of(j.at("faces"), faces, "faces");
-    s.targets = vec3s_of(j.at("targets"));
-    s.normals = vec3s_of(j.at("normals"));
+    s.vertices = indices_of(j["vertices"], vertices, "vertices");
+    s.faces = indices_of(j["faces"], faces, "faces");
+    s.targets = vec3s_of(j["targets"]);
+    s.normals = vec3s_of(j["normals"]);
     if (!s.targets.empty() && s.targets.size() != s.vertices.size())
-        throw std::invalid_argument("a set's targets must be one per vertex");
+        j["targets"].fail("must be one per vertex");
     if (!s.normals.empty() && s.normals.size() != s.faces.size())
-        throw std::invalid_argument("a set's normals must be one per face");
-    const Json& color = j.at("color");
+        j["normals"].fail("must be one per face");
+    const CheckedJson color = j["color"];
     if (!color.is_array() || color.size() != 3)
-        throw std::invalid_argument("a set's colour must be [r, g, b]");
-    for (int c = 0; c < 3; ++c)
+        color.fail("must be a colour [r, g, b]");
+    for (size_t c = 0; c < 3; ++c)
     {
-        const Scalar v = color[static_cast<size_t>(c)].get<Scalar>();
+        const Scalar v = color.at(c).number();
         if (!(v >= 0 && v <= 1))
-            throw std::invalid_argument("a set's colour must be fractions in [0, 1]");
-        s.color[static_cast<size_t>(c)] = static_cast<float>(v);
+            color.at(c).fail("must be in [0, 1] (a colour must be fractions)");
+        s.color[c] = static_cast<float>(v);
     }
-    s.visible = j.at("visible").get<bool>();
-    s.enabled = j.value("enabled", true); // files of earlier versions have neither
-    if (j.contains("mu") && !j.at("mu").is_null())
+    s.visible = j["visible"].boolean();
+    s.enabled = flag_at(j, "enabled", true); // files of earlier versions have neither
+    if (object_at(j, "mu"))
         s.mu = non_negative_at(j, "mu");
-    s.weights = j.value("weights", std::vector<Scalar>{}); // earlier files have no maps
-    if (!s.weights.empty() && (s.weights.size() != s.vertices.size() || !takes_weight_map(s.kind)))
-        throw std::invalid_argument(
-            "a weight map needs an anchor or region set, and one "
-            "weight per vertex");
-    for (const Scalar w : s.weights)
-        if (!(w >= 0) || !std::isfinite(w) || (s.kind == ConstraintKind::Region && w > 1))
-            throw std::invalid_argument(
-                "a weight map's values must be in [0, 1] (region) or "
-                ">= 0 (anchor)");
+    if (const auto weights = j.find("weights")) // earlier files have no maps
+    {
+        s.weights = weights->numbers(
+            0, s.kind == ConstraintKind::Region ? 1 : std::numeric_limits<double>::infinity());
+        if (!s.weights.empty() &&
+            (s.weights.size() != s.vertices.size() || !takes_weight_map(s.kind)))
+            weights->fail(
+                "does not fit: a weight map needs an anchor or region set, and one "
+                "weight per vertex");
+    }
     return s;
 }
 
@@ -200,60 +195,51 @@ Json settings_json(const SolverSettings& s)
             {"bending", s.bending ? bending_json(*s.bending) : Json(nullptr)}};
 }
 
-SolverSettings settings_of(const Json& j)
+SolverSettings settings_of(const CheckedJson& j)
 {
     SolverSettings s;
-    s.optimal_step = j.at("optimal_step").get<bool>();
+    s.optimal_step = j["optimal_step"].boolean();
     s.lambda = positive_at(j, "lambda");
     s.tolerance = non_negative_at(j, "tolerance");
     s.iterations_per_frame = count_at(j, "iterations_per_frame", 1);
-    if (j.contains("steps_per_run")) // older files have none
+    if (j.has("steps_per_run")) // older files have none
         s.steps_per_run = count_at(j, "steps_per_run", 1);
-    s.until_converged = j.value("until_converged", s.until_converged);
+    s.until_converged = flag_at(j, "until_converged", s.until_converged);
     s.anchor_mu = non_negative_at(j, "anchor_mu");
     s.centroid_mu = non_negative_at(j, "centroid_mu");
-    s.denominator = j.at("exact_denominator").get<bool>() ? CentroidDenominator::Exact
-                                                          : CentroidDenominator::Paper;
+    s.denominator =
+        j["exact_denominator"].boolean() ? CentroidDenominator::Exact : CentroidDenominator::Paper;
     s.normal_mu = non_negative_at(j, "normal_mu");
     s.normal_source =
-        j.at("smoothed_normals").get<bool>() ? NormalSource::Smoothed : NormalSource::Initial;
+        j["smoothed_normals"].boolean() ? NormalSource::Smoothed : NormalSource::Initial;
     s.normal_smoothing_iterations = count_at(j, "normal_smoothing_iterations", 0);
-    if (j.contains("adaptive_smoothing") && !j["adaptive_smoothing"].is_null()) // older: none
-        s.adaptive_smoothing =
-            AdaptiveIterations{non_negative_at(j["adaptive_smoothing"], "per_noise"),
-                               non_negative_at(j["adaptive_smoothing"], "strength")};
+    if (const auto adaptive = object_at(j, "adaptive_smoothing")) // older: none
+        s.adaptive_smoothing = AdaptiveIterations{non_negative_at(*adaptive, "per_noise"),
+                                                  non_negative_at(*adaptive, "strength")};
     s.normal_smoothing_lambda = positive_at(j, "normal_smoothing_lambda");
     s.soft_normal_mu = non_negative_at(j, "soft_normal_mu");
-    s.joint = j.at("joint").get<bool>();
+    s.joint = j["joint"].boolean();
     s.gamma = non_negative_at(j, "gamma");
     // Older files have none of these: the defaults (Jacobi, uniform weights, no volume).
-    s.method = j.value("taubin", false)     ? Method::Taubin
-               : j.value("direct", false)   ? Method::Direct
-               : j.value("cg", false)       ? Method::ConjugateGradient
-               : j.value("implicit", false) ? Method::Implicit
-                                            : Method::Jacobi;
-    if (j.contains("time"))
-    {
-        s.time = j.at("time").get<Scalar>();
-        if (!(std::isfinite(s.time) && s.time > 0))
-            throw std::invalid_argument("time must be a finite number > 0");
-    }
-    if (j.contains("taubin_mu"))
-    {
-        s.taubin_mu = j.at("taubin_mu").get<Scalar>();
-        if (!std::isfinite(s.taubin_mu))
-            throw std::invalid_argument("taubin_mu must be a finite number");
-    }
-    if (j.contains("bilateral") && !j["bilateral"].is_null())
-        s.bilateral = parse_bilateral(j["bilateral"], "settings.bilateral");
-    s.keep_volume = j.value("keep_volume", false);
-    s.volume.open = j.value("volume_open_capped", true) ? OpenVolume::Capped : OpenVolume::None;
-    s.volume.free_components_only = j.value("volume_free_components", false);
-    s.prevent_flips = j.value("prevent_flips", false);
-    if (j.contains("falloff") && !j["falloff"].is_null())
-        s.falloff = parse_falloff(j["falloff"], "settings.falloff");
-    if (j.contains("bending") && !j["bending"].is_null())
-        s.bending = parse_bending(j["bending"], "settings.bending");
+    s.method = flag_at(j, "taubin", false)     ? Method::Taubin
+               : flag_at(j, "direct", false)   ? Method::Direct
+               : flag_at(j, "cg", false)       ? Method::ConjugateGradient
+               : flag_at(j, "implicit", false) ? Method::Implicit
+                                               : Method::Jacobi;
+    if (const auto time = j.find("time"))
+        s.time = time->positive();
+    if (const auto mu = j.find("taubin_mu"))
+        s.taubin_mu = mu->number();
+    if (const auto b = object_at(j, "bilateral"))
+        s.bilateral = parse_bilateral(*b);
+    s.keep_volume = flag_at(j, "keep_volume", false);
+    s.volume.open = flag_at(j, "volume_open_capped", true) ? OpenVolume::Capped : OpenVolume::None;
+    s.volume.free_components_only = flag_at(j, "volume_free_components", false);
+    s.prevent_flips = flag_at(j, "prevent_flips", false);
+    if (const auto f = object_at(j, "falloff"))
+        s.falloff = parse_falloff(*f);
+    if (const auto b = object_at(j, "bending"))
+        s.bending = parse_bending(*b);
     return s;
 }
 

@@ -99,32 +99,22 @@ nlohmann::json editor_json(const Document& d)
 }
 
 // The sets of an "editor" object, checked against the mesh (in the file's numbering), in
-// the document's numbering; with its settings and up axis.
-// \throw std::invalid_argument, nlohmann::json::exception
-ImportedRecipe imported_editor(const nlohmann::json& j, const Document& d)
+// the document's numbering; with its settings and up axis. \throw JsonValueError
+ImportedRecipe imported_editor(const CheckedJson& j, const Document& d)
 {
     ImportedRecipe out;
     const Index nv = d.mesh.vertex_count(), nf = d.mesh.face_count();
-    const nlohmann::json& sets = j.at("sets");
+    const CheckedJson sets = j["sets"];
     if (!sets.is_array())
-        throw std::invalid_argument("sets must be a list");
-    for (size_t k = 0; k < sets.size(); ++k)
-    {
-        try
-        {
-            out.sets.push_back(
-                renumbered(set_of(sets[k], nv, nf), d.order.vertex_index, d.order.face_index));
-        }
-        catch (const std::exception& e)
-        {
-            throw std::invalid_argument("sets[" + std::to_string(k) + "]: " + e.what());
-        }
-    }
-    out.settings = settings_of(j.at("solver"));
-    const std::optional<UpAxis> up = up_axis_named(j.at("up").get<std::string>());
-    if (!up)
-        throw std::invalid_argument("up must be an axis such as \"+z\"");
-    out.up = *up;
+        sets.fail("must be a list");
+    for (const CheckedJson& s : sets.elements())
+        out.sets.push_back(renumbered(set_of(s, nv, nf), d.order.vertex_index, d.order.face_index));
+    out.settings = settings_of(j["solver"]);
+    const CheckedJson up = j["up"];
+    const std::optional<UpAxis> axis = up_axis_named(up.text());
+    if (!axis)
+        up.fail("must be an axis such as \"+z\"");
+    out.up = *axis;
     out.editor = true;
     return out;
 }
@@ -146,20 +136,13 @@ ImportedRecipe import_recipe(const Document& document, const std::string& path)
     const Recipe internal =
         renumber_recipe(recipe, document.order.vertex_index, document.order.face_index);
     ImportedRecipe from_sections = sets_from_recipe(internal, document.mesh);
-    const nlohmann::json j = nlohmann::json::parse(text); // (parse_recipe read it)
-    if (!j.contains("editor") || !j["editor"].contains("sets"))
+    const std::optional<CheckedJson> saved =
+        CheckedJson::parse(text, path).find("editor"); // (parse_recipe read it)
+    if (!saved || !saved->has("sets"))
         return from_sections;
     // The editor's own sets, names, colours and maps as they were; taken when they still
     // make the recipe's sections (a file edited by hand since may not: its sections then).
-    ImportedRecipe editor;
-    try
-    {
-        editor = imported_editor(j["editor"], document);
-    }
-    catch (const std::exception& e)
-    {
-        throw InvalidInputError("'" + path + "': editor." + e.what());
-    }
+    ImportedRecipe editor = imported_editor(*saved, document);
     editor.iterations = from_sections.iterations;
     editor.description = from_sections.description;
     // Compared as written: in the file's numbering and order.

@@ -19,6 +19,7 @@
 
 #include "app/editor/edit_state_json.h"
 #include "core/errors.h"
+#include "core/io/checked_json.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 
@@ -134,18 +135,17 @@ std::optional<RecoveryInfo> find_recovery(const std::string& mesh_path, const st
         return std::nullopt;
     try
     {
-        const Json j = Json::parse(io::read_file((dir / "state.json").string()));
-        if (!j.at("pid").is_number_integer())
-            return std::nullopt; // damaged
-        RecoveryInfo info{dir.string(), j.at("mesh").get<std::string>(), j.at("pid").get<long>(),
-                          j.at("saved_at").get<std::string>()};
+        const CheckedJson j =
+            CheckedJson::parse(io::read_file((dir / "state.json").string()), "state.json");
+        RecoveryInfo info{dir.string(), j["mesh"].text(), static_cast<long>(j["pid"].integer()),
+                          j["saved_at"].text()};
         if (info.mesh_path != absolute(mesh_path) || running(info.pid))
             return std::nullopt; // another mesh's, or a session still open
         return info;
     }
     catch (const std::exception&)
     {
-        return std::nullopt; // unreadable: nothing to offer
+        return std::nullopt; // unreadable or damaged: nothing to offer
     }
 }
 
@@ -168,7 +168,7 @@ void restore_recovery_files(const RecoveryFiles& files, Document& d)
     Document next = d;
     try
     {
-        const Json j = Json::parse(files.state);
+        const CheckedJson j = CheckedJson::parse(files.state, state_file.string());
         const Index nv = d.mesh.vertex_count(), nf = d.mesh.face_count();
         const std::int64_t saved_nv = count_at(j, "vertices", 0),
                            saved_nf = count_at(j, "faces", 0);
@@ -192,30 +192,33 @@ void restore_recovery_files(const RecoveryFiles& files, Document& d)
         next.selected_vertices.assign(selection.begin(), selection.begin() + nv);
         next.selected_faces.assign(selection.begin() + nv, selection.end());
         next.sets.clear();
-        const Json& sets = j.at("sets");
+        const CheckedJson sets = j["sets"];
         if (!sets.is_array())
-            throw std::invalid_argument("sets must be a list");
-        for (const Json& s : sets)
+            sets.fail("must be a list");
+        for (const CheckedJson& s : sets.elements())
             next.sets.push_back(set_of(s, nv, nf));
-        next.solver = settings_of(j.at("solver"));
+        next.solver = settings_of(j["solver"]);
         next.steps_from_base = count_at(j, "steps_from_base", 0);
-        if (j.contains("up")) // (older files have none: the session's stays)
+        if (const auto up = j.find("up")) // (older files have none: the session's stays)
         {
-            const std::optional<UpAxis> up = up_axis_named(j.at("up").get<std::string>());
-            if (!up)
-                throw std::invalid_argument("up must be an axis such as \"+z\"");
-            next.up_axis = *up;
+            const std::optional<UpAxis> axis = up_axis_named(up->text());
+            if (!axis)
+                up->fail("must be an axis such as \"+z\"");
+            next.up_axis = *axis;
         }
-        next.reproducible = j.at("reproducible").get<bool>();
+        next.reproducible = j["reproducible"].boolean();
     }
-    catch (const InvalidInputError&)
-    {
-        throw;
-    }
-    catch (const std::exception& e)
+    // What no editor writes, said as "damaged": "(sets[1].mu must be a number >= 0)".
+    catch (const JsonValueError& e)
     {
         throw InvalidInputError("'" + state_file.string() + "': damaged recovery file (" +
-                                e.what() + ")");
+                                e.path() + " " + e.why() + ")");
+    }
+    catch (const JsonSyntaxError& e)
+    {
+        throw InvalidInputError("'" + state_file.string() + "': damaged recovery file (" +
+                                "not valid JSON at line " + std::to_string(e.line()) + ", column " +
+                                std::to_string(e.column()) + ": " + e.why() + ")");
     }
     next.modified = true;
     d = std::move(next);

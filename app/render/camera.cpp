@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/errors.h"
+#include "core/io/checked_json.h"
 #include "core/parallel/parallel.h"
 
 namespace meshfair::app {
@@ -299,123 +300,107 @@ std::string to_json(const Camera& c)
 
 namespace {
 
-[[noreturn]] void bad_field(const std::string& name, const std::string& field,
-                            const std::string& why)
-{
-    throw InvalidInputError("'" + name + "': view field '" + field + "' " + why);
-}
-
-double finite_number(const nlohmann::json& j, const std::string& name, const std::string& field)
-{
-    if (!j.is_number())
-        bad_field(name, field, "must be a number");
-    const double v = j.get<double>();
-    if (!std::isfinite(v))
-        bad_field(name, field, "must be finite");
-    return v;
-}
-
 template <int N>
-glm::vec<N, double> vector_field(const nlohmann::json& j, const std::string& name,
-                                 const std::string& field)
+glm::vec<N, double> vector_field(const CheckedJson& j)
 {
     if (!j.is_array() || j.size() != N)
-        bad_field(name, field, "must be an array of " + std::to_string(N) + " numbers");
+        j.fail("must be an array of " + std::to_string(N) + " numbers");
     glm::vec<N, double> v;
     for (int k = 0; k < N; ++k)
-        v[k] = finite_number(j[static_cast<size_t>(k)], name, field);
+        v[k] = j.at(static_cast<size_t>(k)).number();
     return v;
 }
 
-} // namespace
-
-Camera camera_from_json(const std::string& text, const std::string& name, const Box3* scene)
+// A view's field that must be > 0: refused in the view file's words.
+double positive_field(const CheckedJson& j)
 {
-    nlohmann::json j;
-    try
-    {
-        j = nlohmann::json::parse(text);
-    }
-    catch (const nlohmann::json::parse_error& e)
-    {
-        // The message holds "at line L, column C".
-        throw InvalidInputError("'" + name + "': not JSON: " + e.what());
-    }
-    if (!j.is_object())
-        throw InvalidInputError("'" + name + "': a view must be a JSON object");
-    static const char* const known[] = {
-        "target",        "distance",     "rotation",     "projection",
-        "fov_y_degrees", "scene_center", "scene_radius", "up"};
-    for (const auto& [key, value] : j.items())
-        if (std::find(std::begin(known), std::end(known), key) == std::end(known))
-            bad_field(name, key, "is unknown");
+    const double v = j.number();
+    if (v <= 0)
+        j.fail("must be positive");
+    return v;
+}
+
+Camera read_view(const CheckedJson& j, const Box3* scene)
+{
+    for (const auto& [key, value] : j.members())
+        if (key != "target" && key != "distance" && key != "rotation" && key != "projection" &&
+            key != "fov_y_degrees" && key != "scene_center" && key != "scene_radius" && key != "up")
+            value.fail("is unknown");
     Camera c;
-    if (j.contains("target"))
-        c.target = vector_field<3>(j["target"], name, "target");
-    if (j.contains("distance"))
+    if (const auto target = j.find("target"))
+        c.target = vector_field<3>(*target);
+    if (const auto distance = j.find("distance"))
+        c.distance = positive_field(*distance);
+    if (const auto rotation = j.find("rotation"))
     {
-        c.distance = finite_number(j["distance"], name, "distance");
-        if (c.distance <= 0)
-            bad_field(name, "distance", "must be positive");
-    }
-    if (j.contains("rotation"))
-    {
-        const glm::dvec4 q = vector_field<4>(j["rotation"], name, "rotation");
-        const double len = glm::length(q);
-        if (len < 1e-9)
-            bad_field(name, "rotation", "must be a non-zero quaternion (w x y z)");
+        const glm::dvec4 q = vector_field<4>(*rotation);
+        if (glm::length(q) < 1e-9)
+            rotation->fail("must be a non-zero quaternion (w x y z)");
         c.rotation = glm::normalize(glm::dquat(q.x, q.y, q.z, q.w));
     }
-    if (j.contains("projection"))
+    if (const auto projection = j.find("projection"))
+        c.projection = projection->choice<Projection>(
+            {{"perspective", Projection::Perspective}, {"orthographic", Projection::Orthographic}});
+    if (const auto fov = j.find("fov_y_degrees"))
     {
-        const auto& p = j["projection"];
-        if (p == "perspective")
-            c.projection = Projection::Perspective;
-        else if (p == "orthographic")
-            c.projection = Projection::Orthographic;
-        else
-            bad_field(name, "projection", "must be \"perspective\" or \"orthographic\"");
-    }
-    if (j.contains("fov_y_degrees"))
-    {
-        c.fov_y_degrees = finite_number(j["fov_y_degrees"], name, "fov_y_degrees");
+        c.fov_y_degrees = fov->number();
         if (c.fov_y_degrees <= 0 || c.fov_y_degrees >= 180)
-            bad_field(name, "fov_y_degrees", "must be in (0, 180)");
+            fov->fail("must be in (0, 180)");
     }
     if (scene != nullptr)
     {
         c.scene_center = scene->center();
         c.scene_radius = scene->radius();
     }
-    if (j.contains("up"))
+    if (const auto up = j.find("up"))
     {
-        const std::optional<UpAxis> up =
-            j["up"].is_string() ? up_axis_named(j["up"].get<std::string>()) : std::nullopt;
-        if (!up)
-            bad_field(name, "up", "must be \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"");
-        c.up_axis = *up;
+        const std::optional<UpAxis> axis =
+            up->is_string() ? up_axis_named(up->text()) : std::nullopt;
+        if (!axis)
+            up->fail("must be \"+x\", \"-x\", \"+y\", \"-y\", \"+z\" or \"-z\"");
+        c.up_axis = *axis;
     }
-    if (scene != nullptr && !scene->empty() && (!j.contains("target") || !j.contains("distance")))
+    if (scene != nullptr && !scene->empty() && (!j.has("target") || !j.has("distance")))
     {
         // A view that says how to look but not at what (written by hand: `{"up": "z"}`
         // alone): the mesh framed, as Home frames it, for what the file leaves out; the
         // default target and distance would put the eye anywhere, inside the mesh too.
         Camera framed = c;
         framed.frame(*scene, 1.0);
-        if (!j.contains("target"))
+        if (!j.has("target"))
             c.target = framed.target;
-        if (!j.contains("distance"))
+        if (!j.has("distance"))
             c.distance = framed.distance;
     }
-    if (j.contains("scene_center"))
-        c.scene_center = vector_field<3>(j["scene_center"], name, "scene_center");
-    if (j.contains("scene_radius"))
-    {
-        c.scene_radius = finite_number(j["scene_radius"], name, "scene_radius");
-        if (c.scene_radius <= 0)
-            bad_field(name, "scene_radius", "must be positive");
-    }
+    if (const auto center = j.find("scene_center"))
+        c.scene_center = vector_field<3>(*center);
+    if (const auto radius = j.find("scene_radius"))
+        c.scene_radius = positive_field(*radius);
     return c;
+}
+
+} // namespace
+
+Camera camera_from_json(const std::string& text, const std::string& name, const Box3* scene)
+{
+    // A view file's errors keep their words: "'v.json': view field 'distance' must be
+    // positive", "'v.json': not JSON: at line 1, column 15: ...".
+    try
+    {
+        const CheckedJson j = CheckedJson::parse(text, name);
+        if (!j.is_object())
+            throw InvalidInputError("'" + name + "': a view must be a JSON object");
+        return read_view(j, scene);
+    }
+    catch (const JsonValueError& e)
+    {
+        throw InvalidInputError("'" + name + "': view field '" + e.path() + "' " + e.why());
+    }
+    catch (const JsonSyntaxError& e)
+    {
+        throw InvalidInputError("'" + name + "': not JSON: at line " + std::to_string(e.line()) +
+                                ", column " + std::to_string(e.column()) + ": " + e.why());
+    }
 }
 
 } // namespace meshfair::app

@@ -3,7 +3,6 @@
 #include "core/recipe/recipe_json.h"
 
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <string_view>
 
@@ -16,179 +15,79 @@ namespace {
 
 using Json = nlohmann::json;
 
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+
 std::string child(const std::string& key, const std::string& name)
 {
-    return key.empty() ? name : key + "." + name;
+    return key + "." + name;
 }
 
-//! Which of `names` the string `value` is (its index).
-//! \throw RecipeError naming `key`: must be "a", "b" or "c".
-size_t choice(const Json& value, const std::string& key,
-              std::initializer_list<std::string_view> names)
+Scalar weight(const CheckedJson& j)
 {
-    size_t k = 0;
-    std::string listed;
-    for (const std::string_view name : names)
-    {
-        if (value.is_string() && value.get_ref<const std::string&>() == name)
-            return k;
-        listed += std::string(k == 0                  ? ""
-                              : k + 1 == names.size() ? " or "
-                                                      : ", ") +
-                  "\"" + std::string(name) + "\"";
-        ++k;
-    }
-    throw RecipeError(key, "must be " + listed);
+    return j.number(0, kUnbounded);
 }
 
-void expect_object(const Json& j, const std::string& key,
-                   std::initializer_list<std::string_view> allowed)
+int count(const CheckedJson& j)
 {
-    if (!j.is_object())
-        throw RecipeError(key.empty() ? "(top level)" : key, "must be an object");
-    for (const auto& [name, value] : j.items())
-    {
-        bool known = false;
-        for (const auto a : allowed)
-            known = known || name == a;
-        if (!known)
-        {
-            std::string list;
-            for (const auto a : allowed)
-                list += (list.empty() ? "" : ", ") + std::string(a);
-            throw RecipeError(child(key, name), list.empty()
-                                                    ? "unknown key (this section takes none)"
-                                                    : "unknown key (allowed here: " + list + ")");
-        }
-    }
-}
-
-// A value for an error message: scalars as written, containers by kind only, so a
-// message never grows with (nor recurses into) whatever the file nests there.
-std::string describe(const Json& j)
-{
-    if (j.is_array())
-        return "an array";
-    if (j.is_object())
-        return "an object";
-    std::string text = j.dump();
-    if (text.size() > 40)
-        text = text.substr(0, 40) + "...";
-    return text;
-}
-
-Scalar number(const Json& j, const std::string& key)
-{
-    if (!j.is_number())
-        throw RecipeError(key, "must be a number");
-    const Scalar v = j.get<Scalar>();
-    if (!std::isfinite(v))
-        throw RecipeError(key, "must be finite");
-    return v;
-}
-
-Scalar weight(const Json& j, const std::string& key)
-{
-    const Scalar v = number(j, key);
-    if (v < 0)
-        throw RecipeError(key, "must be >= 0 (got " + describe(j) + ")");
-    return v;
-}
-
-std::int64_t integer(const Json& j, const std::string& key)
-{
-    if (j.is_number_integer())
-        return j.get<std::int64_t>();
-    // Integers past uint64 arrive as doubles.
-    if (j.is_number_unsigned() || (j.is_number_float() && std::abs(j.get<double>()) >= 9.2e18))
-        throw RecipeError(key, "is out of range (got " + describe(j) + ")");
-    throw RecipeError(key, "must be an integer (got " + describe(j) + ")");
-}
-
-int count(const Json& j, const std::string& key)
-{
-    const std::int64_t v = integer(j, key);
-    if (v < 0 || v > std::numeric_limits<int>::max())
-        throw RecipeError(key, "must be an integer in [0, 2147483647] (got " + describe(j) + ")");
-    return static_cast<int>(v);
+    return static_cast<int>(j.integer(0, std::numeric_limits<int>::max()));
 }
 
 // The indices the recipe being parsed may still list (RecipeLimits::max_listed): set by
 // parse_recipe for its thread, taken from by every index list.
 thread_local std::int64_t listed_left = RecipeLimits{}.max_listed;
 
-std::vector<Index> indices(const Json& j, const std::string& key)
+std::vector<Index> indices(const CheckedJson& j)
 {
-    return parse_index_list(j, key, listed_left);
+    return parse_index_list(j, listed_left);
 }
 
-IndexSet index_set(const Json& j, const std::string& key)
+IndexSet index_set(const CheckedJson& j)
 {
     IndexSet s;
     if (j.is_string())
     {
-        if (j.get<std::string>() != "all")
-            throw RecipeError(key, "must be \"all\" or an array of indices");
+        if (j.text() != "all")
+            j.fail("must be \"all\" or an array of indices");
         s.all = true;
         return s;
     }
-    s.indices = indices(j, key);
+    s.indices = indices(j);
     return s;
 }
 
-std::vector<Vec3> points(const Json& j, const std::string& key)
+std::vector<Vec3> points(const CheckedJson& j)
 {
     if (!j.is_array())
-        throw RecipeError(key, "must be an array of [x, y, z] triples");
+        j.fail("must be an array of [x, y, z] triples");
     std::vector<Vec3> out;
     out.reserve(j.size());
-    for (size_t k = 0; k < j.size(); ++k)
-    {
-        const Json& p = j[k];
-        if (!p.is_array() || p.size() != 3)
-            throw RecipeError(recipe_item_key(key, k), "must be an [x, y, z] triple");
-        Vec3 v;
-        for (size_t a = 0; a < 3; ++a)
-            v[a] = number(p[a], recipe_item_key(recipe_item_key(key, k), a));
-        out.push_back(v);
-    }
+    for (const CheckedJson& p : j.elements())
+        out.push_back(p.vec3());
     return out;
 }
 
-Scalar step_length(const Json& j, const std::string& key)
-{
-    const Scalar v = number(j, key);
-    if (!(v > 0))
-        throw RecipeError(key, "must be > 0 (got " + describe(j) + ")");
-    return v;
-}
-
-std::vector<Scalar> weights(const Json& j, const std::string& key)
+std::vector<Scalar> weights(const CheckedJson& j)
 {
     if (!j.is_array())
-        throw RecipeError(key, "must be an array of numbers >= 0");
-    std::vector<Scalar> out;
-    out.reserve(j.size());
-    for (size_t k = 0; k < j.size(); ++k)
-        out.push_back(weight(j[k], recipe_item_key(key, k)));
-    return out;
+        j.fail("must be an array of numbers >= 0");
+    return j.numbers(0, kUnbounded);
 }
 
 // The sets a section gives: one object, or a non-empty array of them (each parsed by
-// parse_one with its key, "soft[1]").
+// parse_one, named by its path, "soft[1]").
 template <typename Set, typename ParseOne>
-std::vector<Set> sets_of(const Json& j, const std::string& key, ParseOne parse_one)
+std::vector<Set> sets_of(const CheckedJson& j, ParseOne parse_one)
 {
     if (j.is_object())
-        return {parse_one(j, key)};
+        return {parse_one(j)};
     if (!j.is_array())
-        throw RecipeError(key, "must be an object or an array of objects");
-    if (j.empty())
-        throw RecipeError(key, "must hold at least one set (leave the section out for none)");
+        j.fail("must be an object or an array of objects");
+    if (j.size() == 0)
+        j.fail("must hold at least one set (leave the section out for none)");
     std::vector<Set> sets;
     sets.reserve(j.size());
-    for (size_t k = 0; k < j.size(); ++k)
-        sets.push_back(parse_one(j[k], recipe_item_key(key, k)));
+    for (const CheckedJson& s : j.elements())
+        sets.push_back(parse_one(s));
     return sets;
 }
 
@@ -270,38 +169,36 @@ Set single_set(Set set, const IndexSet& elements)
     return set;
 }
 
-void parse_lambda(const Json& j, Recipe& r)
+void parse_lambda(const CheckedJson& j, Recipe& r)
 {
     if (j.is_string())
     {
-        if (j.get<std::string>() != "optimal")
-            throw RecipeError("lambda", "must be a number > 0 or \"optimal\"");
+        if (j.text() != "optimal")
+            j.fail("must be a number > 0 or \"optimal\"");
         r.optimal_step = true;
         return;
     }
-    r.lambda = step_length(j, "lambda");
+    r.lambda = j.positive();
     r.optimal_step = false;
 }
 
-SoftVertices soft_set(const Json& s, const std::string& key)
+SoftVertices soft_set(const CheckedJson& s)
 {
-    expect_object(s, key, {"vertices", "mu", "targets", "weights"});
-    if (!s.contains("vertices"))
-        throw RecipeError(child(key, "vertices"), "is required");
+    s.only_keys({"vertices", "mu", "targets", "weights"});
     SoftVertices soft;
-    soft.vertices = index_set(s["vertices"], child(key, "vertices"));
-    if (s.contains("mu"))
-        soft.mu = weight(s["mu"], child(key, "mu"));
-    if (s.contains("targets"))
-        soft.targets = points(s["targets"], child(key, "targets"));
-    if (s.contains("weights"))
-        soft.weights = weights(s["weights"], child(key, "weights"));
+    soft.vertices = index_set(s["vertices"]);
+    if (const auto mu = s.find("mu"))
+        soft.mu = weight(*mu);
+    if (const auto targets = s.find("targets"))
+        soft.targets = points(*targets);
+    if (const auto w = s.find("weights"))
+        soft.weights = weights(*w);
     return soft;
 }
 
-SoftVertices parse_soft(const Json& j)
+SoftVertices parse_soft(const CheckedJson& j)
 {
-    const std::vector<SoftVertices> sets = sets_of<SoftVertices>(j, "soft", soft_set);
+    const std::vector<SoftVertices> sets = sets_of<SoftVertices>(j, soft_set);
     if (j.is_object())
         return sets[0];
     if (sets.size() == 1)
@@ -316,30 +213,26 @@ const char* denominator_name(CentroidDenominator d)
     return d == CentroidDenominator::Paper ? "paper" : "exact";
 }
 
-CentroidConstraints centroid_set(const Json& s, const std::string& key)
+CentroidConstraints centroid_set(const CheckedJson& s)
 {
-    expect_object(s, key, {"faces", "mu", "targets", "denominator", "weights"});
-    if (!s.contains("faces"))
-        throw RecipeError(child(key, "faces"), "is required");
+    s.only_keys({"faces", "mu", "targets", "denominator", "weights"});
     CentroidConstraints c;
-    c.faces = index_set(s["faces"], child(key, "faces"));
-    if (s.contains("mu"))
-        c.mu = weight(s["mu"], child(key, "mu"));
-    if (s.contains("targets"))
-        c.targets = points(s["targets"], child(key, "targets"));
-    if (s.contains("denominator"))
-        c.denominator = choice(s["denominator"], child(key, "denominator"), {"paper", "exact"}) == 0
-                            ? CentroidDenominator::Paper
-                            : CentroidDenominator::Exact;
-    if (s.contains("weights"))
-        c.weights = weights(s["weights"], child(key, "weights"));
+    c.faces = index_set(s["faces"]);
+    if (const auto mu = s.find("mu"))
+        c.mu = weight(*mu);
+    if (const auto targets = s.find("targets"))
+        c.targets = points(*targets);
+    if (const auto d = s.find("denominator"))
+        c.denominator = d->choice<CentroidDenominator>(
+            {{"paper", CentroidDenominator::Paper}, {"exact", CentroidDenominator::Exact}});
+    if (const auto w = s.find("weights"))
+        c.weights = weights(*w);
     return c;
 }
 
-CentroidConstraints parse_centroid(const Json& j)
+CentroidConstraints parse_centroid(const CheckedJson& j)
 {
-    const std::vector<CentroidConstraints> sets =
-        sets_of<CentroidConstraints>(j, "centroid", centroid_set);
+    const std::vector<CentroidConstraints> sets = sets_of<CentroidConstraints>(j, centroid_set);
     if (j.is_object())
         return sets[0];
     if (sets.size() == 1)
@@ -371,43 +264,38 @@ const char* source_name(NormalSource source)
     return "given normals";
 }
 
-NormalConstraints normal_set(const Json& s, const std::string& key, bool has_smoothing)
+NormalConstraints normal_set(const CheckedJson& s, bool has_smoothing)
 {
-    expect_object(s, key, {"faces", "mu", "normals", "weights"});
-    if (!s.contains("faces"))
-        throw RecipeError(child(key, "faces"), "is required");
+    s.only_keys({"faces", "mu", "normals", "weights"});
     NormalConstraints n;
-    n.faces = index_set(s["faces"], child(key, "faces"));
-    if (s.contains("mu"))
-        n.mu = weight(s["mu"], child(key, "mu"));
-    if (s.contains("normals"))
+    n.faces = index_set(s["faces"]);
+    if (const auto mu = s.find("mu"))
+        n.mu = weight(*mu);
+    if (const auto v = s.find("normals"))
     {
-        const Json& v = s["normals"];
-        if (v == "initial")
+        if (v->raw() == "initial")
             n.source = NormalSource::Initial;
-        else if (v == "smoothed")
+        else if (v->raw() == "smoothed")
             n.source = NormalSource::Smoothed;
-        else if (v.is_array())
+        else if (v->is_array())
         {
             n.source = NormalSource::Custom;
-            n.normals = points(v, child(key, "normals"));
+            n.normals = points(*v);
         }
         else
-            throw RecipeError(child(key, "normals"),
-                              "must be \"initial\", \"smoothed\" or an array of [x, y, z]");
+            v->fail("must be \"initial\", \"smoothed\" or an array of [x, y, z]");
     }
     else if (has_smoothing)
         n.source = NormalSource::Smoothed;
-    if (s.contains("weights"))
-        n.weights = weights(s["weights"], child(key, "weights"));
+    if (const auto w = s.find("weights"))
+        n.weights = weights(*w);
     return n;
 }
 
-NormalConstraints parse_normal(const Json& j, bool has_smoothing)
+NormalConstraints parse_normal(const CheckedJson& j, bool has_smoothing)
 {
     const std::vector<NormalConstraints> sets = sets_of<NormalConstraints>(
-        j, "normal",
-        [&](const Json& s, const std::string& key) { return normal_set(s, key, has_smoothing); });
+        j, [&](const CheckedJson& s) { return normal_set(s, has_smoothing); });
     if (j.is_object())
         return sets[0];
     if (sets.size() == 1)
@@ -424,164 +312,142 @@ NormalConstraints parse_normal(const Json& j, bool has_smoothing)
     return merge_sets(sets, "normal", &NormalConstraints::faces, &NormalConstraints::normals);
 }
 
-Recipe parse_recipe_json(const Json& j)
+// A "normal_smoothing" section's "hard" or "soft" object: faces required, the rest as given.
+void smoothing_faces(const CheckedJson& h, std::vector<Index>& faces, std::vector<Vec3>& normals)
+{
+    faces = indices(h["faces"]);
+    if (const auto v = h.find("normals"))
+        normals = points(*v);
+}
+
+NormalSmoothing parse_normal_smoothing(const CheckedJson& s)
+{
+    s.only_keys(
+        {"iterations", "lambda", "hard", "soft", "bilateral", "strength", "iterations_per_noise"});
+    NormalSmoothing ns;
+    if (const auto it = s.find("iterations"))
+    {
+        if (!it->is_string())
+            ns.iterations = count(*it);
+        else if (it->raw() != "auto")
+            it->fail("must be a count or \"auto\" (got " + it->describe() + ")");
+        else
+            ns.adaptive = AdaptiveIterations{};
+    }
+    for (const char* key : {"strength", "iterations_per_noise"})
+        if (s.has(key) && !ns.adaptive)
+            s[key].fail(
+                "needs \"iterations\": \"auto\" (it scales the iterations taken from the noise "
+                "in the mesh)");
+    if (const auto strength = s.find("strength"))
+        ns.adaptive->strength = weight(*strength);
+    if (const auto per_noise = s.find("iterations_per_noise"))
+        ns.adaptive->per_noise = weight(*per_noise);
+    if (const auto lambda = s.find("lambda"))
+        ns.lambda = lambda->positive();
+    if (const auto h = s.find("hard"))
+    {
+        h->only_keys({"faces", "normals"});
+        smoothing_faces(*h, ns.hard.faces, ns.hard.normals);
+    }
+    if (const auto h = s.find("soft"))
+    {
+        h->only_keys({"faces", "mu", "normals", "weights"});
+        smoothing_faces(*h, ns.soft.faces, ns.soft.normals);
+        if (const auto mu = h->find("mu"))
+            ns.soft.mu = weight(*mu);
+        if (const auto w = h->find("weights"))
+            ns.soft.weights = weights(*w);
+    }
+    if (const auto b = s.find("bilateral"))
+        ns.bilateral = parse_bilateral(*b);
+    return ns;
+}
+
+Recipe parse_recipe_json(const CheckedJson& j)
 {
     Recipe r;
-    expect_object(
-        j, "", {"description",      "editor", "iterations", "lambda", "tolerance", "method",
-                "taubin_mu",        "region", "hard",       "soft",   "centroid",  "normal",
-                "normal_smoothing", "joint",  "bending",    "volume", "falloff",   "prevent_flips",
-                "factor_budget_mb", "time"});
-    if (j.contains("editor") && !j["editor"].is_object())
-        throw RecipeError("editor", "must be an object (the editor's sets and view)");
-    if (j.contains("description"))
+    j.only_keys({"description",      "editor", "iterations", "lambda", "tolerance", "method",
+                 "taubin_mu",        "region", "hard",       "soft",   "centroid",  "normal",
+                 "normal_smoothing", "joint",  "bending",    "volume", "falloff",   "prevent_flips",
+                 "factor_budget_mb", "time"});
+    if (j.has("editor") && !j["editor"].is_object())
+        j["editor"].fail("must be an object (the editor's sets and view)");
+    if (const auto d = j.find("description"))
+        r.description = d->text();
+    if (const auto it = j.find("iterations"))
+        r.iterations = count(*it);
+    if (const auto lambda = j.find("lambda"))
+        parse_lambda(*lambda, r);
+    if (const auto tolerance = j.find("tolerance"))
+        r.tolerance = weight(*tolerance);
+    if (const auto method = j.find("method"))
+        r.method = method->choice<Method>({{"jacobi", Method::Jacobi},
+                                           {"gradient_descent", Method::GradientDescent},
+                                           {"taubin", Method::Taubin},
+                                           {"direct", Method::Direct},
+                                           {"cg", Method::ConjugateGradient},
+                                           {"implicit", Method::Implicit}});
+    if (const auto time = j.find("time"))
+        r.time = time->number();
+    if (const auto budget = j.find("factor_budget_mb"))
+        r.factor_budget_mb = weight(*budget);
+    if (const auto mu = j.find("taubin_mu"))
+        r.taubin_mu = mu->number();
+    if (const auto s = j.find("region"))
     {
-        if (!j["description"].is_string())
-            throw RecipeError("description",
-                              "must be a string (got " + describe(j["description"]) + ")");
-        r.description = j["description"].get<std::string>();
-    }
-    if (j.contains("iterations"))
-        r.iterations = count(j["iterations"], "iterations");
-    if (j.contains("lambda"))
-        parse_lambda(j["lambda"], r);
-    if (j.contains("tolerance"))
-        r.tolerance = weight(j["tolerance"], "tolerance");
-    if (j.contains("method"))
-    {
-        constexpr Method methods[] = {Method::Jacobi, Method::GradientDescent,   Method::Taubin,
-                                      Method::Direct, Method::ConjugateGradient, Method::Implicit};
-        r.method =
-            methods[choice(j["method"], "method",
-                           {"jacobi", "gradient_descent", "taubin", "direct", "cg", "implicit"})];
-    }
-    if (j.contains("time"))
-        r.time = number(j["time"], "time");
-    if (j.contains("factor_budget_mb"))
-        r.factor_budget_mb = weight(j["factor_budget_mb"], "factor_budget_mb");
-    if (j.contains("taubin_mu"))
-        r.taubin_mu = number(j["taubin_mu"], "taubin_mu");
-    if (j.contains("region"))
-    {
-        const Json& s = j["region"];
-        expect_object(s, "region", {"vertices", "faces"});
-        if (!s.contains("vertices") && !s.contains("faces"))
-            throw RecipeError("region", "needs \"vertices\" or \"faces\"");
+        s->only_keys({"vertices", "faces"});
+        if (!s->has("vertices") && !s->has("faces"))
+            s->fail("needs \"vertices\" or \"faces\"");
         Region region;
-        if (s.contains("vertices"))
-            region.vertices = indices(s["vertices"], "region.vertices");
-        if (s.contains("faces"))
-            region.faces = indices(s["faces"], "region.faces");
+        if (const auto v = s->find("vertices"))
+            region.vertices = indices(*v);
+        if (const auto f = s->find("faces"))
+            region.faces = indices(*f);
         r.region = std::move(region);
     }
-    if (j.contains("hard"))
+    if (const auto s = j.find("hard"))
     {
-        const Json& s = j["hard"];
-        expect_object(s, "hard", {"vertices", "targets"});
-        if (!s.contains("vertices"))
-            throw RecipeError("hard.vertices", "is required");
+        s->only_keys({"vertices", "targets"});
         HardVertices hard;
-        hard.vertices = indices(s["vertices"], "hard.vertices");
-        if (s.contains("targets"))
-            hard.targets = points(s["targets"], "hard.targets");
+        hard.vertices = indices((*s)["vertices"]);
+        if (const auto targets = s->find("targets"))
+            hard.targets = points(*targets);
         r.hard = std::move(hard);
     }
-    if (j.contains("soft"))
-        r.soft = parse_soft(j["soft"]);
-    if (j.contains("centroid"))
-        r.centroid = parse_centroid(j["centroid"]);
-    if (j.contains("normal"))
-        r.normal = parse_normal(j["normal"], j.contains("normal_smoothing"));
-    if (j.contains("normal_smoothing"))
+    if (const auto s = j.find("soft"))
+        r.soft = parse_soft(*s);
+    if (const auto s = j.find("centroid"))
+        r.centroid = parse_centroid(*s);
+    if (const auto s = j.find("normal"))
+        r.normal = parse_normal(*s, j.has("normal_smoothing"));
+    if (const auto s = j.find("normal_smoothing"))
+        r.normal_smoothing = parse_normal_smoothing(*s);
+    if (const auto s = j.find("joint"))
     {
-        const Json& s = j["normal_smoothing"];
-        expect_object(s, "normal_smoothing",
-                      {"iterations", "lambda", "hard", "soft", "bilateral", "strength",
-                       "iterations_per_noise"});
-        NormalSmoothing ns;
-        if (s.contains("iterations") && s["iterations"].is_string())
-        {
-            if (s["iterations"] != "auto")
-                throw RecipeError(
-                    "normal_smoothing.iterations",
-                    "must be a count or \"auto\" (got " + s["iterations"].dump() + ")");
-            ns.adaptive = AdaptiveIterations{};
-        }
-        else if (s.contains("iterations"))
-            ns.iterations = count(s["iterations"], "normal_smoothing.iterations");
-        for (const char* key : {"strength", "iterations_per_noise"})
-            if (s.contains(key) && !ns.adaptive)
-                throw RecipeError(std::string("normal_smoothing.") + key,
-                                  "needs \"iterations\": \"auto\" (it scales the iterations "
-                                  "taken from the noise in the mesh)");
-        if (s.contains("strength"))
-            ns.adaptive->strength = weight(s["strength"], "normal_smoothing.strength");
-        if (s.contains("iterations_per_noise"))
-            ns.adaptive->per_noise =
-                weight(s["iterations_per_noise"], "normal_smoothing.iterations_per_noise");
-        if (s.contains("lambda"))
-            ns.lambda = step_length(s["lambda"], "normal_smoothing.lambda");
-        if (s.contains("hard"))
-        {
-            const Json& h = s["hard"];
-            expect_object(h, "normal_smoothing.hard", {"faces", "normals"});
-            if (!h.contains("faces"))
-                throw RecipeError("normal_smoothing.hard.faces", "is required");
-            ns.hard.faces = indices(h["faces"], "normal_smoothing.hard.faces");
-            if (h.contains("normals"))
-                ns.hard.normals = points(h["normals"], "normal_smoothing.hard.normals");
-        }
-        if (s.contains("soft"))
-        {
-            const Json& h = s["soft"];
-            expect_object(h, "normal_smoothing.soft", {"faces", "mu", "normals", "weights"});
-            if (!h.contains("faces"))
-                throw RecipeError("normal_smoothing.soft.faces", "is required");
-            ns.soft.faces = indices(h["faces"], "normal_smoothing.soft.faces");
-            if (h.contains("mu"))
-                ns.soft.mu = weight(h["mu"], "normal_smoothing.soft.mu");
-            if (h.contains("normals"))
-                ns.soft.normals = points(h["normals"], "normal_smoothing.soft.normals");
-            if (h.contains("weights"))
-                ns.soft.weights = weights(h["weights"], "normal_smoothing.soft.weights");
-        }
-        if (s.contains("bilateral"))
-            ns.bilateral = parse_bilateral(s["bilateral"], "normal_smoothing.bilateral");
-        r.normal_smoothing = std::move(ns);
-    }
-    if (j.contains("joint"))
-    {
-        const Json& s = j["joint"];
-        expect_object(s, "joint", {"gamma"});
+        s->only_keys({"gamma"});
         Joint joint;
-        if (s.contains("gamma"))
-            joint.gamma = weight(s["gamma"], "joint.gamma");
+        if (const auto gamma = s->find("gamma"))
+            joint.gamma = weight(*gamma);
         r.joint = joint;
     }
-    if (j.contains("bending"))
-        r.bending = parse_bending(j["bending"], "bending");
-    if (j.contains("volume"))
+    if (const auto s = j.find("bending"))
+        r.bending = parse_bending(*s);
+    if (const auto s = j.find("volume"))
     {
-        const Json& s = j["volume"];
-        expect_object(s, "volume", {"open", "components"});
+        s->only_keys({"open", "components"});
         KeepVolume volume;
-        if (s.contains("open"))
-            volume.open = choice(s["open"], "volume.open", {"capped", "none"}) == 0
-                              ? OpenVolume::Capped
-                              : OpenVolume::None;
-        if (s.contains("components"))
-            volume.free_components_only =
-                choice(s["components"], "volume.components", {"all", "free"}) == 1;
+        if (const auto open = s->find("open"))
+            volume.open = open->choice<OpenVolume>(
+                {{"capped", OpenVolume::Capped}, {"none", OpenVolume::None}});
+        if (const auto components = s->find("components"))
+            volume.free_components_only = components->choice({"all", "free"}) == 1;
         r.volume = volume;
     }
-    if (j.contains("prevent_flips"))
-    {
-        if (!j["prevent_flips"].is_boolean())
-            throw RecipeError("prevent_flips", "must be true or false");
-        r.prevent_flips = j["prevent_flips"].get<bool>();
-    }
-    if (j.contains("falloff"))
-        r.falloff = parse_falloff(j["falloff"], "falloff");
+    if (const auto flips = j.find("prevent_flips"))
+        r.prevent_flips = flips->boolean();
+    if (const auto s = j.find("falloff"))
+        r.falloff = parse_falloff(*s);
     return r;
 }
 
@@ -600,46 +466,50 @@ Json set_json(const IndexSet& s)
 
 } // namespace
 
-std::vector<Index> parse_index_list(const Json& j, const std::string& key, std::int64_t& budget)
+std::vector<Index> parse_index_list(const CheckedJson& j, std::int64_t& budget)
 {
     if (!j.is_array())
-        throw RecipeError(key, "must be an array of indices and [first, last] runs");
-    const auto index = [&](const Json& v, const std::string& at) {
-        const std::int64_t i = integer(v, at);
-        if (i < 0 || i > kMaxElements)
-            throw RecipeError(at, "index " + std::to_string(i) + " is out of range");
-        return i;
-    };
-    const auto take = [&](std::int64_t n, const std::string& at) {
+        j.fail("must be an array of indices and [first, last] runs");
+    const auto take = [&](std::int64_t n, const CheckedJson& at) {
         if (n > budget)
-            throw RecipeError(
-                at, "lists more indices than a recipe may (" + std::to_string(budget) + " left)");
+            at.fail("lists more indices than a recipe may (" + std::to_string(budget) + " left)");
         budget -= n;
     };
+    const auto index = [](const CheckedJson& v) {
+        const std::int64_t i = v.integer();
+        if (i < 0 || i > kMaxElements)
+            v.fail("index " + std::to_string(i) + " is out of range");
+        return i;
+    };
+    const Json& raw = j.raw();
     std::vector<Index> out;
-    out.reserve(j.size());
-    for (size_t k = 0; k < j.size(); ++k)
+    out.reserve(raw.size());
+    for (size_t k = 0; k < raw.size(); ++k)
     {
-        const std::string at = recipe_item_key(key, k);
-        if (j[k].is_array())
+        // A plain index read as it is: a list of a million makes no value of each.
+        if (raw[k].is_number_unsigned() && raw[k].get<std::uint64_t>() <= kMaxElements &&
+            budget > 0)
         {
-            if (j[k].size() != 2)
-                throw RecipeError(at, "a run must be [first, last]");
-            const std::int64_t first = index(j[k][0], at + "[0]");
-            const std::int64_t last = index(j[k][1], at + "[1]");
-            if (last < first)
-                throw RecipeError(at, "a run's last index must not be below its first (got [" +
-                                          std::to_string(first) + ", " + std::to_string(last) +
-                                          "])");
-            take(last - first + 1, at);
-            for (std::int64_t i = first; i <= last; ++i)
-                out.push_back(static_cast<Index>(i));
+            --budget;
+            out.push_back(static_cast<Index>(raw[k].get<std::uint64_t>()));
+            continue;
         }
-        else
+        const CheckedJson at = j.at(k);
+        if (!at.is_array())
         {
             take(1, at);
-            out.push_back(static_cast<Index>(index(j[k], at)));
+            out.push_back(static_cast<Index>(index(at)));
+            continue;
         }
+        if (at.size() != 2)
+            at.fail("a run must be [first, last]");
+        const std::int64_t first = index(at.at(0)), last = index(at.at(1));
+        if (last < first)
+            at.fail("a run's last index must not be below its first (got [" +
+                    std::to_string(first) + ", " + std::to_string(last) + "])");
+        take(last - first + 1, at);
+        for (std::int64_t i = first; i <= last; ++i)
+            out.push_back(static_cast<Index>(i));
     }
     return out;
 }
@@ -662,47 +532,17 @@ Json index_list_json(std::span<const Index> indices)
     return out;
 }
 
-InvalidInputError json_syntax_error(const std::string& name, const std::string& what)
-{
-    // what is "[json.exception.parse_error.101] parse error at line L, column C: why".
-    const auto at = what.find(" at line ");
-    const auto why = what.find(": ", at == std::string::npos ? 0 : at);
-    if (at == std::string::npos || why == std::string::npos)
-        return InvalidInputError("'" + name + "': not valid JSON: " + what);
-    std::string place = what.substr(at + 9, why - at - 9); // "L, column C"
-    const auto comma = place.find(", column ");
-    if (comma != std::string::npos)
-        place = place.substr(0, comma) + ":" + place.substr(comma + 9);
-    return InvalidInputError("'" + name + "':" + place +
-                             ": not valid JSON: " + what.substr(why + 2));
-}
-
 Recipe parse_recipe(std::string_view json_text, const std::string& name, const RecipeLimits& limits)
 {
     listed_left = limits.max_listed;
-    nlohmann::json j;
-    try
-    {
-        j = Json::parse(json_text.begin(), json_text.end());
-    }
-    catch (const Json::parse_error& e)
-    {
-        throw json_syntax_error(name, e.what());
-    }
-    catch (const Json::exception& e)
-    {
-        // e.g. a number too large for a double: "number overflow parsing '1e400'".
-        const std::string what = e.what();
-        const auto close = what.find("] ");
-        throw InvalidInputError("'" + name + "': not valid JSON: " +
-                                (close == std::string::npos ? what : what.substr(close + 2)));
-    }
+    const CheckedJson j = CheckedJson::parse(json_text, name);
     try
     {
         return parse_recipe_json(j);
     }
     catch (const RecipeError& e)
     {
+        // The rules across a section's sets throw without the file: named here.
         throw RecipeError(e.key(), e.message(), name);
     }
 }
@@ -832,41 +672,54 @@ nlohmann::json recipe_to_json(const Recipe& r)
     return j;
 }
 
-BilateralWeights parse_bilateral(const Json& s, const std::string& key)
+BilateralWeights parse_bilateral(const CheckedJson& s)
 {
-    expect_object(s, key,
-                  {"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors", "guidance"});
+    s.only_keys({"sigma_s", "sigma_r", "noise_scale", "reweight_every", "neighbors", "guidance"});
     BilateralWeights b;
-    if (s.contains("sigma_s"))
-        b.sigma_s = step_length(s["sigma_s"], child(key, "sigma_s"));
-    if (s.contains("sigma_r"))
-        b.sigma_r = step_length(s["sigma_r"], child(key, "sigma_r"));
-    if (s.contains("noise_scale"))
-        b.noise_scale = weight(s["noise_scale"], child(key, "noise_scale"));
-    if (s.contains("reweight_every"))
+    if (const auto sigma = s.find("sigma_s"))
+        b.sigma_s = sigma->positive();
+    if (const auto sigma = s.find("sigma_r"))
+        b.sigma_r = sigma->positive();
+    if (const auto scale = s.find("noise_scale"))
+        b.noise_scale = weight(*scale);
+    if (const auto every = s.find("reweight_every"))
     {
-        b.reweight_every = count(s["reweight_every"], child(key, "reweight_every"));
+        b.reweight_every = count(*every);
         if (b.reweight_every < 1)
-            throw RecipeError(child(key, "reweight_every"), "must be >= 1 (got 0)");
+            every->fail("must be >= 1 (got 0)");
     }
-    if (s.contains("neighbors"))
-        b.neighbors = choice(s["neighbors"], child(key, "neighbors"), {"edge", "vertex"}) == 0
-                          ? FaceNeighborhood::Edge
-                          : FaceNeighborhood::Vertex;
-    if (s.contains("guidance"))
-        b.guided = choice(s["guidance"], child(key, "guidance"), {"none", "patch"}) == 1;
+    if (const auto n = s.find("neighbors"))
+        b.neighbors = n->choice<FaceNeighborhood>(
+            {{"edge", FaceNeighborhood::Edge}, {"vertex", FaceNeighborhood::Vertex}});
+    if (const auto guidance = s.find("guidance"))
+        b.guided = guidance->choice({"none", "patch"}) == 1;
     return b;
 }
 
-Bending parse_bending(const Json& s, const std::string& key)
+Bending parse_bending(const CheckedJson& s)
 {
-    expect_object(s, key, {"mu", "membrane"});
+    s.only_keys({"mu", "membrane"});
     Bending b;
-    if (s.contains("mu"))
-        b.mu = weight(s["mu"], key + ".mu");
-    if (s.contains("membrane"))
-        b.membrane = weight(s["membrane"], key + ".membrane");
+    if (const auto mu = s.find("mu"))
+        b.mu = weight(*mu);
+    if (const auto membrane = s.find("membrane"))
+        b.membrane = weight(*membrane);
     return b;
+}
+
+BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key)
+{
+    return parse_bilateral(CheckedJson(j, "", key));
+}
+
+Falloff parse_falloff(const nlohmann::json& j, const std::string& key)
+{
+    return parse_falloff(CheckedJson(j, "", key));
+}
+
+Bending parse_bending(const nlohmann::json& j, const std::string& key)
+{
+    return parse_bending(CheckedJson(j, "", key));
 }
 
 Json bending_json(const Bending& b)
@@ -874,40 +727,32 @@ Json bending_json(const Bending& b)
     return {{"mu", b.mu}, {"membrane", b.membrane}};
 }
 
-Falloff parse_falloff(const Json& s, const std::string& key)
+Falloff parse_falloff(const CheckedJson& s)
 {
-    expect_object(s, key, {"radius", "units", "curve", "mu", "around"});
+    s.only_keys({"radius", "units", "curve", "mu", "around"});
     Falloff f;
-    if (s.contains("radius"))
-        f.radius = weight(s["radius"], child(key, "radius"));
-    if (s.contains("units"))
-        f.radius_in_edge_lengths =
-            choice(s["units"], child(key, "units"), {"edge_lengths", "mesh"}) == 0;
-    if (s.contains("curve"))
+    if (const auto radius = s.find("radius"))
+        f.radius = weight(*radius);
+    if (const auto units = s.find("units"))
+        f.radius_in_edge_lengths = units->choice({"edge_lengths", "mesh"}) == 0;
+    if (const auto curve = s.find("curve"))
     {
-        const std::optional<FalloffCurve> curve =
-            s["curve"].is_string() ? falloff_curve_named(s["curve"].get<std::string>())
-                                   : std::nullopt;
-        if (curve)
-            f.curve = *curve;
-        else
-            throw RecipeError(child(key, "curve"),
-                              "must be \"smooth\", \"sphere\", \"root\", "
-                              "\"linear\", \"sharp\" or \"constant\"");
+        const std::optional<FalloffCurve> named =
+            curve->is_string() ? falloff_curve_named(curve->text()) : std::nullopt;
+        if (!named)
+            curve->fail(
+                "must be \"smooth\", \"sphere\", \"root\", \"linear\", \"sharp\" or \"constant\"");
+        f.curve = *named;
     }
-    if (s.contains("mu"))
-        f.mu = weight(s["mu"], child(key, "mu"));
-    if (s.contains("around"))
+    if (const auto mu = s.find("mu"))
+        f.mu = weight(*mu);
+    if (const auto around = s.find("around"))
     {
-        const Json& a = s["around"];
-        if (!a.is_array() || a.empty())
-            throw RecipeError(child(key, "around"),
-                              "must be a non-empty list of \"border\" and \"pins\"");
+        if (!around->is_array() || around->size() == 0)
+            around->fail("must be a non-empty list of \"border\" and \"pins\"");
         f.border = f.pins = false;
-        for (size_t k = 0; k < a.size(); ++k)
-            (choice(a[k], recipe_item_key(child(key, "around"), k), {"border", "pins"}) == 0
-                 ? f.border
-                 : f.pins) = true;
+        for (const CheckedJson& a : around->elements())
+            (a.choice({"border", "pins"}) == 0 ? f.border : f.pins) = true;
     }
     return f;
 }

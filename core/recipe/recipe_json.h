@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/errors.h"
+#include "core/io/checked_json.h"
 #include "core/recipe/recipe.h"
 
 namespace meshfair {
@@ -29,19 +30,14 @@ struct RecipeLimits
 //! first to last), as recipe_to_json writes them. Index ranges and set sizes need the
 //! mesh: see check_recipe. The top-level "editor" object is the editor's (its sets' names,
 //! colours and maps, the up axis): no part of the run, not read here.
-//! \throw RecipeError naming the key; InvalidInputError for text that is not JSON
-//! (naming `name` and the byte offset).
+//! \throw RecipeError naming `name` and the key; JsonSyntaxError for text that is not
+//! JSON (naming `name`, the line and the column).
 Recipe parse_recipe(std::string_view json_text, const std::string& name,
                     const RecipeLimits& limits = {});
 
 //! Reads and parses a recipe file. \throw as parse_recipe, or InvalidInputError when the
 //! file cannot be read.
 Recipe read_recipe(const std::string& path);
-
-//! \brief The error for JSON text that does not parse, from nlohmann's parse_error
-//! message ("... at line L, column C: why"): "'name':L:C: not valid JSON: why". Shared by
-//! every JSON reader of MeshFair (recipes, the editor's scripts).
-InvalidInputError json_syntax_error(const std::string& name, const std::string& parser_what);
 
 //! \brief The JSON form of a recipe; parse_recipe(recipe_to_json(r).dump()) gives r back.
 //! Index lists are written compactly (index_list_json).
@@ -52,21 +48,25 @@ nlohmann::json recipe_to_json(const Recipe& recipe);
 nlohmann::json index_list_json(std::span<const Index> indices);
 //! \brief An index list as recipes write it, read: integers and runs [first, last], each
 //! index in [0, 2147483647], no more than `budget` in all (taken from it).
-//! \throw RecipeError naming `key` (and the item at fault: "key[3]").
-std::vector<Index> parse_index_list(const nlohmann::json& j, const std::string& key,
-                                    std::int64_t& budget);
+//! \throw JsonValueError naming the list (and the item at fault: "key[3]").
+std::vector<Index> parse_index_list(const CheckedJson& j, std::int64_t& budget);
 
-//! \brief The "bilateral" object of a recipe's normal_smoothing (docs/recipe.md), parsed
-//! with errors naming `key` ("normal_smoothing.bilateral" in a recipe); and its JSON form.
-//! Shared with the editor's scripts and recovery files.
-//! \throw RecipeError naming the key.
-BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key);
+//! \brief The "bilateral" object of a recipe's normal_smoothing (docs/recipe.md), parsed;
+//! and its JSON form. Shared with the editor's scripts and recovery files.
+//! \throw JsonValueError naming the key.
+BilateralWeights parse_bilateral(const CheckedJson& j);
 nlohmann::json bilateral_json(const BilateralWeights& b);
 //! The same for a recipe's "falloff" object.
-Falloff parse_falloff(const nlohmann::json& j, const std::string& key);
+Falloff parse_falloff(const CheckedJson& j);
 nlohmann::json falloff_json(const Falloff& f);
-//! The "bending" section's object, read (RecipeError naming `key`'s members) and written.
-Bending parse_bending(const nlohmann::json& j, const std::string& key);
+//! The "bending" section's object, read and written.
+Bending parse_bending(const CheckedJson& j);
 nlohmann::json bending_json(const Bending& b);
+
+//! \brief The same read from a value at `key` of a reader not built on CheckedJson (the
+//! scripts'): the error names no file.
+BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key);
+Falloff parse_falloff(const nlohmann::json& j, const std::string& key);
+Bending parse_bending(const nlohmann::json& j, const std::string& key);
 
 } // namespace meshfair

@@ -97,11 +97,12 @@ TEST_SUITE("Recipe")
         const nlohmann::json runs = index_list_json(listed);
         CHECK(runs.dump() == "[[7,10],2,3,[5,7],0,[40,42]]");
         std::int64_t budget = 100;
-        CHECK(parse_index_list(runs, "k", budget) == listed);
+        CHECK(parse_index_list(CheckedJson(runs, "r.json", "k"), budget) == listed);
         CHECK(budget == 100 - static_cast<std::int64_t>(listed.size()));
         // The plain list reads the same.
         budget = 100;
-        CHECK(parse_index_list(nlohmann::json(listed), "k", budget) == listed);
+        const nlohmann::json plain(listed);
+        CHECK(parse_index_list(CheckedJson(plain, "r.json", "k"), budget) == listed);
         CHECK(index_list_json(std::vector<Index>{}).dump() == "[]");
         CHECK(index_list_json(std::vector<Index>{4, 5}).dump() == "[4,5]");
         // A recipe writes its lists so, and reads them back.
