@@ -13,6 +13,7 @@
 #include "app/editor/heat_map.h"
 #include "app/editor/key_map.h"
 #include "core/errors.h"
+#include "core/io/checked_json.h"
 #include "core/io/io.h"
 #include "core/recipe/recipe_json.h"
 
@@ -20,49 +21,39 @@ namespace meshfair::app {
 
 namespace {
 
-using Json = nlohmann::json;
 using Kind = ScriptAction::Kind;
 
-struct Reader
+// A point of the view [x, y] in pixels.
+ScreenPoint point(const CheckedJson& j)
 {
-    const std::string& name;
-    std::string where;
+    if (!j.is_array() || j.size() != 2)
+        j.fail("must be a point [x, y] in pixels");
+    return {j.at(0).number(-1e6, 1e6), j.at(1).number(-1e6, 1e6), 0};
+}
 
-    [[noreturn]] void bad(const std::string& key, const std::string& why) const
-    {
-        script_error(name, where + "." + key, why);
-    }
-    std::string text(const Json& j, const std::string& key) const
-    {
-        if (!j.is_string())
-            bad(key, "must be a string");
-        return j.get<std::string>();
-    }
-    double number(const Json& j, const std::string& key, double lo, double hi) const
-    {
-        if (!j.is_number() || !std::isfinite(j.get<double>()) || j.get<double>() < lo ||
-            j.get<double>() > hi)
-            bad(key,
-                "must be a number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
-        return j.get<double>();
-    }
-    int integer(const Json& j, const std::string& key, int lo, int hi) const
-    {
-        if (!j.is_number_integer() || j.get<long long>() < lo || j.get<long long>() > hi)
-            bad(key, "must be a count from " + std::to_string(lo) + " to " + std::to_string(hi));
-        return static_cast<int>(j.get<long long>());
-    }
-    ScreenPoint point(const Json& j, const std::string& key) const
-    {
-        if (!j.is_array() || j.size() != 2)
-            bad(key, "must be a point [x, y] in pixels");
-        return {number(j[0], key, -1e6, 1e6), number(j[1], key, -1e6, 1e6), 0};
-    }
-};
+// A count in [lo, hi].
+int count(const CheckedJson& j, int lo, int hi)
+{
+    return static_cast<int>(j.integer(lo, hi));
+}
 
 const std::pair<const char*, StandardView> kViews[] = {
     {"front", StandardView::Front}, {"back", StandardView::Back}, {"right", StandardView::Right},
     {"left", StandardView::Left},   {"top", StandardView::Top},   {"bottom", StandardView::Bottom}};
+
+constexpr std::pair<std::string_view, PaintMode> kPaintModes[] = {{"relax", PaintMode::Relax},
+                                                                  {"add", PaintMode::Add},
+                                                                  {"subtract", PaintMode::Subtract},
+                                                                  {"smooth", PaintMode::Smooth}};
+constexpr std::pair<std::string_view, CentroidDenominator> kDenominators[] = {
+    {"paper", CentroidDenominator::Paper}, {"exact", CentroidDenominator::Exact}};
+constexpr std::pair<std::string_view, NormalSource> kNormalSources[] = {
+    {"initial", NormalSource::Initial}, {"smoothed", NormalSource::Smoothed}};
+constexpr std::pair<std::string_view, Method> kMethods[] = {{"jacobi", Method::Jacobi},
+                                                            {"taubin", Method::Taubin},
+                                                            {"direct", Method::Direct},
+                                                            {"cg", Method::ConjugateGradient},
+                                                            {"implicit", Method::Implicit}};
 
 // The session's settings with the keys an action gives replaced, kept apart: the action
 // is parsed before any is played, its keys merged into the settings of the moment.
@@ -96,10 +87,9 @@ std::vector<InputEvent> typed(const std::string& text)
 // What an action's reader is given: the action's object, its action key and value.
 struct ActionArgs
 {
-    const Json& j;
+    const CheckedJson& j; //!< the action's object
     const std::string& kind;
-    const Json& v;
-    const Reader& r;
+    const CheckedJson& v; //!< its value
 };
 
 // One script action: its key, the options it takes beside it, and its reader.
@@ -117,49 +107,43 @@ void read_field(const ActionArgs& x, const Field<C, T>& f, C& c)
 {
     const bool own_value = f.place == FieldPlace::Value;
     const std::string key = own_value ? x.kind : std::string(f.key);
-    if (!own_value && !x.j.contains(key))
+    if (!own_value && !x.j.has(key))
     {
         if (f.place == FieldPlace::RequiredOption)
-            x.r.bad(x.kind, "needs '" + key + "': " + std::string(f.doc));
+            x.v.fail("needs '" + key + "': " + std::string(f.doc));
         return;
     }
-    const Json& v = own_value ? x.v : x.j[key];
+    const CheckedJson v = own_value ? x.v : x.j[key];
     T& out = c.*(f.member);
     if constexpr (std::is_same_v<T, std::string>)
     {
-        out = x.r.text(v, key);
+        out = v.text();
         if (!f.doc.empty() && out.empty())
-            x.r.bad(key, "must be " + std::string(f.doc));
+            v.fail("must be " + std::string(f.doc));
     }
     else if constexpr (std::is_same_v<T, bool>)
-    {
-        if (!v.is_boolean())
-            x.r.bad(key, "must be true or false");
-        out = v.get<bool>();
-    }
+        out = v.boolean();
     else if constexpr (std::is_enum_v<T>)
     {
-        const std::string name = x.r.text(v, key);
+        const std::string name = v.text();
         const std::optional<T> named = f.named(name);
         if (!named)
-            x.r.bad(key, "'" + name + "' is not " + std::string(f.choices));
+            v.fail("'" + name + "' is not " + std::string(f.choices));
         out = *named;
     }
     else if constexpr (std::is_same_v<T, Vec3>)
     {
-        if (!v.is_array() || v.size() != 3)
-            x.r.bad(key, "must be [x, y, z]");
-        out = {x.r.number(v[0], key, -1e9, 1e9), x.r.number(v[1], key, -1e9, 1e9),
-               x.r.number(v[2], key, -1e9, 1e9)};
+        const std::array<double, 3> p = v.vec3();
+        out = {p[0], p[1], p[2]};
         if (f.nonzero && out == Vec3{0, 0, 0})
-            x.r.bad(key, "must not be zero");
+            v.fail("must not be zero");
     }
     else if constexpr (std::is_integral_v<T>)
-        out = static_cast<T>(x.r.integer(v, key, static_cast<int>(f.lo), static_cast<int>(f.hi)));
+        out = static_cast<T>(v.integer(static_cast<long long>(f.lo), static_cast<long long>(f.hi)));
     else
     {
         static_assert(std::is_floating_point_v<T>, "a field's type the script reader knows");
-        out = x.r.number(v, key, f.lo, f.hi);
+        out = v.number(f.lo, f.hi);
     }
 }
 
@@ -170,8 +154,8 @@ void read_fields(const ActionArgs& x, ScriptAction& a)
     // A command with no fields is given by `"action": true`.
     if constexpr (std::tuple_size_v<std::decay_t<decltype(C::fields)>> == 0)
     {
-        if (!x.v.is_boolean() || !x.v.template get<bool>())
-            x.r.bad(x.kind, "must be true");
+        if (!x.v.is_bool() || !x.v.boolean())
+            x.v.fail("must be true");
     }
     std::apply([&](const auto&... f) { (read_field(x, f, c), ...); }, C::fields);
     a.commands.push_back(std::move(c));
@@ -181,20 +165,20 @@ void read_fields(const ActionArgs& x, ScriptAction& a)
 
 void read_action(std::type_identity<cmd::Undo>, const ActionArgs& x, ScriptAction& a)
 {
-    a.repeat = x.r.integer(x.v, x.kind, 1, 100000);
+    a.repeat = count(x.v, 1, 100000);
     a.commands.push_back(cmd::Undo{});
 }
 
 void read_action(std::type_identity<cmd::Redo>, const ActionArgs& x, ScriptAction& a)
 {
-    a.repeat = x.r.integer(x.v, x.kind, 1, 100000);
+    a.repeat = count(x.v, 1, 100000);
     a.commands.push_back(cmd::Redo{});
 }
 
 // A standard view, or the whole mesh or the selection framed.
 void read_action(std::type_identity<cmd::SetView>, const ActionArgs& x, ScriptAction& a)
 {
-    const std::string name = x.r.text(x.v, x.kind);
+    const std::string name = x.v.text();
     if (name == "all")
         a.commands.push_back(cmd::FrameAll{});
     else if (name == "selection")
@@ -203,27 +187,26 @@ void read_action(std::type_identity<cmd::SetView>, const ActionArgs& x, ScriptAc
         if (name == view_name)
             a.commands.push_back(cmd::SetView{view});
     if (a.commands.empty())
-        x.r.bad(x.kind,
-                "'" + name + "' is not front, back, right, left, top, bottom, all or selection");
+        x.v.fail("'" + name + "' is not front, back, right, left, top, bottom, all or selection");
 }
 
 // "show_set" or "hide_set".
 void read_action(std::type_identity<cmd::ShowSet>, const ActionArgs& x, ScriptAction& a)
 {
-    a.commands.push_back(cmd::ShowSet{x.r.text(x.v, x.kind), x.kind == cmd::ShowSet::info.script});
+    a.commands.push_back(cmd::ShowSet{x.v.text(), x.kind == cmd::ShowSet::info.script});
 }
 
 void read_action(std::type_identity<cmd::Play>, const ActionArgs& x, ScriptAction& a)
 {
     a.kind = Kind::Play;
-    a.count = x.r.integer(x.v, x.kind, 1, 1000000);
+    a.count = count(x.v, 1, 1000000);
 }
 
 void read_action(std::type_identity<cmd::SetHeatMap>, const ActionArgs& x, ScriptAction& a)
 {
-    const std::string t = x.r.text(x.v, x.kind);
+    const std::string t = x.v.text();
     if (t != "off" && !heat_term_named(t))
-        x.r.bad(x.kind, "'" + t + "' is not off, total, edge, anchor, centroid or normal");
+        x.v.fail("'" + t + "' is not off, total, edge, anchor, centroid or normal");
     a.commands.push_back(cmd::SetHeatMap{heat_term_named(t)});
     a.waits_for_heat = true;
 }
@@ -232,65 +215,53 @@ void read_action(std::type_identity<cmd::SetHeatMap>, const ActionArgs& x, Scrip
 // dabs ("paint"), which share the settings' keys.
 void read_paint(const ActionArgs& x, ScriptAction& a, bool stroke)
 {
-    const Reader& r = x.r;
     const std::string& kind = x.kind;
-    const Json& v = x.v;
+    const CheckedJson& v = x.v;
     if (!v.is_object())
-        r.bad(kind, "must be an object");
+        v.fail("must be an object");
     std::vector<std::string> keys = {"set", "mode", "strength", "curve", "steps"};
     if (stroke)
         keys.insert(keys.end(), {"radius", "dabs"});
-    for (const auto& item : v.items())
-        if (std::find(keys.begin(), keys.end(), item.key()) == keys.end())
-            r.bad(kind + "." + item.key(), "is not a key of '" + kind + "'");
+    for (const auto& [key, value] : v.members())
+        if (std::find(keys.begin(), keys.end(), key) == keys.end())
+            value.fail("is not a key of '" + kind + "'");
     PaintSettings p;
-    if (v.contains("set"))
-        p.set = r.text(v["set"], kind + ".set");
-    if (v.contains("mode"))
+    if (v.has("set"))
+        p.set = v["set"].text();
+    if (v.has("mode"))
+        p.mode = v["mode"].choice(kPaintModes);
+    if (v.has("strength"))
+        p.strength = v["strength"].number(0, 1);
+    if (v.has("curve"))
     {
-        const std::optional<PaintMode> mode = paint_mode_named(r.text(v["mode"], kind + ".mode"));
-        if (!mode)
-            r.bad(kind + ".mode", "must be \"relax\", \"add\", \"subtract\" or \"smooth\"");
-        p.mode = *mode;
-    }
-    if (v.contains("strength"))
-        p.strength = r.number(v["strength"], kind + ".strength", 0, 1);
-    if (v.contains("curve"))
-    {
-        const std::optional<FalloffCurve> curve =
-            falloff_curve_named(r.text(v["curve"], kind + ".curve"));
+        const std::optional<FalloffCurve> curve = falloff_curve_named(v["curve"].text());
         if (!curve)
-            r.bad(kind + ".curve",
-                  "must be \"smooth\", \"sphere\", \"root\", \"linear\", "
-                  "\"sharp\" or \"constant\"");
+            v["curve"].fail(
+                "must be \"smooth\", \"sphere\", \"root\", \"linear\", "
+                "\"sharp\" or \"constant\"");
         p.curve = *curve;
     }
-    if (v.contains("steps"))
-        p.steps = r.integer(v["steps"], kind + ".steps", 1, 10000);
+    if (v.has("steps"))
+        p.steps = count(v["steps"], 1, 10000);
     if (!stroke)
     {
         a.commands.push_back(cmd::SetPaintSettings{p});
         return;
     }
-    if (!v.contains("radius") || !v.contains("dabs") || !v["dabs"].is_array() || v["dabs"].empty())
-        r.bad(kind, "needs 'radius' and 'dabs': a list of centres [x, y, z]");
-    const Scalar radius = r.number(v["radius"], kind + ".radius", 1e-12, 1e12);
+    if (!v.has("radius") || !v.has("dabs") || !v["dabs"].is_array() || v["dabs"].size() == 0)
+        v.fail("needs 'radius' and 'dabs': a list of centres [x, y, z]");
+    const Scalar radius = v["radius"].number(1e-12, 1e12);
     const std::string set = p.set.empty() ? std::string(kPaintSet) : p.set;
-    for (size_t k = 0; k < v["dabs"].size(); ++k)
+    // The dabs' centres read in one pass (a stroke has thousands).
+    const CheckedJson dabs = v["dabs"];
+    for (size_t k = 0; k < dabs.size(); ++k)
     {
-        const Json& c = v["dabs"][k];
-        const std::string key = kind + ".dabs[" + std::to_string(k) + "]";
+        const CheckedJson c = dabs.at(k);
         if (!c.is_array() || c.size() != 3)
-            r.bad(key, "must be [x, y, z]");
-        a.commands.push_back(
-            cmd::PaintDab{set,
-                          p.mode,
-                          {r.number(c[0], key, -1e12, 1e12), r.number(c[1], key, -1e12, 1e12),
-                           r.number(c[2], key, -1e12, 1e12)},
-                          radius,
-                          p.strength,
-                          p.curve,
-                          p.steps});
+            c.fail("must be [x, y, z]");
+        const std::vector<double> at = c.numbers(-1e12, 1e12);
+        a.commands.push_back(cmd::PaintDab{
+            set, p.mode, {at[0], at[1], at[2]}, radius, p.strength, p.curve, p.steps});
     }
     a.interaction = "stroke"; // one undo step, as the tool's stroke
 }
@@ -309,118 +280,72 @@ void read_action(std::type_identity<cmd::SetPaintSettings>, const ActionArgs& x,
 // moment when the action is played (the action is read before any is played).
 void read_action(std::type_identity<cmd::SetSolverSettings>, const ActionArgs& x, ScriptAction& a)
 {
-    const Reader& r = x.r;
-    const std::string& kind = x.kind;
-    const Json& v = x.v;
-    if (!v.is_object())
-        r.bad(kind, "must be an object of solver settings");
+    if (!x.v.is_object())
+        x.v.fail("must be an object of solver settings");
     SolverChange change;
     SolverSettings& s = change.settings;
-    for (const auto& [key, value] : v.items())
+    for (const auto& [key, value] : x.v.members())
     {
-        const std::string k = "solver." + key;
         change.keys.push_back(key);
         if (key == "lambda")
         {
-            if (value.is_string() && value.get<std::string>() == "optimal")
+            if (value.is_string() && value.text() == "optimal")
                 s.optimal_step = true;
             else
-                s.lambda = r.number(value, k, 1e-9, 1e3);
+                s.lambda = value.number(1e-9, 1e3);
         }
         else if (key == "iterations_per_frame")
-            s.iterations_per_frame = r.integer(value, k, 1, 100000);
+            s.iterations_per_frame = count(value, 1, 100000);
         else if (key == "steps_per_run")
-            s.steps_per_run = r.integer(value, k, 1, 100000);
+            s.steps_per_run = count(value, 1, 100000);
         else if (key == "until_converged")
-        {
-            if (!value.is_boolean())
-                r.bad(k, "must be true or false");
-            s.until_converged = value.get<bool>();
-        }
+            s.until_converged = value.boolean();
         else if (key == "tolerance")
-            s.tolerance = r.number(value, k, 0, 1);
+            s.tolerance = value.number(0, 1);
         else if (key == "anchor_mu")
-            s.anchor_mu = r.number(value, k, 0, 1e12);
+            s.anchor_mu = value.number(0, 1e12);
         else if (key == "centroid_mu")
-            s.centroid_mu = r.number(value, k, 0, 1e12);
+            s.centroid_mu = value.number(0, 1e12);
         else if (key == "normal_mu")
-            s.normal_mu = r.number(value, k, 0, 1e12);
+            s.normal_mu = value.number(0, 1e12);
         else if (key == "soft_normal_mu")
-            s.soft_normal_mu = r.number(value, k, 0, 1e12);
+            s.soft_normal_mu = value.number(0, 1e12);
         else if (key == "gamma")
-            s.gamma = r.number(value, k, 0, 1e12);
+            s.gamma = value.number(0, 1e12);
         else if (key == "normal_smoothing_iterations")
-            s.normal_smoothing_iterations = r.integer(value, k, 0, 100000);
+            s.normal_smoothing_iterations = count(value, 0, 100000);
         else if (key == "strength")
         {
             s.adaptive_smoothing = AdaptiveIterations{};
-            s.adaptive_smoothing->strength = r.number(value, k, 0, 10);
+            s.adaptive_smoothing->strength = value.number(0, 10);
         }
         else if (key == "normal_smoothing_lambda")
-            s.normal_smoothing_lambda = r.number(value, k, 1e-9, 1e3);
+            s.normal_smoothing_lambda = value.number(1e-9, 1e3);
         else if (key == "joint")
-        {
-            if (!value.is_boolean())
-                r.bad(k, "must be true or false");
-            s.joint = value.get<bool>();
-        }
+            s.joint = value.boolean();
         else if (key == "denominator")
-        {
-            const std::string d = r.text(value, k);
-            if (d != "paper" && d != "exact")
-                r.bad(k, "must be \"paper\" or \"exact\"");
-            s.denominator = d == "exact" ? CentroidDenominator::Exact : CentroidDenominator::Paper;
-        }
+            s.denominator = value.choice(kDenominators);
         else if (key == "normals")
-        {
-            const std::string n = r.text(value, k);
-            if (n != "initial" && n != "smoothed")
-                r.bad(k, "must be \"initial\" or \"smoothed\"");
-            s.normal_source = n == "smoothed" ? NormalSource::Smoothed : NormalSource::Initial;
-        }
+            s.normal_source = value.choice(kNormalSources);
         else if (key == "method")
-        {
-            const std::string m = r.text(value, k);
-            if (m != "jacobi" && m != "taubin" && m != "direct" && m != "cg" && m != "implicit")
-                r.bad(k,
-                      "must be \"jacobi\", \"taubin\", \"direct\", \"cg\" or "
-                      "\"implicit\"");
-            s.method = m == "taubin"     ? Method::Taubin
-                       : m == "direct"   ? Method::Direct
-                       : m == "cg"       ? Method::ConjugateGradient
-                       : m == "implicit" ? Method::Implicit
-                                         : Method::Jacobi;
-        }
+            s.method = value.choice(kMethods);
         else if (key == "time")
-            s.time = r.number(value, k, 1e-6, 1e6);
+            s.time = value.number(1e-6, 1e6);
         else if (key == "taubin_mu")
-            s.taubin_mu = r.number(value, k, -1e3, 0);
-        else if (key == "keep_volume" || key == "prevent_flips")
-        {
-            if (!value.is_boolean())
-                r.bad(k, "must be true or false");
-            (key == "keep_volume" ? s.keep_volume : s.prevent_flips) = value.get<bool>();
-        }
-        else if (key == "bilateral" || key == "falloff" || key == "bending")
-        {
-            // A recipe's object (docs/recipe.md), or null for none.
-            if (!value.is_null())
-                try
-                {
-                    if (key == "bilateral")
-                        s.bilateral = parse_bilateral(value, k);
-                    else if (key == "bending")
-                        s.bending = parse_bending(value, k);
-                    else
-                        s.falloff = parse_falloff(value, k);
-                }
-                catch (const RecipeError& e)
-                {
-                    r.bad(e.key(), e.message());
-                }
-        }
+            s.taubin_mu = value.number(-1e3, 0);
+        else if (key == "keep_volume")
+            s.keep_volume = value.boolean();
+        else if (key == "prevent_flips")
+            s.prevent_flips = value.boolean();
+        // A recipe's object (docs/recipe.md), or null for none.
+        else if (key == "bilateral")
+            s.bilateral = value.is_null() ? std::nullopt : std::optional(parse_bilateral(value));
+        else if (key == "bending")
+            s.bending = value.is_null() ? std::nullopt : std::optional(parse_bending(value));
+        else if (key == "falloff")
+            s.falloff = value.is_null() ? std::nullopt : std::optional(parse_falloff(value));
         else
-            r.bad(k, "is not a solver setting");
+            value.fail("is not a solver setting");
     }
     // The settings of the moment with these keys: merged when the action is played.
     a.keys = change.keys;
@@ -431,28 +356,26 @@ void read_action(std::type_identity<cmd::SetSolverSettings>, const ActionArgs& x
 
 MouseButton read_button(const ActionArgs& x)
 {
-    if (!x.j.contains("button"))
+    if (!x.j.has("button"))
         return MouseButton::Left;
-    const std::string b = x.r.text(x.j["button"], "button");
-    if (b == "left")
-        return MouseButton::Left;
-    if (b == "middle")
-        return MouseButton::Middle;
-    if (b == "right")
-        return MouseButton::Right;
-    x.r.bad("button", "'" + b + "' is not left, middle or right");
+    static constexpr std::pair<std::string_view, MouseButton> kButtons[] = {
+        {"left", MouseButton::Left},
+        {"middle", MouseButton::Middle},
+        {"right", MouseButton::Right}};
+    return x.j["button"].choice(kButtons);
 }
 
 Modifiers read_modifiers(const ActionArgs& x)
 {
     Modifiers mods;
-    if (!x.j.contains("modifiers"))
+    if (!x.j.has("modifiers"))
         return mods;
-    if (!x.j["modifiers"].is_array())
-        x.r.bad("modifiers", "must be a list of \"shift\", \"ctrl\", \"alt\"");
-    for (const Json& m : x.j["modifiers"])
+    const CheckedJson list = x.j["modifiers"];
+    if (!list.is_array())
+        list.fail("must be a list of \"shift\", \"ctrl\", \"alt\"");
+    for (const CheckedJson& m : list.elements())
     {
-        const std::string s = x.r.text(m, "modifiers");
+        const std::string s = m.text();
         if (s == "shift")
             mods.shift = true;
         else if (s == "ctrl")
@@ -460,7 +383,7 @@ Modifiers read_modifiers(const ActionArgs& x)
         else if (s == "alt")
             mods.alt = true;
         else
-            x.r.bad("modifiers", "'" + s + "' is not shift, ctrl or alt");
+            list.fail("'" + s + "' is not shift, ctrl or alt");
     }
     return mods;
 }
@@ -472,10 +395,10 @@ const ActionForm kInputForms[] = {
          a.kind = Kind::Input;
          a.mods = read_modifiers(x);
          if (!x.v.is_array() || x.v.size() < 2)
-             x.r.bad(x.kind, "must be a list of at least 2 points [x, y]");
+             x.v.fail("must be a list of at least 2 points [x, y]");
          std::vector<ScreenPoint> points;
-         for (const Json& p : x.v)
-             points.push_back(x.r.point(p, x.kind));
+         for (const CheckedJson& p : x.v.elements())
+             points.push_back(point(p));
          a.events = drag_events(points, read_button(x), a.mods);
      }},
     {"click",
@@ -483,7 +406,7 @@ const ActionForm kInputForms[] = {
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Input;
          a.mods = read_modifiers(x);
-         const ScreenPoint p = x.r.point(x.v, x.kind);
+         const ScreenPoint p = point(x.v);
          a.events = drag_events({p, p}, MouseButton::Left, a.mods);
          a.events.erase(a.events.begin() + 2); // no move between the press and the release
      }},
@@ -491,50 +414,49 @@ const ActionForm kInputForms[] = {
      {},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Input;
-         a.events = {input_event(InputEvent::Type::MouseMove, x.r.point(x.v, x.kind))};
+         a.events = {input_event(InputEvent::Type::MouseMove, point(x.v))};
      }},
     {"scroll",
      {"at"},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Input;
-         if (!x.j.contains("at"))
-             x.r.bad(x.kind, "needs 'at': the cursor [x, y]");
-         const ScreenPoint at = x.r.point(x.j["at"], "at");
+         if (!x.j.has("at"))
+             x.v.fail("needs 'at': the cursor [x, y]");
+         const ScreenPoint at = point(x.j["at"]);
          InputEvent wheel = input_event(InputEvent::Type::Scroll, at);
-         wheel.amount = x.r.number(x.v, x.kind, -100, 100);
+         wheel.amount = x.v.number(-100, 100);
          a.events = {input_event(InputEvent::Type::MouseMove, at), wheel};
      }},
     {"key",
      {},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Input;
-         const std::string text = x.r.text(x.v, x.kind);
+         const std::string text = x.v.text();
          const std::optional<KeyChord> chord = parse_key_chord(text);
          if (!chord)
-             x.r.bad(x.kind,
-                     "'" + text + "' is not a key (\"ctrl+z\", \"space\", \"f1\", \"kp_5\")");
+             x.v.fail("'" + text + "' is not a key (\"ctrl+z\", \"space\", \"f1\", \"kp_5\")");
          a.events = key_events(*chord);
      }},
     {"type",
      {},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Input;
-         a.events = typed(x.r.text(x.v, x.kind));
+         a.events = typed(x.v.text());
      }},
     {"click_widget",
      {"modifiers"},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::ClickWidget;
          a.mods = read_modifiers(x);
-         a.text = x.r.text(x.v, x.kind);
+         a.text = x.v.text();
          if (a.text.empty())
-             x.r.bad(x.kind, "must be a widget's label");
+             x.v.fail("must be a widget's label");
      }},
     {"frames",
      {},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Frames;
-         a.count = x.r.integer(x.v, x.kind, 1, 10000);
+         a.count = count(x.v, 1, 10000);
      }},
     // The frame drawn so far, as the window shows it (not the Screenshot command, whose
     // frame is the next one drawn).
@@ -542,9 +464,9 @@ const ActionForm kInputForms[] = {
      {},
      [](const ActionArgs& x, ScriptAction& a) {
          a.kind = Kind::Screenshot;
-         a.text = x.r.text(x.v, x.kind);
+         a.text = x.v.text();
          if (a.text.empty())
-             x.r.bad(x.kind, "must be a file name");
+             x.v.fail("must be a file name");
          a.writes = true;
      }},
 };
@@ -602,39 +524,37 @@ const std::vector<ActionForm>& action_forms()
     return forms;
 }
 
-ScriptAction parse_action(const Json& j, const Reader& r)
+ScriptAction parse_action(const CheckedJson& j)
 {
     ScriptAction a;
-    a.where = r.where;
+    a.where = j.path();
     if (!j.is_object())
-        script_error(r.name, r.where, "an action must be a JSON object");
+        j.fail("an action must be a JSON object");
     const std::vector<ActionForm>& forms = action_forms();
     const auto is_option = [&](std::string_view key) {
         return std::any_of(forms.begin(), forms.end(), [&](const ActionForm& f) {
             return std::find(f.options.begin(), f.options.end(), key) != f.options.end();
         });
     };
+    const std::vector<std::pair<std::string, CheckedJson>> members = j.members();
     const ActionForm* form = nullptr;
-    for (const auto& item : j.items())
+    for (const auto& [key, value] : members)
     {
-        const std::string& key = item.key();
         if (is_option(key))
             continue;
         const auto named = std::find_if(forms.begin(), forms.end(),
                                         [&](const ActionForm& f) { return f.name == key; });
         if (named == forms.end())
-            r.bad(key, "is not an action or an action's option");
+            value.fail("is not an action or an action's option");
         if (form)
-            script_error(r.name, r.where,
-                         "has two actions ('" + std::string(form->name) + "' and '" + key + "')");
+            j.fail("has two actions ('" + std::string(form->name) + "' and '" + key + "')");
         form = &*named;
     }
     if (!form)
-        script_error(r.name, r.where, "names no action");
+        j.fail("names no action");
     // An option beside an action that does not take it: "only drag or click takes 'button'".
-    for (const auto& item : j.items())
+    for (const auto& [key, value] : members)
     {
-        const std::string& key = item.key();
         if (key == form->name ||
             std::find(form->options.begin(), form->options.end(), key) != form->options.end())
             continue;
@@ -645,10 +565,10 @@ ScriptAction parse_action(const Json& j, const Reader& r)
         std::string who;
         for (size_t k = 0; k < owners.size(); ++k)
             who += (k == 0 ? "" : k + 1 == owners.size() ? " or " : ", ") + std::string(owners[k]);
-        r.bad(key, "only " + who + " takes '" + key + "'");
+        value.fail("only " + who + " takes '" + key + "'");
     }
     const std::string kind(form->name);
-    form->read(ActionArgs{j, kind, j[kind], r}, a);
+    form->read(ActionArgs{j, kind, j[kind]}, a);
     return a;
 }
 
@@ -742,36 +662,21 @@ std::vector<InputEvent> drag_events(const std::vector<ScreenPoint>& points, Mous
 
 Script parse_script(const std::string& text, const std::string& name)
 {
-    Json j;
-    try
+    const CheckedJson root = CheckedJson::parse(text, name);
+    // {"actions": [...]} or the list by itself, its actions named "actions[k]" either way.
+    const nlohmann::json* list = &root.raw();
+    if (root.is_object())
     {
-        j = Json::parse(text);
+        root.only_keys({"actions"});
+        list = &root["actions"].raw();
     }
-    catch (const Json::parse_error& e)
-    {
-        throw json_syntax_error(name, e.what());
-    }
-    catch (const Json::exception& e)
-    {
-        throw InvalidInputError("'" + name + "': not valid JSON: " + e.what());
-    }
-    const Json* list = &j;
-    if (j.is_object())
-    {
-        for (const auto& [key, value] : j.items())
-            if (key != "actions")
-                script_error(name, key, "is unknown (a script is {\"actions\": [...]})");
-        if (!j.contains("actions"))
-            script_error(name, "actions", "is missing");
-        list = &j["actions"];
-    }
-    if (!list->is_array())
-        script_error(name, "actions", "must be a list of actions");
+    const CheckedJson actions(*list, name, "actions");
+    if (!actions.is_array())
+        actions.fail("must be a list of actions");
     Script script;
     script.name = name;
-    for (size_t k = 0; k < list->size(); ++k)
-        script.actions.push_back(
-            parse_action((*list)[k], Reader{name, "actions[" + std::to_string(k) + "]"}));
+    for (const CheckedJson& action : actions.elements())
+        script.actions.push_back(parse_action(action));
     return script;
 }
 
@@ -780,17 +685,17 @@ std::string stroke_action(std::span<const cmd::PaintDab> dabs)
     if (dabs.empty())
         return {};
     const cmd::PaintDab& first = dabs.front();
-    Json centres = Json::array();
+    nlohmann::json centres = nlohmann::json::array();
     for (const cmd::PaintDab& d : dabs)
         centres.push_back({d.center[0], d.center[1], d.center[2]});
-    const Json action = {{"paint",
-                          {{"set", first.set},
-                           {"mode", std::string(paint_mode_name(first.mode))},
-                           {"radius", first.radius},
-                           {"strength", first.strength},
-                           {"curve", std::string(falloff_curve_name(first.curve))},
-                           {"steps", first.steps},
-                           {"dabs", centres}}}};
+    const nlohmann::json action = {{"paint",
+                                    {{"set", first.set},
+                                     {"mode", std::string(paint_mode_name(first.mode))},
+                                     {"radius", first.radius},
+                                     {"strength", first.strength},
+                                     {"curve", std::string(falloff_curve_name(first.curve))},
+                                     {"steps", first.steps},
+                                     {"dabs", centres}}}};
     return action.dump();
 }
 

@@ -707,21 +707,6 @@ Bending parse_bending(const CheckedJson& s)
     return b;
 }
 
-BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key)
-{
-    return parse_bilateral(CheckedJson(j, "", key));
-}
-
-Falloff parse_falloff(const nlohmann::json& j, const std::string& key)
-{
-    return parse_falloff(CheckedJson(j, "", key));
-}
-
-Bending parse_bending(const nlohmann::json& j, const std::string& key)
-{
-    return parse_bending(CheckedJson(j, "", key));
-}
-
 Json bending_json(const Bending& b)
 {
     return {{"mu", b.mu}, {"membrane", b.membrane}};

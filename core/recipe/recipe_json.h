@@ -63,10 +63,4 @@ nlohmann::json falloff_json(const Falloff& f);
 Bending parse_bending(const CheckedJson& j);
 nlohmann::json bending_json(const Bending& b);
 
-//! \brief The same read from a value at `key` of a reader not built on CheckedJson (the
-//! scripts'): the error names no file.
-BilateralWeights parse_bilateral(const nlohmann::json& j, const std::string& key);
-Falloff parse_falloff(const nlohmann::json& j, const std::string& key);
-Bending parse_bending(const nlohmann::json& j, const std::string& key);
-
 } // namespace meshfair

@@ -140,7 +140,7 @@ TEST_SUITE("Operators")
         CHECK(refusal(R"({"rename_set": "a"})") ==
               "'s.json': actions[0].rename_set: needs 'name': the new name");
         CHECK(refusal(R"({"noise": 0.1, "seed": -1})") ==
-              "'s.json': actions[0].seed: must be a count from 0 to 2147483647");
+              "'s.json': actions[0].seed: must be an integer in [0, 2147483647] (got -1)");
         CHECK(refusal(R"({"normal_direction": "n", "direction": [0, 0, 0]})") ==
               "'s.json': actions[0].direction: must not be zero");
         CHECK(refusal(R"({"solve": false})") == "'s.json': actions[0].solve: must be true");
