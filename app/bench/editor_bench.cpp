@@ -7,7 +7,8 @@
 // mouse event, the upload of the selection to the renderer, the software rasterization
 // (llvmpipe here; a GPU draws the same buffers far faster), and the undo record; then a
 // pin dragged with the M tool, each move timed until the editor shows the minimizer
-// (editor_drag.h). See docs/performance.md ("Editor").
+// (editor_drag.h); and strokes of the smoothing brush over a 50k-vertex scan, each dab
+// timed on the interface's thread (editor_paint.h). See docs/performance.md ("Editor").
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <array>
@@ -22,6 +23,7 @@
 
 #include "app/bench/bench_common.h"
 #include "app/bench/editor_drag.h"
+#include "app/bench/editor_paint.h"
 #include "app/bench/memory_bandwidth.h"
 #include "app/bench/mesh_generator.h"
 #include "app/editor/editor_session.h"
@@ -201,10 +203,25 @@ int main(int argc, char** argv)
     app.add_flag("--frames-only", frames_only,
                  "only the view's frames (shading, wireframe, flat) at the bench's size and "
                  "on the bunny and 60k tori");
+    bench::PaintOptions paint;
+    bool paint_only = false;
+    app.add_option("--paint-dabs", paint.dabs,
+                   "smoothing brush strokes on a 50k-vertex scan: dabs a stroke (0: none)")
+        ->check(CLI::Range(0, 1000));
+    app.add_option("--paint-strokes", paint.strokes, "smoothing brush strokes per recipe")
+        ->check(CLI::Range(1, 100));
+    app.add_flag("--paint-only", paint_only, "only the smoothing brush strokes on the scan");
     CLI11_PARSE(app, argc, argv);
     if (threads > 0)
         set_thread_count(threads);
 
+    if (paint_only)
+    {
+        // A scan's size where a stroke must keep up with the mouse: 50,000 vertices.
+        OsmesaContext context(width, height);
+        bench::paint_case(torus(250, 200, false), width, height, paint);
+        return 0;
+    }
     const Mesh base = io::read_mesh(mesh_path);
     const int k = bench::subdivision_factor_for(base, min_vertices);
     auto t = Clock::now();
@@ -564,6 +581,9 @@ int main(int argc, char** argv)
         "| smoothing brush, a dab (its restart and %d steps of the painted region) | "
         "%.2fx (%.2fx a step) | | |\n",
         dab_steps, dab_ms / plain.step, dab_ms / dab_steps / plain.step);
+
+    if (paint.dabs > 0)
+        bench::paint_case(torus(250, 200, false), width, height, paint);
 
     // --- Last, as it leaves its sets in the document (the smoothing brush runs them).
     if (drag.moves > 0)
