@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <tuple>
-#include <unordered_map>
 #include <utility>
 
 #include "app/render/palette.h"
@@ -27,19 +26,41 @@ std::vector<Index> merged(const std::vector<ConstraintSet>& sets, ConstraintKind
                           std::vector<size_t>* position = nullptr)
 {
     std::vector<Index> out;
-    std::unordered_map<Index, bool> seen;
-    if (const std::optional<ConstraintKind> winner = kind_info(kind).loses_to)
+    const std::optional<ConstraintKind> winner = kind_info(kind).loses_to;
+    const auto counted = [&](const ConstraintSet& s) {
+        return s.enabled && (s.kind == kind || (winner && s.kind == *winner));
+    };
+    // Flags over the elements' range, not a hash set: a preset's sets of every face (100k
+    // of them on a scan) are merged at each restart, a smoothing-brush dab's too.
+    bool any = false;
+    Index lo = 0, hi = 0;
+    for (const ConstraintSet& s : sets)
+        if (counted(s))
+            for (const Index e : vertices ? s.vertices : s.faces)
+            {
+                lo = any ? std::min(lo, e) : e;
+                hi = any ? std::max(hi, e) : e;
+                any = true;
+            }
+    if (!any)
+        return out;
+    std::vector<char> seen(static_cast<size_t>(hi - lo) + 1, 0);
+    const auto first_time = [&](Index e) {
+        char& flag = seen[static_cast<size_t>(e - lo)];
+        return !std::exchange(flag, char(1));
+    };
+    if (winner)
         for (const ConstraintSet& s : sets)
             if (s.kind == *winner && s.enabled)
                 for (const Index e : vertices ? s.vertices : s.faces)
-                    seen.emplace(e, true);
+                    (void)first_time(e);
     for (const ConstraintSet& s : sets)
     {
         if (s.kind != kind || !s.enabled)
             continue;
         const std::vector<Index>& list = vertices ? s.vertices : s.faces;
         for (size_t k = 0; k < list.size(); ++k)
-            if (seen.emplace(list[k], true).second)
+            if (first_time(list[k]))
             {
                 out.push_back(list[k]);
                 if (from)

@@ -511,6 +511,14 @@ void EditorSession::close_step()
 {
     if (!open_step_)
         return;
+    if (solver_.stroke_running())
+    {
+        // A smoothing stroke's step holds its last dab's run, whole: waited for, then taken
+        // as a frame takes it (uploaded), before the step is recorded.
+        solver_.wait_for_stroke();
+        update();
+        solver_.end_stroke();
+    }
     OpenStep step = std::move(*open_step_);
     open_step_.reset();
     history_.record(std::move(step.label), std::move(step.before), document_);

@@ -68,7 +68,13 @@ bool CommandExecutor::operator()(const cmd::PaintDab& c) const
         for (const ConstraintSet& was : *s.open_step_->before.sets)
             if (was.name == c.set)
                 start = &was;
-    const DabReach reach = dab_reach(d.mesh.positions, c.center, c.radius, c.strength, c.curve);
+    // The reach is measured on the shape where the stroke began (the open step keeps it when
+    // the stroke moves the shape): the runs of earlier dabs come in while the stroke goes on,
+    // and a map that depended on which had come would not replay bit for bit.
+    const std::vector<Scalar>& shape = s.open_step_ && s.open_step_->before.positions
+                                           ? *s.open_step_->before.positions
+                                           : d.mesh.positions;
+    const DabReach reach = dab_reach(shape, c.center, c.radius, c.strength, c.curve);
     const size_t changed = paint_weights(set, start, d.topology, reach, c.mode);
     if (c.mode != PaintMode::Relax)
         return changed > 0;
@@ -77,16 +83,16 @@ bool CommandExecutor::operator()(const cmd::PaintDab& c) const
     if (std::none_of(set.weights.begin(), set.weights.end(), [](Scalar w) { return w > 0; }))
         return false;
 
-    // The smoothing brush: the stroke's shape is its recipe's run from where it began, so
-    // each dab puts the shape back there and runs the steps with the map as it is now.
-    const EditState& began = s.open_step_->before;
-    d.mesh.positions = *began.positions;
-    d.steps_from_base = *began.steps_from_base;
-    d.reproducible = *began.reproducible;
-    d.shape_recipe = *began.shape_recipe;
-    d.versions.bump(kPositions | kSets | kSetMembers); // the solver restarts from it
+    // The smoothing brush: the stroke's shape is its recipe's run from where it began, with
+    // the map as the newest dab left it. The run is the solver worker's (run_stroke returns
+    // at once): the interface runs no step, a newer dab's run supersedes one not yet done,
+    // and the view shows each run's positions as they come. The stroke's step is recorded
+    // when its last run is done (EditorSession::close_step).
+    if (s.solver_.stroke_running())
+        s.update(); // a run done since the last frame is shown before this one supersedes it
+    d.versions.bump(kSets | kSetMembers); // (what the solver's problems are judged on)
     std::string why;
-    if (!s.solver_.step(c.steps, why))
+    if (!s.solver_.run_stroke(s.open_step_->before, c.steps, why))
         return fail(why);
     return true;
 }

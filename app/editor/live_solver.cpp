@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <thread>
 #include <utility>
 
 #include "app/editor/heat_map.h"
@@ -46,12 +47,15 @@ LiveSolver::~LiveSolver()
 
 void LiveSolver::restart(std::shared_ptr<const Mesh> base,
                          std::shared_ptr<const LocalityOrder> order, Recipe recipe,
-                         std::vector<Scalar> start, std::shared_ptr<const VertexFaces> vertex_faces)
+                         std::vector<Scalar> start, std::shared_ptr<const VertexFaces> vertex_faces,
+                         int steps)
 {
     {
         std::lock_guard lock(mutex_);
-        restart_ = Restart{std::move(base), std::move(order), std::move(recipe),
-                           std::move(vertex_faces), std::move(start)};
+        // (A pending restart is replaced, never queued behind: only the newest is prepared.)
+        restart_ = Restart{std::move(base),         std::move(order), std::move(recipe),
+                           std::move(vertex_faces), std::move(start), std::max(steps, 0)};
+        steps_due_ = 0; // the run before owes nothing now
         ++generation_;
         pending_pins_.reset(); // the recipe has the newest targets
         status_.playing = false;
@@ -78,6 +82,7 @@ bool LiveSolver::cancel_preparation()
         return false;
     restart_.reset();
     pending_pins_.reset();
+    steps_due_ = 0;
     ++generation_; // what the preparation under way makes is dropped
     if (preparing_)
         progress_->cancel();
@@ -111,16 +116,18 @@ void LiveSolver::clear()
     std::unique_lock lock(mutex_);
     restart_.reset();
     pending_pins_.reset();
+    steps_due_ = 0;
     ++generation_;
     if (preparing_)
         progress_->cancel(); // (it is dropped: a long factorization need not end first)
     done_.wait(lock, [&] { return !busy_; });
     run_.reset();
     superseded_.reset();
-    const int restarts = status_.restarts;
+    const int restarts = status_.restarts, on_caller = status_.steps_on_caller;
     const std::uint64_t version = status_.energy_version;
     status_ = {};
     status_.restarts = restarts;
+    status_.steps_on_caller = on_caller;
     status_.energy_version = version + 1; // the curve is gone
     energies_.clear();
     known_energy_.reset();
@@ -172,7 +179,8 @@ void LiveSolver::step_now(int n)
 {
     std::unique_lock lock(mutex_);
     status_.playing = false;
-    done_.wait(lock, [&] { return !busy_ && !restart_; });
+    // (After a restart's own steps, if any: these go on from them.)
+    done_.wait(lock, [&] { return !busy_ && !restart_ && !(steps_due_ > 0 && run_); });
     if (run_ && n > 0)
         run_steps(n, lock);
 }
@@ -182,7 +190,7 @@ bool LiveSolver::wait_published()
     std::unique_lock lock(mutex_);
     done_.wait(lock, [&] {
         return fresh_ || (!status_.playing && !busy_ && !restart_ && !(solve_due_ && run_) &&
-                          !(pending_pins_ && run_));
+                          !(pending_pins_ && run_) && !(steps_due_ > 0 && run_));
     });
     return fresh_;
 }
@@ -232,7 +240,7 @@ void LiveSolver::wait_idle()
     done_.wait(lock, [&] {
         return !busy_ && !restart_ && !(heat_dirty_ && run_) &&
                !(energy_due_ && run_ && !status_.playing) && !(solve_due_ && run_) &&
-               !(pending_pins_ && run_);
+               !(pending_pins_ && run_) && !(steps_due_ > 0 && run_);
     });
 }
 
@@ -374,6 +382,11 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
     bool solve_goes_on = false; // a frame of a progressive solve: the next one is due
     Scalar relative_gradient = -1;
     Session& session = run_->session();
+    // A restart meanwhile drops this frame: its steps stop at the next one (a brush dab's
+    // run superseded by the next dab's is not stepped to its end).
+    const auto superseded = [&] {
+        return generation_.load(std::memory_order_relaxed) != generation;
+    };
     if (!held_) // (the steps move no fixed vertex: the same before and after them)
         held_ = session.held_energy(session.positions());
     if (solves_for_minimizer(session.recipe().method))
@@ -408,7 +421,7 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
                 converged_now = rule.stop_after(info.gradient, gradient_now);
             }
         }
-        for (; done < n && !converged_now && !solve_goes_on; ++done)
+        for (; done < n && !converged_now && !solve_goes_on && !superseded(); ++done)
         {
             const StepInfo info = run_->step();
             gradient_now = session.gradient(session.positions());
@@ -433,9 +446,9 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         const bool per_step = session.fuses_energy() || tracked;
         // The fused sweep sums the gradient at little cost: the plot's, when shown.
         const bool step_gradient = tracked || (want_gradient && session.fuses_energy());
-        for (; done < n && !per_step; ++done)
+        for (; done < n && !per_step && !superseded(); ++done)
             session.step();
-        for (; done < n && per_step; ++done)
+        for (; done < n && per_step && !superseded(); ++done)
         {
             TermEnergies start;
             const StepInfo info = session.step(start, step_gradient);
@@ -461,17 +474,25 @@ void LiveSolver::run_steps(int n, std::unique_lock<std::mutex>& lock)
         if (tracked)
             relative_gradient = step_rule_->relative();
     }
-    back_.assign(run_->session().positions().begin(), run_->session().positions().end());
-    compute_display(back_, run_->mesh());
-    compute_heat(heat);
+    // (Nothing of a superseded frame is shown: its positions, geometry and colours are not
+    // made.)
+    const bool dropped = superseded();
+    if (!dropped)
+    {
+        back_.assign(run_->session().positions().begin(), run_->session().positions().end());
+        compute_display(back_, run_->mesh());
+        compute_heat(heat);
+    }
     const double ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
 
     lock.lock();
     busy_ = false;
-    if (generation == generation_)
+    if (generation == generation_) // (never after `dropped`: generations only grow)
     {
         status_.steps += done;
+        if (std::this_thread::get_id() != worker_id_)
+            status_.steps_on_caller += done;
         status_.step_ms = ms;
         status_.converged = converged_now;
         status_.relative_gradient = relative_gradient;
@@ -614,6 +635,7 @@ LiveSolver::Prepared LiveSolver::prepare(Restart& r, std::unique_ptr<LocalityRun
 void LiveSolver::worker()
 {
     std::unique_lock lock(mutex_);
+    worker_id_ = std::this_thread::get_id();
     for (;;)
     {
         wake_.wait(lock, [&] {
@@ -622,7 +644,8 @@ void LiveSolver::worker()
                    (status_.playing && run_ && !fresh_ && !busy_ && !restart_) ||
                    (heat_dirty_ && run_ && !busy_ && !restart_) ||
                    (energy_due_ && run_ && !busy_ && !restart_ && !status_.playing) ||
-                   (solve_due_ && run_ && !busy_ && !restart_ && !status_.playing);
+                   (solve_due_ && run_ && !busy_ && !restart_ && !status_.playing) ||
+                   (steps_due_ > 0 && run_ && !busy_ && !restart_ && !status_.playing);
         });
         if (quit_)
             return;
@@ -643,6 +666,13 @@ void LiveSolver::worker()
             solving_ = true;
             run_steps(kDirectSolveSteps, lock);
             solving_ = false;
+            continue;
+        }
+        if (steps_due_ > 0 && run_ && !restart_ && !status_.playing && !busy_)
+        {
+            // The restart's own steps (a brush dab's run), after the direct method's solve,
+            // as step_now would run them on the caller's thread: the same bits.
+            run_steps(std::exchange(steps_due_, 0), lock);
             continue;
         }
         if (energy_due_ && !restart_ && !status_.playing && !(heat_dirty_ && run_))
@@ -740,6 +770,7 @@ void LiveSolver::worker()
                     energy_due_ = false;
                     ++status_.energy_version;
                     solve_due_ = solves_for_minimizer(r.recipe.method);
+                    steps_due_ = r.steps;
                     if (p.moved)
                     {
                         published_ = std::move(p.published);

@@ -2,6 +2,7 @@
 // Copyright 2026 the MeshFair authors.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -64,7 +65,10 @@ struct SolverStatus
     //! The last restart's preparation was cancelled (cancel_preparation): no run until
     //! the next restart.
     bool cancelled = false;
-    int restarts = 0;                 //!< precomputations so far
+    int restarts = 0; //!< precomputations so far
+    //! Steps run on a caller's thread (step_now: the Step command), not on the worker; a
+    //! smoothing-brush dab adds none (its run is the worker's).
+    int steps_on_caller = 0;
     std::uint64_t energy_version = 0; //!< changes of the energy curve so far
 };
 
@@ -101,9 +105,13 @@ public:
     //! no mesh; the run before's topology and factor are kept without comparing
     //! connectivities when the base is the same object); they must stay unchanged while a
     //! run holds them: a new shape is a new object.
+    //! `steps` > 0: once prepared (and, with the direct method, solved), the worker runs
+    //! that many steps, as step_now would, and publishes them (a smoothing-brush dab's run).
+    //! A restart supersedes the one before it: a pending one is dropped unprepared, one being
+    //! prepared is never stepped nor shown, and steps under way stop at the next step.
     void restart(std::shared_ptr<const Mesh> base, std::shared_ptr<const LocalityOrder> order,
                  Recipe recipe, std::vector<Scalar> start,
-                 std::shared_ptr<const VertexFaces> vertex_faces);
+                 std::shared_ptr<const VertexFaces> vertex_faces, int steps = 0);
     //! No run (no recipe, or one with problems): nothing steps.
     void clear();
     //! \brief Stops the restart pending or being prepared (a long factorization): it is
@@ -142,7 +150,7 @@ public:
     //! take. For scripts and tests, which show frames as fast as they come.
     bool wait_published();
     //! Waits until the worker is idle (precomputed, not mid-frame, the direct method's
-    //! minimizer solved); for tests and scripts.
+    //! minimizer solved, a restart's steps run); for tests, scripts and a stroke's end.
     void wait_idle();
     //! Waits until no restart is pending or being prepared (a run may go on playing).
     void wait_prepared();
@@ -194,6 +202,7 @@ private:
         Recipe recipe;
         std::shared_ptr<const VertexFaces> vertex_faces;
         std::vector<Scalar> start;
+        int steps = 0; // run once prepared (restart's `steps`)
     };
     //! What a restart's preparation made: the run (null when it failed or was cancelled)
     //! and what the status and the first frame take from it.
@@ -226,6 +235,10 @@ private:
     // Targets for the pins given while the worker was busy (move_hard_targets).
     std::optional<std::vector<Scalar>> pending_pins_;
     bool busy_ = false; // the worker is precomputing or stepping
+    // Steps the current run owes its restart (restart's `steps`): run on the worker once
+    // prepared and solved, not playing.
+    int steps_due_ = 0;
+    std::thread::id worker_id_; // (steps_on_caller counts the others' steps)
     bool quit_ = false;
     int iterations_per_frame_ = 1;
     int frames_left_ = 0;          // > 0: frames to play before pausing
@@ -237,7 +250,9 @@ private:
     // the thread that steps (busy_) touches them.
     std::optional<StepConvergence> step_rule_;
     std::uint64_t step_rule_epoch_ = 0;
-    std::uint64_t generation_ = 0; // restarts so far: a frame of an older run is dropped
+    // Restarts so far: a frame of an older run is dropped. Written under the lock; read
+    // without it by the stepping thread, which stops the steps of a run superseded meanwhile.
+    std::atomic<std::uint64_t> generation_ = 0;
     SolverStatus status_;
     std::vector<Scalar> published_; // file order, newest
     int published_steps_ = 0;       // the run's step count at published_

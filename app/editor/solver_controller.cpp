@@ -38,6 +38,7 @@ const std::vector<std::string>& SolverController::problems()
 
 void SolverController::clear()
 {
+    stroke_.reset();
     run_open_ = false;
     run_before_.reset();
     solver_.clear();
@@ -74,11 +75,10 @@ void SolverController::start_from_base()
     seen_.reset();
 }
 
-bool SolverController::shape_made_by_current_recipe() const
+bool SolverController::made_by_current_recipe(const std::shared_ptr<const ShapeRecipe>& made) const
 {
     // Steps depend on the positions and the recipe only: a run restarted from a shape its
     // own recipe made gives the same bits as the run that made it, going on.
-    const std::shared_ptr<const ShapeRecipe>& made = document_.shape_recipe;
     return made != nullptr &&
            same_run(document_.sets, document_.solver, made->sets, made->solver, false);
 }
@@ -91,6 +91,10 @@ void SolverController::restart_if_needed()
                w.base == v.base;
     };
     if (seen_ && same(*seen_))
+        return;
+    // A smoothing stroke's dabs restart the solver themselves (run_stroke), and nothing else
+    // changes the sets or the shape before the stroke ends (any other command ends it).
+    if (stroke_)
         return;
     const std::optional<DocumentVersions> before = std::exchange(seen_, v);
     if (!problems().empty())
@@ -194,7 +198,13 @@ bool SolverController::take_positions()
         // meanwhile counts in status() before its positions are taken.
         std::swap(incoming_, document_.mesh.positions);
         document_.steps_from_base = steps_at_restart_ + steps;
-        if (steps > 0)
+        if (stroke_)
+        {
+            // A stroke's run from where it began: what made the shape is known from there.
+            document_.reproducible = stroke_->runs_reproducible;
+            document_.shape_recipe = steps > 0 ? running_ : stroke_->shape_recipe;
+        }
+        else if (steps > 0)
             document_.shape_recipe = running_;
         document_.modified = true;
         document_.versions.bump(kPositions);
@@ -208,6 +218,7 @@ bool SolverController::take_positions()
 
 bool SolverController::play(int frames, std::string& why)
 {
+    finish_stroke(); // the run plays on from the stroke's shape
     if (run_open_)
         return true;
     prepare_again();
@@ -276,6 +287,7 @@ bool SolverController::take_frame()
 
 bool SolverController::step(int n, std::string& why)
 {
+    finish_stroke(); // the steps go on from the stroke's shape
     pause();
     prepare_again();
     update();
@@ -287,6 +299,65 @@ bool SolverController::step(int n, std::string& why)
     solver_.step_now(n);
     update();
     return true;
+}
+
+bool SolverController::run_stroke(const EditState& began, int n, std::string& why)
+{
+    pause();
+    prepare_again();
+    if (!problems().empty())
+    {
+        why = "cannot solve: " + problems().front();
+        return false;
+    }
+    if (!stroke_) // the stroke's first run: where it began, for each of its dabs
+        stroke_ = Stroke{*began.positions, *began.steps_from_base, *began.reproducible,
+                         *began.shape_recipe, true};
+    Stroke& stroke = *stroke_;
+    // As restart_if_needed restarts from a shape that was edited: from the base, or from
+    // the stroke's start, which is reproducible only if the current recipe made it.
+    const bool at_base = stroke.steps_from_base == 0;
+    stroke.runs_reproducible =
+        stroke.reproducible && (at_base || made_by_current_recipe(stroke.shape_recipe));
+    cancelled_ = false;
+    share_base();
+    const std::vector<ConstraintSet>& sets = document_.sets;
+    const SolverSettings& settings = document_.solver;
+    solver_.restart(shared_base_, shared_order_,
+                    build_recipe(sets, settings, document_.mesh, document_.base_positions, 0),
+                    at_base ? std::vector<Scalar>{} : stroke.positions, shared_faces_, n);
+    steps_at_restart_ = stroke.steps_from_base;
+    running_ = std::make_shared<const ShapeRecipe>(ShapeRecipe{sets, settings});
+    seen_ = document_.versions;
+    return true;
+}
+
+void SolverController::end_stroke()
+{
+    if (!stroke_)
+        return;
+    if (!solver_.status().ready)
+    {
+        // No run of the last dab's map to show: the stroke's shape is where it began.
+        Stroke& stroke = *stroke_;
+        document_.mesh.positions = std::move(stroke.positions);
+        document_.steps_from_base = stroke.steps_from_base;
+        document_.reproducible = stroke.reproducible;
+        document_.shape_recipe = stroke.shape_recipe;
+        document_.versions.bump(kPositions);
+        if (seen_) // (not a shape to restart from: no run fits these sets)
+            seen_->positions = document_.versions.positions;
+    }
+    stroke_.reset();
+}
+
+void SolverController::finish_stroke()
+{
+    if (!stroke_)
+        return;
+    wait_for_stroke();
+    update();
+    end_stroke();
 }
 
 void SolverController::settle()

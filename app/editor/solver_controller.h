@@ -40,6 +40,24 @@ public:
     //! \brief Runs `n` steps now on this thread (the caller records the undo step); false
     //! (with `why`) when the sets cannot run.
     bool step(int n, std::string& why);
+    //! \brief A smoothing-brush dab's run: the solver restarted from where the stroke began
+    //! (`began`, the stroke's open step: its shape and what made it) with the sets as they
+    //! are now, and `n` steps run on the worker. Returns at once, before the run is
+    //! prepared: the interface thread runs no step of it. A dab's run supersedes the
+    //! stroke's run not yet finished (LiveSolver::restart); the document keeps the shape it
+    //! shows until the newest run's positions come (update()). False (with `why`) when the
+    //! sets cannot run.
+    bool run_stroke(const EditState& began, int n, std::string& why);
+    //! A stroke's run was asked for and the stroke has not ended (end_stroke).
+    bool stroke_running() const { return stroke_.has_value(); }
+    //! Waits until the stroke's last run is done: its positions are the next update()'s.
+    void wait_for_stroke() { solver_.wait_idle(); }
+    //! \brief The stroke ends, once update() took its last run's positions; when that run
+    //! could not be made (the recipe did not fit, the preparation was cancelled), the shape
+    //! goes back to where the stroke began, as it was before the runs were asynchronous.
+    void end_stroke();
+    //! wait_for_stroke, update, end_stroke.
+    void finish_stroke();
     void set_iterations_per_frame(int n) { solver_.set_iterations_per_frame(n); }
     //! LiveSolver::set_phase_listener.
     void set_phase_listener(std::function<void(const PreparationProgress::Snapshot&)> listener)
@@ -103,7 +121,11 @@ private:
     void restart_if_needed();
     //! \brief Whether the current shape, made by `steps_from_base` steps of its own recipe,
     //! is what the current sets and settings give after as many steps.
-    bool shape_made_by_current_recipe() const;
+    bool shape_made_by_current_recipe() const
+    {
+        return made_by_current_recipe(document_.shape_recipe);
+    }
+    bool made_by_current_recipe(const std::shared_ptr<const ShapeRecipe>& made) const;
 
     //! The base shape, order and faces around each vertex the solver's runs share (made once
     //! per document, the base again when it changes: versions.base), never copied per restart.
@@ -126,6 +148,17 @@ private:
     bool run_open_ = false;                // play() began a run not yet recorded
     bool cancelled_ = false;               // the last preparation was cancelled
     std::optional<EditState> run_before_;
+    //! The smoothing stroke whose runs the solver makes (run_stroke): where it began, and
+    //! whether its runs' shapes are reproducible from the base.
+    struct Stroke
+    {
+        std::vector<Scalar> positions;
+        int steps_from_base = 0;
+        bool reproducible = true;
+        std::shared_ptr<const ShapeRecipe> shape_recipe;
+        bool runs_reproducible = true;
+    };
+    std::optional<Stroke> stroke_;
     DisplayGeometry display_;      // the solver's newest display geometry
     std::vector<Scalar> incoming_; // the solver's newest positions, before they are shown
 };

@@ -24,6 +24,7 @@ bool PaintTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
     const ScreenElements elements = screen_elements(view_, vertices);
     visible_.clear();
     projected_.clear();
+    places_.clear();
     for (size_t k = 0; k < elements.points.size(); ++k)
     {
         const ScreenPoint& p = elements.points[k];
@@ -32,6 +33,8 @@ bool PaintTool::press(const ToolContext& context, Modifiers, ScreenPoint at,
         {
             visible_.push_back(static_cast<Index>(k));
             projected_.push_back(p);
+            const std::vector<Scalar>& x = view_.mesh->positions;
+            places_.push_back({x[3 * k], x[3 * k + 1], x[3 * k + 2]});
         }
     }
     const Index v = nearest(at);
@@ -72,16 +75,12 @@ void PaintTool::dab(ScreenPoint at, std::vector<Command>& out)
     const Index k = nearest(at);
     if (k == kInvalidIndex)
         return;
-    // Where the vertex is now (the strokes's dabs move it), in the world.
-    const size_t v = 3 * static_cast<size_t>(visible_[static_cast<size_t>(k)]);
-    const std::vector<Scalar>& x = view_.mesh->positions;
-    out.push_back(cmd::PaintDab{paint_.set,
-                                paint_.mode,
-                                {x[v], x[v + 1], x[v + 2]},
-                                radius_,
-                                paint_.strength,
-                                paint_.curve,
-                                paint_.steps});
+    // Where the vertex was when the stroke began, in the world: the shape the dabs measure
+    // their reach on. (The smoothing brush's runs move it while the stroke goes on, as they
+    // come in from the solver's thread: the same mouse path gives the same dabs whichever
+    // have come.)
+    out.push_back(cmd::PaintDab{paint_.set, paint_.mode, places_[static_cast<size_t>(k)], radius_,
+                                paint_.strength, paint_.curve, paint_.steps});
 }
 
 void PaintTool::move(ScreenPoint to, std::vector<Command>& out)

@@ -11,11 +11,14 @@ namespace meshfair::app {
 //!
 //! Each dab is centred on the visible vertex nearest to the cursor (within the radius), with
 //! the screen radius turned into the world at the depth of the first, so that the commands
-//! are in the world and a script replays them without the view. What is visible comes from
-//! the ID buffer rendered once, at the press (as the selection brush does): a dab then costs
-//! a scan of the visible vertices' screen points, not a render of the mesh. Dabs are a
-//! quarter of the radius apart along the cursor's path (a fast stroke leaves no gaps); a
-//! press where no visible vertex is within the radius navigates.
+//! are in the world and a script replays them without the view. The centre is where that
+//! vertex was when the stroke began, the shape on which cmd::PaintDab measures its reach:
+//! the smoothing brush's runs move the surface while the stroke goes on, as they come from
+//! the solver's thread, and the same path must give the same dabs whichever have come. What
+//! is visible comes from the ID buffer rendered once, at the press (as the selection brush
+//! does): a dab then costs a scan of the visible vertices' screen points, not a render of
+//! the mesh. Dabs are a quarter of the radius apart along the cursor's path (a fast stroke
+//! leaves no gaps); a press where no visible vertex is within the radius navigates.
 class PaintTool final : public InteractiveTool
 {
 public:
@@ -36,6 +39,7 @@ private:
     ToolView view_;
     std::vector<Index> visible_;         // the vertices the view showed at the press
     std::vector<ScreenPoint> projected_; // where each of them projected
+    std::vector<Vec3> places_;           // and where each of them was, in the world
     PaintSettings paint_;
     double radius_px_ = 24;
     double radius_ = 0; // in the world, fixed for the stroke at its first dab

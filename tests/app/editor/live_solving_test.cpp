@@ -12,7 +12,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <filesystem>
+#include <mutex>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -238,6 +241,56 @@ void play_offscreen(const fs::path& mesh, const fs::path& script)
     session.camera().frame(session.document().box, session.aspect());
     play_script(read_script(script.string()), session, host);
     session.end_session();
+}
+
+// Holds the solver's next preparation where a phase begins (on its thread) until the test
+// lets it go on: a run that cannot finish before the test says so.
+class StrokeGate
+{
+public:
+    void hold(PreparationProgress::Phase phase)
+    {
+        std::lock_guard lock(mutex_);
+        hold_ = phase;
+        held_ = false;
+    }
+    void wait_held()
+    {
+        std::unique_lock lock(mutex_);
+        changed_.wait(lock, [&] { return held_; });
+    }
+    void release()
+    {
+        {
+            std::lock_guard lock(mutex_);
+            hold_.reset();
+        }
+        changed_.notify_all();
+    }
+    void arrive(const PreparationProgress::Snapshot& p)
+    {
+        std::unique_lock lock(mutex_);
+        if (hold_ != p.phase)
+            return;
+        held_ = true;
+        changed_.notify_all();
+        changed_.wait(lock, [&] { return !hold_; });
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    std::optional<PreparationProgress::Phase> hold_;
+    bool held_ = false;
+};
+
+// A dab of the smoothing brush on the unit sphere, centred toward (x, y, 1).
+cmd::PaintDab relax_dab(Scalar x, Scalar y, int steps)
+{
+    const Scalar n = std::sqrt(x * x + y * y + 1);
+    return cmd::PaintDab{
+        "brush", PaintMode::Relax, Vec3{x / n, y / n, 1 / n}, 0.25, 0.5, FalloffCurve::Smooth,
+        steps};
 }
 
 } // namespace
@@ -1440,6 +1493,110 @@ TEST_SUITE("Smoothing brush")
                                       "}]}");
         REQUIRE_NOTHROW(play_offscreen(b.path, script));
         CHECK(io::read_mesh(out.string()).positions == file_order_mesh(s.document()).positions);
+    }
+
+    TEST_CASE(
+        "a stroke's dab returns before its run is prepared (the interface runs no step), a "
+        "newer dab supersedes a run not yet done, and the stroke ends in the last dab's run")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        s.settle_solver(); // the opening's run prepared
+        const std::vector<Scalar> before = s.document().mesh.positions;
+        const size_t steps = s.history().undo_count();
+        const SolverStatus at_start = s.solver_status();
+        StrokeGate gate;
+        s.observe_preparation([&gate](const PreparationProgress::Snapshot& p) { gate.arrive(p); });
+
+        // The first dab's run held in its preparation: the dab has returned all the same,
+        // with its map painted and the shape not yet changed.
+        const cmd::PaintDab first = relax_dab(-0.2, 0, 12), second = relax_dab(0.2, 0.1, 12);
+        gate.hold(PreparationProgress::Phase::Assembling);
+        REQUIRE(s.dispatch(first, Interaction{"stroke"}));
+        gate.wait_held();
+        CHECK(s.solver_status().preparing);
+        REQUIRE(s.set_named("brush"));
+        CHECK_FALSE(s.document().sets[0].weights.empty());
+        s.update();
+        CHECK(s.document().mesh.positions == before);
+        // The second dab while the first's run is under way: it supersedes that run.
+        REQUIRE(s.dispatch(second, Interaction{"stroke"}));
+        CHECK(s.document().mesh.positions == before);
+        gate.release();
+        s.end_interaction(); // waits for the last dab's run, then records the stroke
+        const std::vector<Scalar> stroked = s.document().mesh.positions;
+        CHECK(stroked != before);
+        CHECK(s.history().undo_count() == steps + 1);
+        CHECK(s.history().undo_label() == "smooth stroke");
+        CHECK(s.document().steps_from_base == 12);
+        const SolverStatus st = s.solver_status();
+        CHECK(st.steps_on_caller == at_start.steps_on_caller); // all steps on the worker
+        // The first dab's run was never made the current one: one restart, the second's.
+        CHECK(st.restarts == at_start.restarts + 1);
+        CHECK_FALSE(st.preparing);
+        // The last dab's run alone, from the base: meshfair-cli's path on the exported
+        // recipe gives the same bits.
+        CHECK(cli_reproduces(s, b.path, dir));
+        // ... and the first dab's run alone ends elsewhere: that shape was not kept.
+        fs::create_directories(dir / "first");
+        Editing one(dir / "first", noisy_sphere());
+        REQUIRE(one.session.dispatch(first, Interaction{"stroke"}));
+        one.session.end_interaction();
+        CHECK(one.session.document().mesh.positions != before);
+        CHECK(one.session.document().mesh.positions != stroked);
+
+        // Undo: the stroke's start, the sets as they were; redo: the stroke's shape.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().mesh.positions == before);
+        CHECK(s.document().sets.empty());
+        REQUIRE(s.dispatch(cmd::Redo{}));
+        CHECK(s.document().mesh.positions == stroked);
+    }
+
+    TEST_CASE(
+        "a stroke of many dabs, faster than their runs, is one undo step ending bit for bit in "
+        "the shape of its last dab's run alone")
+    {
+        const fs::path dir = test::temp_dir();
+        Editing b(dir, noisy_sphere());
+        EditorSession& s = b.session;
+        s.settle_solver();
+        const std::vector<Scalar> before = s.document().mesh.positions;
+        const int on_caller = s.solver_status().steps_on_caller;
+        const int restarts = s.solver_status().restarts;
+        const int dabs = 30;
+        for (int k = 0; k < dabs; ++k)
+        {
+            REQUIRE(s.dispatch(relax_dab(-0.4 + 0.8 * k / (dabs - 1), 0.1 * (k % 3), 9),
+                               Interaction{"stroke"}));
+            if (k % 4 == 0)
+                s.update(); // a frame now and then shows the newest run done
+        }
+        s.end_interaction();
+        const std::vector<Scalar> stroked = s.document().mesh.positions;
+        CHECK(s.history().undo_count() == 1);
+        CHECK(s.document().steps_from_base == 9);
+        CHECK(s.document().reproducible);
+        CHECK(s.solver_status().steps_on_caller == on_caller);
+        // At most one restart a dab: the runs superseded were dropped, not queued.
+        CHECK(s.solver_status().restarts - restarts <= dabs);
+        // The same map's run alone, by meshfair-cli's path and by the editor's own Step on
+        // the imported recipe (from the base, on the caller's thread: counted there).
+        CHECK(cli_reproduces(s, b.path, dir));
+        fs::create_directories(dir / "again");
+        Editing other(dir / "again", noisy_sphere());
+        EditorSession& t = other.session;
+        REQUIRE(t.dispatch(cmd::ImportRecipe{(dir / "recipe.json").string()}));
+        const int t_on_caller = t.solver_status().steps_on_caller;
+        REQUIRE(t.dispatch(cmd::Step{9}));
+        CHECK(t.solver_status().steps_on_caller == t_on_caller + 9);
+        CHECK(t.document().mesh.positions == stroked);
+        // One undo step: back to the start exactly.
+        REQUIRE(s.dispatch(cmd::Undo{}));
+        CHECK(s.document().mesh.positions == before);
+        CHECK(s.document().sets.empty());
+        CHECK_FALSE(s.dispatch(cmd::Undo{}));
     }
 
     TEST_CASE("painting an anchor set's weights with the mouse is one undo step a stroke")
