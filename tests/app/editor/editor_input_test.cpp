@@ -26,6 +26,7 @@
 #include "core/errors.h"
 #include "core/geometry/face_geometry.h"
 #include "core/io/io.h"
+#include "tests/app/editor/phase_gate.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;
@@ -128,55 +129,6 @@ struct Editor
         const ViewRect& v = session.view_rect();
         return {v.x + fx * v.width, v.y + fy * v.height, 0};
     }
-};
-
-// Holds the solver's thread where a phase of its preparation begins, until released.
-class PhaseGate
-{
-public:
-    //! The next preparation stops at `phase` (on the solver's thread).
-    void hold(PreparationProgress::Phase phase)
-    {
-        std::lock_guard lock(mutex_);
-        hold_ = phase;
-        held_ = false;
-    }
-    void wait_held()
-    {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return held_; });
-    }
-    void release()
-    {
-        {
-            std::lock_guard lock(mutex_);
-            hold_.reset();
-        }
-        changed_.notify_all();
-    }
-    //! The solver's listener.
-    void arrive(const PreparationProgress::Snapshot& p)
-    {
-        std::unique_lock lock(mutex_);
-        ++seen_;
-        if (hold_ != p.phase)
-            return;
-        held_ = true;
-        changed_.notify_all();
-        changed_.wait(lock, [&] { return !hold_; });
-    }
-    int phases_seen() const
-    {
-        std::lock_guard lock(mutex_);
-        return seen_;
-    }
-
-private:
-    mutable std::mutex mutex_;
-    std::condition_variable changed_;
-    std::optional<PreparationProgress::Phase> hold_;
-    bool held_ = false;
-    int seen_ = 0;
 };
 
 fs::path bunny_copy()
@@ -365,7 +317,7 @@ TEST_SUITE("Editor input")
         const std::vector<Scalar> before = e.doc().mesh.positions;
         // The solver's thread held where the ordering begins, as a large mesh's would stay
         // there for seconds, until the test lets it go on.
-        PhaseGate gate;
+        test::PhaseGate gate;
         e.session.observe_preparation(
             [&gate](const PreparationProgress::Snapshot& p) { gate.arrive(p); });
 

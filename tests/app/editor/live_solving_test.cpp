@@ -38,6 +38,7 @@
 #include "core/recipe/recipe.h"
 #include "core/recipe/recipe_json.h"
 #include "core/recipe/session.h"
+#include "tests/app/editor/phase_gate.h"
 #include "tests/helpers.h"
 
 using namespace meshfair;
@@ -242,47 +243,6 @@ void play_offscreen(const fs::path& mesh, const fs::path& script)
     play_script(read_script(script.string()), session, host);
     session.end_session();
 }
-
-// Holds the solver's next preparation where a phase begins (on its thread) until the test
-// lets it go on: a run that cannot finish before the test says so.
-class StrokeGate
-{
-public:
-    void hold(PreparationProgress::Phase phase)
-    {
-        std::lock_guard lock(mutex_);
-        hold_ = phase;
-        held_ = false;
-    }
-    void wait_held()
-    {
-        std::unique_lock lock(mutex_);
-        changed_.wait(lock, [&] { return held_; });
-    }
-    void release()
-    {
-        {
-            std::lock_guard lock(mutex_);
-            hold_.reset();
-        }
-        changed_.notify_all();
-    }
-    void arrive(const PreparationProgress::Snapshot& p)
-    {
-        std::unique_lock lock(mutex_);
-        if (hold_ != p.phase)
-            return;
-        held_ = true;
-        changed_.notify_all();
-        changed_.wait(lock, [&] { return !hold_; });
-    }
-
-private:
-    std::mutex mutex_;
-    std::condition_variable changed_;
-    std::optional<PreparationProgress::Phase> hold_;
-    bool held_ = false;
-};
 
 // A dab of the smoothing brush on the unit sphere, centred toward (x, y, 1).
 cmd::PaintDab relax_dab(Scalar x, Scalar y, int steps)
@@ -1506,7 +1466,7 @@ TEST_SUITE("Smoothing brush")
         const std::vector<Scalar> before = s.document().mesh.positions;
         const size_t steps = s.history().undo_count();
         const SolverStatus at_start = s.solver_status();
-        StrokeGate gate;
+        test::PhaseGate gate;
         s.observe_preparation([&gate](const PreparationProgress::Snapshot& p) { gate.arrive(p); });
 
         // The first dab's run held in its preparation: the dab has returned all the same,
