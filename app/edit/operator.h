@@ -39,7 +39,7 @@ struct OperatorInfo
     std::string_view script = {};
     //! Another script action that gives it ("hide_set" beside "show_set").
     std::string_view script_alias = {};
-    //! The script action writes a file (its path is checked before anything runs).
+    //! The script action writes a file: its failure is an output not written (exit code 3).
     bool writes = false;
     //! The script action is read by a reader of its own (script_parse.cpp's
     //! read_action overloads) rather than from `fields`: it has several forms, or reads
