@@ -542,8 +542,9 @@ ScriptAction parse_action(const CheckedJson& j)
     {
         if (is_option(key))
             continue;
+        const std::string& name = key; // (a lambda may not capture a structured binding)
         const auto named = std::find_if(forms.begin(), forms.end(),
-                                        [&](const ActionForm& f) { return f.name == key; });
+                                        [&](const ActionForm& f) { return f.name == name; });
         if (named == forms.end())
             value.fail("is not an action or an action's option");
         if (form)

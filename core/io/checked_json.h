@@ -126,6 +126,8 @@ private:
     };
     CheckedJson(std::shared_ptr<const Source> source, const nlohmann::json& value,
                 std::string path);
+    //! A source of no document of its own, for a value parsed elsewhere.
+    static std::shared_ptr<const Source> source_of(std::string file);
     CheckedJson child(const nlohmann::json& value, std::string path) const;
 
     // A value's copy is a reference count and its path: a list of a million elements
