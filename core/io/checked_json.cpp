@@ -63,17 +63,8 @@ CheckedJson CheckedJson::parse(std::string_view text, std::string file, std::str
 }
 
 CheckedJson::CheckedJson(const nlohmann::json& value, std::string file, std::string path)
-    : CheckedJson(source_of(std::move(file)), value, std::move(path))
+    : CheckedJson(std::make_shared<Source>(Source{{}, std::move(file)}), value, std::move(path))
 {
-}
-
-std::shared_ptr<const CheckedJson::Source> CheckedJson::source_of(std::string file)
-{
-    // Made in place: a Source is never moved (nlohmann::json's move is not noexcept to
-    // clang-tidy's eyes).
-    auto source = std::make_shared<Source>();
-    source->file = std::move(file);
-    return source;
 }
 
 CheckedJson::CheckedJson(std::shared_ptr<const Source> source, const nlohmann::json& value,

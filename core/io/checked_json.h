@@ -119,6 +119,9 @@ public:
 
 private:
     //! What the values of a file share: the document when parsed here, and the file's name.
+    // Its destructor is nlohmann::json's, which reserves a stack to free nested values
+    // without recursion: were that allocation to fail, std::terminate is the right end.
+    // NOLINTNEXTLINE(bugprone-exception-escape)
     struct Source
     {
         nlohmann::json document;
@@ -126,8 +129,6 @@ private:
     };
     CheckedJson(std::shared_ptr<const Source> source, const nlohmann::json& value,
                 std::string path);
-    //! A source of no document of its own, for a value parsed elsewhere.
-    static std::shared_ptr<const Source> source_of(std::string file);
     CheckedJson child(const nlohmann::json& value, std::string path) const;
 
     // A value's copy is a reference count and its path: a list of a million elements
