@@ -30,6 +30,17 @@ inline double seconds_since(std::chrono::steady_clock::time_point start)
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+inline double ms_since(std::chrono::steady_clock::time_point start)
+{
+    return 1000 * seconds_since(start);
+}
+
+//! The largest sample (0 for none): what a benchmark reports beside the median.
+inline double max_of(const std::vector<double>& samples)
+{
+    return samples.empty() ? 0 : *std::max_element(samples.begin(), samples.end());
+}
+
 //! n with thousands separated by commas ("1,250,000").
 inline std::string human_count(long n)
 {

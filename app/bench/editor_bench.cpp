@@ -42,11 +42,7 @@ namespace {
 using namespace meshfair;
 using namespace meshfair::app;
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
+using bench::ms_since;
 
 struct Series
 {

@@ -26,16 +26,6 @@ namespace {
 using namespace meshfair::app;
 using Clock = std::chrono::steady_clock;
 
-double ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double max_of(const std::vector<double>& v)
-{
-    return v.empty() ? 0 : *std::max_element(v.begin(), v.end());
-}
-
 double gigabytes(double bytes)
 {
     return bytes / 1e9;

@@ -21,11 +21,6 @@ namespace {
 using namespace meshfair::app;
 using Clock = std::chrono::steady_clock;
 
-double stroke_ms_since(Clock::time_point start)
-{
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 //! The CPU time of the calling thread so far, in milliseconds: a dab's own work, where the
 //! wall clock also counts the waits for a core on a shared machine.
 double thread_cpu_ms()
@@ -33,11 +28,6 @@ double thread_cpu_ms()
     timespec t{};
     clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
     return 1e3 * double(t.tv_sec) + 1e-6 * double(t.tv_nsec);
-}
-
-double longest(const std::vector<double>& v)
-{
-    return v.empty() ? 0 : *std::max_element(v.begin(), v.end());
 }
 
 struct StrokeTimes
@@ -60,14 +50,14 @@ void stroke(EditorSession& s, int width, int height, const PaintOptions& o, Stro
     const auto start = Clock::now();
     auto at = Clock::now();
     s.mouse_press(MouseButton::Left, {}, from.x, from.y);
-    t.press.push_back(stroke_ms_since(at));
+    t.press.push_back(ms_since(at));
     for (int k = 1; k < o.dabs; ++k)
     {
         const size_t before = s.last_stroke().size();
         at = Clock::now();
         const double cpu = thread_cpu_ms();
         s.mouse_move(from.x + spacing * k, from.y);
-        const double ms = stroke_ms_since(at);
+        const double ms = ms_since(at);
         if (s.last_stroke().size() == before + 1)
         {
             t.dab.push_back(ms);
@@ -76,14 +66,14 @@ void stroke(EditorSession& s, int width, int height, const PaintOptions& o, Stro
         at = Clock::now();
         s.update();
         s.sync_renderer();
-        t.frame.push_back(stroke_ms_since(at));
+        t.frame.push_back(ms_since(at));
     }
     at = Clock::now();
     s.mouse_release(MouseButton::Left, from.x + spacing * (o.dabs - 1), from.y);
     // (After the release the shape is the stroke's: a frame's update takes what is left.)
     s.update();
-    t.release.push_back(stroke_ms_since(at));
-    t.stroke.push_back(stroke_ms_since(start));
+    t.release.push_back(ms_since(at));
+    t.stroke.push_back(ms_since(start));
     t.dabs = s.last_stroke().size();
     s.dispatch(cmd::Undo{});
     s.settle_solver();
@@ -131,9 +121,9 @@ void paint_case(const Mesh& mesh, int width, int height, const PaintOptions& o)
             stroke(s, width, height, o, t);
         std::printf(
             "| %s | %zu | %.1f | %.2f / %.2f | %.2f / %.2f | %.2f / %.2f | %.1f / %.1f | %.0f |\n",
-            name, t.dabs, median(t.press), median(t.dab), longest(t.dab), median(t.dab_cpu),
-            longest(t.dab_cpu), median(t.frame), longest(t.frame), median(t.release),
-            longest(t.release), median(t.stroke));
+            name, t.dabs, median(t.press), median(t.dab), max_of(t.dab), median(t.dab_cpu),
+            max_of(t.dab_cpu), median(t.frame), max_of(t.frame), median(t.release),
+            max_of(t.release), median(t.stroke));
         std::fflush(stdout);
     }
 }
