@@ -38,8 +38,8 @@ ToolContext EditorSession::tool_context()
                       [this]() -> const Visibility& { return visibility(); },
                       [this] { return face_points(); }};
     c.settings = state_.tools;
-    c.pin_handles = [this] { return pin_handles(); };
-    c.normal_handles = [this] { return normal_handles(); };
+    c.pin_handles = [this] { return grab_handles(ToolKind::MovePins); };
+    c.normal_handles = [this] { return grab_handles(ToolKind::AimNormals); };
     if (state_.tool == ToolKind::MovePins)
         c.dome = dome_settings(document_.sets, document_.solver);
     return c;
@@ -126,28 +126,37 @@ void EditorSession::mouse_move(double x, double y, bool in_view)
     }
     else
         navigator_.move(camera_, state_.orbit, x, y, view_.width, view_.height);
-    find_grab_hover();
 }
 
-void EditorSession::find_grab_hover()
+const std::vector<GrabHandle>& EditorSession::grab_handles(ToolKind tool)
 {
-    grab_hover_.clear();
+    const auto key = std::make_tuple(tool, document_.versions.sets, document_.versions.positions);
+    if (grab_cache_.key != key)
+    {
+        grab_cache_.handles = tool == ToolKind::MovePins ? pin_handles() : normal_handles();
+        grab_cache_.key = key;
+    }
+    return grab_cache_.handles;
+}
+
+std::vector<ScreenPoint> EditorSession::grab_hover()
+{
     const bool grabs = state_.tool == ToolKind::MovePins || state_.tool == ToolKind::AimNormals;
     if (!grabs || gesture_ != nullptr || navigator_.dragging() || !cursor_in_view_)
-        return;
-    // The same handles and the same choice as the tool's press (nearest_handle).
-    const std::vector<GrabHandle> handles =
-        state_.tool == ToolKind::MovePins ? pin_handles() : normal_handles();
-    const Grabbed grabbed = nearest_handle(handles, camera_, view_, cursor_);
+        return {};
+    // The same handles and the same choice as the tool's press (nearest_handle), from the
+    // camera of this frame: the highlight follows a zoom or a key's view too.
+    const Grabbed grabbed = nearest_handle(grab_handles(state_.tool), camera_, view_, cursor_);
     if (grabbed.handle == nullptr)
-        return;
+        return {};
     const auto on_screen = [&](const glm::dvec3& p) {
         const glm::dvec3 w = camera_.project(p, view_.width, view_.height);
-        return ScreenPoint{w.x, w.y, 0};
+        return ScreenPoint{w.x + view_.x, w.y + view_.y, 0};
     };
-    grab_hover_.push_back(on_screen(grabbed.handle->point));
+    std::vector<ScreenPoint> ends{on_screen(grabbed.handle->point)};
     if (grabbed.handle->tip)
-        grab_hover_.push_back(on_screen(*grabbed.handle->tip));
+        ends.push_back(on_screen(*grabbed.handle->tip));
+    return ends;
 }
 
 void EditorSession::mouse_release(MouseButton button, double x, double y)
@@ -359,6 +368,7 @@ void EditorSession::reset_for_document()
     open_step_.reset();
     gesture_ = nullptr;
     synced_ = {};
+    grab_cache_ = {}; // (a new document's versions start again)
     autosaver_.forget();
 }
 
@@ -370,14 +380,7 @@ void EditorSession::prepare_ui()
         p.x += view_.x;
         p.y += view_.y;
     }
-    // (A tool changed by a key since the cursor last moved grabs nothing of it.)
-    const bool grabs = state_.tool == ToolKind::MovePins || state_.tool == ToolKind::AimNormals;
-    state_.grab_hover = grabs && gesture_ == nullptr ? grab_hover_ : std::vector<ScreenPoint>{};
-    for (ScreenPoint& p : state_.grab_hover)
-    {
-        p.x += view_.x;
-        p.y += view_.y;
-    }
+    state_.grab_hover = grab_hover();
     state_.solver = solver_.status();
     if (synced_.energy != state_.solver.energy_version) // the curve, once per change
     {

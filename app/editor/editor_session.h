@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "app/edit/command.h"
@@ -151,8 +152,11 @@ private:
     ToolContext tool_context();
     std::vector<GrabHandle> pin_handles() const;
     std::vector<GrabHandle> normal_handles() const;
-    //! The handle the active tool would grab at the cursor, as grab_hover_ keeps it.
-    void find_grab_hover();
+    //! \brief The handles of the M tool (pins) or the D tool (arrows), made once per change
+    //! of the sets or the shape: the press and the cursor's highlight share them.
+    const std::vector<GrabHandle>& grab_handles(ToolKind tool);
+    //! What a press of the active tool would grab at the cursor (EditorState::grab_hover).
+    std::vector<ScreenPoint> grab_hover();
     void reset_for_document();
     void remember(const std::string& path);
 
@@ -169,9 +173,12 @@ private:
     std::optional<OpenStep> open_step_;
     InteractiveTool* gesture_ = nullptr; // the tool of the gesture under way
     ScreenPoint cursor_;
-    //! What a press of the M or D tool would grab at the cursor (view pixels; see
-    //! EditorState::grab_hover), found at each move of the cursor.
-    std::vector<ScreenPoint> grab_hover_;
+    struct GrabCache
+    {
+        //! The tool and the sets' and positions' versions the handles were made for.
+        std::optional<std::tuple<ToolKind, std::uint64_t, std::uint64_t>> key;
+        std::vector<GrabHandle> handles;
+    } grab_cache_;
     bool cursor_in_view_ = true;
     std::FILE* trace_ = nullptr;
     std::function<void(const PreparationProgress::Snapshot&)> preparation_observer_;

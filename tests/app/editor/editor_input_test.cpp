@@ -304,6 +304,24 @@ TEST_SUITE("Editor input")
         CHECK(e.session.history().undo_label() == "normal direction");
         e.key("ctrl+z");
         CHECK(e.doc().sets[1].normals.empty());
+
+        // The arrow a press at the base would take is highlighted, base to tip, and follows a
+        // zoom at the cursor without the cursor moving (the frame's camera, not the last
+        // move's).
+        e.input({input_event(InputEvent::Type::MouseMove, base)});
+        const std::vector<ScreenPoint> lit = e.session.state().grab_hover;
+        REQUIRE(lit.size() == 2);
+        CHECK(std::hypot(lit[0].x - base.x, lit[0].y - base.y) < kGrabRadiusPx);
+        InputEvent wheel = input_event(InputEvent::Type::Scroll, base);
+        wheel.amount = 3;
+        e.input({wheel});
+        const std::vector<ScreenPoint> zoomed = e.session.state().grab_hover;
+        REQUIRE(zoomed.size() == 2);
+        CHECK(std::hypot(zoomed[1].x - zoomed[0].x, zoomed[1].y - zoomed[0].y) >
+              1.2 * std::hypot(lit[1].x - lit[0].x, lit[1].y - lit[0].y));
+        // Another tool highlights nothing.
+        e.key("n");
+        CHECK(e.session.state().grab_hover.empty());
     }
 
     TEST_CASE(
