@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Copyright 2026 the MeshFair authors.
 #include "app/editor/recovery.h"
+#include "app/editor/user_files.h"
 
 #include <signal.h>
 #include <unistd.h>
@@ -31,18 +32,11 @@ namespace {
 
 using Json = nlohmann::json;
 
-std::string absolute(const std::string& path)
-{
-    std::error_code ec;
-    const fs::path p = fs::absolute(path, ec);
-    return ec ? path : p.lexically_normal().string();
-}
-
 // One folder per mesh path.
 fs::path folder(const std::string& mesh_path, const std::string& root)
 {
     char id[32];
-    std::snprintf(id, sizeof id, "%016zx", std::hash<std::string>{}(absolute(mesh_path)));
+    std::snprintf(id, sizeof id, "%016zx", std::hash<std::string>{}(absolute_path(mesh_path)));
     return fs::path(root) / id;
 }
 
@@ -112,7 +106,7 @@ void write_recovery(const Document& d, const std::string& root)
     const std::time_t now = std::time(nullptr);
     char when[32];
     std::strftime(when, sizeof when, "%Y-%m-%d %H:%M:%S", std::localtime(&now));
-    const Json state = {{"mesh", absolute(d.path)},
+    const Json state = {{"mesh", absolute_path(d.path)},
                         {"pid", static_cast<long>(::getpid())},
                         {"saved_at", when},
                         {"vertices", d.mesh.vertex_count()},
@@ -139,7 +133,7 @@ std::optional<RecoveryInfo> find_recovery(const std::string& mesh_path, const st
             CheckedJson::parse(io::read_file((dir / "state.json").string()), "state.json");
         RecoveryInfo info{dir.string(), j["mesh"].text(), static_cast<long>(j["pid"].integer()),
                           j["saved_at"].text()};
-        if (info.mesh_path != absolute(mesh_path) || running(info.pid))
+        if (info.mesh_path != absolute_path(mesh_path) || running(info.pid))
             return std::nullopt; // another mesh's, or a session still open
         return info;
     }

@@ -11,11 +11,16 @@
 
 namespace meshfair::app {
 
-void remember_recent(std::vector<std::string>& recent, const std::string& path)
+std::string absolute_path(const std::string& path)
 {
     std::error_code ec;
     const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-    const std::string p = ec ? path : absolute.lexically_normal().string();
+    return ec ? path : absolute.lexically_normal().string();
+}
+
+void remember_recent(std::vector<std::string>& recent, const std::string& path)
+{
+    const std::string p = absolute_path(path);
     recent.erase(std::remove(recent.begin(), recent.end(), p), recent.end());
     recent.insert(recent.begin(), p);
     if (recent.size() > 10)
@@ -81,17 +86,6 @@ std::string up_axes_path()
         return {};
     return (std::filesystem::path(recent).parent_path() / "up-axes.txt").string();
 }
-
-namespace {
-
-std::string absolute_path(const std::string& path)
-{
-    std::error_code ec;
-    const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-    return ec ? path : absolute.lexically_normal().string();
-}
-
-} // namespace
 
 std::optional<UpAxis> load_up_axis(const std::string& file, const std::string& mesh_path)
 {

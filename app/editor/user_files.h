@@ -15,6 +15,11 @@
 
 namespace meshfair::app {
 
+//! \brief `path` made absolute and normal ("a/../b.obj" -> "/cwd/b.obj"): one name per
+//! file, for the recent files, the up axes and the recovery folders; as given when the
+//! working directory cannot be read.
+std::string absolute_path(const std::string& path);
+
 //! Adds `path` (made absolute) in front of the recent files (once, at most 10 kept).
 void remember_recent(std::vector<std::string>& recent, const std::string& path);
 
