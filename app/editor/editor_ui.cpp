@@ -20,7 +20,7 @@ void side_panel(const PanelContext& ui, std::string& rename_buffer, std::string&
 {
     const ImGuiIO& io = ImGui::GetIO();
     const float top = ImGui::GetFrameHeight();
-    const float bottom = ImGui::GetFrameHeight() + 8;
+    const float bottom = status_bar_height();
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kSidePanelWidth, top));
     ImGui::SetNextWindowSize(ImVec2(kSidePanelWidth, io.DisplaySize.y - top - bottom));
     ImGui::Begin("##side", nullptr,
@@ -196,7 +196,7 @@ ViewRect EditorUi::view_rect(int width, int height, const EditorState& state)
     // ImGui lays out in window units; the framebuffer may have more pixels (HiDPI).
     const float scale = io.DisplaySize.x > 0 ? float(width) / io.DisplaySize.x : 1.0f;
     const int top = static_cast<int>(ImGui::GetFrameHeight() * scale);
-    const int bottom = static_cast<int>((ImGui::GetFrameHeight() + 8) * scale);
+    const int bottom = static_cast<int>(status_bar_height() * scale);
     const int right = state.show_side_panel ? static_cast<int>(kSidePanelWidth * scale) : 0;
     const int plot = state.show_energy ? static_cast<int>(kEnergyPanelHeight * scale) : 0;
     return {width,

@@ -189,7 +189,7 @@ void energy_window(const PanelContext& ui)
     if (!state.show_energy)
         return;
     const ImGuiIO& io = ImGui::GetIO();
-    const float bottom = ImGui::GetFrameHeight() + 8;
+    const float bottom = status_bar_height();
     const float width = io.DisplaySize.x - (state.show_side_panel ? kSidePanelWidth : 0.0f);
     ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - bottom - kEnergyPanelHeight));
     ImGui::SetNextWindowSize(ImVec2(width, kEnergyPanelHeight));

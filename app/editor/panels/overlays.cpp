@@ -96,7 +96,7 @@ void status_bar(const PanelContext& ui)
     const Document& document = ui.document;
     const EditorState& state = ui.state;
     const ImGuiIO& io = ImGui::GetIO();
-    const float height = ImGui::GetFrameHeight() + 8;
+    const float height = status_bar_height();
     ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
     ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
     ImGui::Begin("##status", nullptr,

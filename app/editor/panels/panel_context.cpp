@@ -20,6 +20,11 @@ std::string visible_label(const char* label)
 
 } // namespace
 
+float status_bar_height()
+{
+    return ImGui::GetFrameHeight() + 8;
+}
+
 void PanelContext::track(const std::string& label) const
 {
     if (!ImGui::IsItemVisible())

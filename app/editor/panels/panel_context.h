@@ -65,6 +65,9 @@ void tool_overlay(const EditorState& state);
 
 //! The side panel's width, in window units.
 inline constexpr float kSidePanelWidth = 340;
+//! The status bar's height at the window's bottom, in window units (the side panel, the
+//! energy plot's strip and the view end above it).
+float status_bar_height();
 //! The energy plot's strip under the view, in window units (its contents fit).
 inline constexpr float kEnergyPanelHeight = 224;
 
