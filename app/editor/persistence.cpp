@@ -44,10 +44,6 @@ std::vector<ConstraintSet> in_file_order(std::vector<ConstraintSet> sets,
     return sets;
 }
 
-} // namespace
-
-namespace {
-
 // The recipe of `sets` and `settings` in the file's numbering, each list in the file's order
 // (the region's too: the union of the region sets, which build_recipe lists in the
 // document's numbering).
@@ -130,14 +126,13 @@ void export_recipe(const Document& document, const std::string& path)
 
 ImportedRecipe import_recipe(const Document& document, const std::string& path)
 {
-    const std::string text = io::read_file(path);
-    const Recipe recipe = parse_recipe(text, path);
+    const CheckedJson root = CheckedJson::parse(io::read_file(path), path); // (parsed once)
+    const Recipe recipe = parse_recipe(root);
     check_recipe(recipe, document.mesh); // the file's indices named in messages
     const Recipe internal =
         renumber_recipe(recipe, document.order.vertex_index, document.order.face_index);
     ImportedRecipe from_sections = sets_from_recipe(internal, document.mesh);
-    const std::optional<CheckedJson> saved =
-        CheckedJson::parse(text, path).find("editor"); // (parse_recipe read it)
+    const std::optional<CheckedJson> saved = root.find("editor");
     if (!saved || !saved->has("sets"))
         return from_sections;
     // The editor's own sets, names, colours and maps as they were; taken when they still

@@ -532,19 +532,23 @@ Json index_list_json(std::span<const Index> indices)
     return out;
 }
 
-Recipe parse_recipe(std::string_view json_text, const std::string& name, const RecipeLimits& limits)
+Recipe parse_recipe(const CheckedJson& root, const RecipeLimits& limits)
 {
     listed_left = limits.max_listed;
-    const CheckedJson j = CheckedJson::parse(json_text, name);
     try
     {
-        return parse_recipe_json(j);
+        return parse_recipe_json(root);
     }
     catch (const RecipeError& e)
     {
         // The rules across a section's sets throw without the file: named here.
-        throw RecipeError(e.key(), e.message(), name);
+        throw RecipeError(e.key(), e.message(), root.file());
     }
+}
+
+Recipe parse_recipe(std::string_view json_text, const std::string& name, const RecipeLimits& limits)
+{
+    return parse_recipe(CheckedJson::parse(json_text, name), limits);
 }
 
 Recipe read_recipe(const std::string& path)

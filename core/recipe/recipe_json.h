@@ -34,6 +34,9 @@ struct RecipeLimits
 //! JSON (naming `name`, the line and the column).
 Recipe parse_recipe(std::string_view json_text, const std::string& name,
                     const RecipeLimits& limits = {});
+//! The same from JSON parsed already (a reader that reads more of the file, the editor's
+//! import). \throw RecipeError naming the file and the key.
+Recipe parse_recipe(const CheckedJson& root, const RecipeLimits& limits = {});
 
 //! Reads and parses a recipe file. \throw as parse_recipe, or InvalidInputError when the
 //! file cannot be read.
